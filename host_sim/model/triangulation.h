@@ -1,0 +1,61 @@
+#pragma once
+// The host-side model of a triangulation-represented image (see docs/FORMAT.md).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tristream {
+
+enum class ColorSpace : std::uint8_t { grey, rgb, ycbcr };
+
+// 1 for grey, 3 for rgb and ycbcr.
+int channel_count(ColorSpace space);
+std::string_view to_string(ColorSpace space);
+
+struct Point {
+  double x = 0;
+  double y = 0;
+};
+
+// Vertex indices of a triangle. After Mesh::normalize_winding() (the reader calls it),
+// orient(p[v0], p[v1], p[v2]) > 0 with orient as in geometry: (b-a) x (c-a) in the
+// y-down image frame, i.e. clockwise on screen.
+struct Triangle {
+  std::array<std::uint32_t, 3> v{};
+};
+
+// One triangulated point set with `value_count` values per vertex.
+struct Mesh {
+  std::string name;  // layer name; empty when the file has a single mesh
+  int value_count = 1;
+  std::vector<Point> points;
+  std::vector<double> values;  // points.size() * value_count, each in [0, 255]
+  std::vector<Triangle> triangles;
+
+  std::size_t vertex_count() const { return points.size(); }
+  double value(std::size_t vertex, int c) const { return values[vertex * value_count + c]; }
+  // Signed doubled area (b-a) x (c-a) of triangle t.
+  double doubled_area(std::size_t t) const;
+  // Reorders vertex indices so that every triangle has positive doubled_area().
+  void normalize_winding();
+};
+
+// A whole image: size, colour space and either one mesh carrying every channel or, in a
+// layered file, one single-valued mesh per channel (the thesis's separate triangulations).
+struct Triangulation {
+  int width = 0;
+  int height = 0;
+  ColorSpace space = ColorSpace::grey;
+  std::vector<Mesh> layers;
+
+  int channels() const { return channel_count(space); }
+  bool layered() const { return layers.size() > 1; }
+  // The mesh holding channel c and the value index of c inside it.
+  const Mesh& mesh_of_channel(int c) const { return layered() ? layers[c] : layers[0]; }
+  int value_index_of_channel(int c) const { return layered() ? 0 : c; }
+};
+
+}  // namespace tristream
