@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "model/triangulation.h"
@@ -72,7 +73,6 @@ class DelaunayBuilder {
 
   bool in_conflict(std::uint32_t t, const Point& p) const;
   std::uint32_t new_slot();
-  void link(std::uint32_t t, int e, std::uint32_t u, int f);
 
   std::vector<Point> points_;
   std::vector<Slot> tri_;
@@ -87,6 +87,7 @@ class DelaunayBuilder {
     int outside_edge;             // index of the edge in `outside`
   };
   std::vector<BoundaryEdge> boundary_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> spoke_scratch_;  // (start vertex, slot)
   std::vector<std::uint32_t> mark_;  // per slot: insertion stamp when in the cavity
   std::uint32_t stamp_ = 0;
 };
