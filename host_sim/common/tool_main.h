@@ -1,0 +1,47 @@
+#pragma once
+// The shared frame of every command-line tool: runs the body, prints diagnostics on stderr
+// as "<tool>: <message>" and maps each error type to its exit code (common/errors.h).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "common/errors.h"
+
+namespace tristream {
+
+template <class Body>
+int run_tool(const char* tool, CLI::App& app, int argc, char** argv, Body&& body) {
+  try {
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+      return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+      return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+      std::fprintf(stderr, "%s: %s\nRun '%s --help' for usage.\n", tool, e.what(), tool);
+      return exit_usage;
+    }
+    return body();
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "%s: %s\n", tool, e.what());
+    return exit_usage;
+  } catch (const DataError& e) {
+    std::fprintf(stderr, "%s: %s\n", tool, e.what());
+    return exit_data;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s: %s\n", tool, e.what());
+    return exit_noinput;
+  } catch (const OutputError& e) {
+    std::fprintf(stderr, "%s: %s\n", tool, e.what());
+    return exit_cantcreate;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: internal error: %s\n", tool, e.what());
+    return exit_software;
+  }
+}
+
+}  // namespace tristream

@@ -1,0 +1,93 @@
+#pragma once
+// The pixel coverage rule shared by every triangle-based reference method (NOTES.md):
+// output pixel (i, j) samples the domain point (i * sx, j * sy). A sample point strictly
+// inside a triangle belongs to it. A point on edges is decided by symbolic perturbation: it
+// belongs to the triangle that contains p + eps * w(p), where w points into the image
+// rectangle at its border and is the classic top-left direction elsewhere:
+//   w = (sx, sy * delta), sx = +1 in column 0 and -1 elsewhere, sy = +1 in row 0 and -1
+//   elsewhere (delta infinitesimal). For edge a->b of a triangle with orient2d > 0 (Mesh
+//   winding), d = b - a, the edge owns its points iff cross(d, w) > 0, that is
+//   (-sx * d.y > 0) or (d.y == 0 and sy * d.x > 0).
+// The same edge seen from its neighbour (-d) fails the test, and at a vertex exactly one
+// triangle of the fan contains the direction w, so every sample point of a triangulation
+// of the whole image rectangle is visited exactly once, vertices on the border included.
+// For a domain that is not the whole rectangle, boundary edges off the rectangle border are
+// also inclusive (the outer boundary is part of the domain); a sample point exactly at such a
+// boundary vertex may then be visited twice, both times with that vertex's value.
+// Decisions use exact orientation predicates (geometry/predicates.h).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "geometry/predicates.h"
+#include "model/topology.h"
+#include "model/triangulation.h"
+
+namespace tristream {
+
+// Maps output pixels to domain points, corner to corner.
+struct PixelMapping {
+  int out_width = 0, out_height = 0;
+  double sx = 1, sy = 1;  // domain units per output pixel
+
+  PixelMapping(int domain_width, int domain_height, int width, int height)
+      : out_width(width), out_height(height),
+        sx(width > 1 ? double(domain_width - 1) / (width - 1) : 1.0),
+        sy(height > 1 ? double(domain_height - 1) / (height - 1) : 1.0) {}
+
+  Point sample(int i, int j) const { return {sx == 1 ? double(i) : i * sx, sy == 1 ? double(j) : j * sy}; }
+  // The output pixel range whose sample points can lie in [lo, hi] (domain units).
+  int first_column(double lo) const { return std::max(0, int(std::floor(lo / sx)) - 1); }
+  int last_column(double hi) const { return std::min(out_width - 1, int(std::ceil(hi / sx)) + 1); }
+  int first_row(double lo) const { return std::max(0, int(std::floor(lo / sy)) - 1); }
+  int last_row(double hi) const { return std::min(out_height - 1, int(std::ceil(hi / sy)) + 1); }
+};
+
+// Whether edge a->b owns the points on it that are sampled in a column with sign sx and a
+// row with sign sy (see the rule above).
+inline bool owns_edge_points(const Point& a, const Point& b, int sx, int sy) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return (-sx * dy > 0) || (dy == 0 && sy * dx > 0);
+}
+
+// Calls visit(i, j, l0, l1, l2) for every output pixel (i, j) whose sample point triangle t
+// owns; (l0, l1, l2) are the barycentric coordinates of the sample point with respect to
+// t's vertices v[0], v[1], v[2].
+template <class Visit>
+void for_each_owned_pixel(const Mesh& mesh, const Topology& topo, std::uint32_t t, const PixelMapping& map,
+                          Visit&& visit) {
+  const auto& v = mesh.triangles[t].v;
+  const Point& p0 = mesh.points[v[0]];
+  const Point& p1 = mesh.points[v[1]];
+  const Point& p2 = mesh.points[v[2]];
+  const Point* corner[3] = {&p0, &p1, &p2};
+  // inclusive[k][e]: k = 0 elsewhere, 1 in column 0, 2 in row 0, 3 at pixel (0, 0).
+  bool inclusive[4][3];
+  for (int k = 0; k < 4; ++k)
+    for (int e = 0; e < 3; ++e)
+      inclusive[k][e] = topo.is_boundary_edge(t, e) ||
+                        owns_edge_points(*corner[e], *corner[(e + 1) % 3], k & 1 ? 1 : -1, k & 2 ? 1 : -1);
+  const double area = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x);
+
+  const int i0 = map.first_column(std::min({p0.x, p1.x, p2.x}));
+  const int i1 = map.last_column(std::max({p0.x, p1.x, p2.x}));
+  const int j0 = map.first_row(std::min({p0.y, p1.y, p2.y}));
+  const int j1 = map.last_row(std::max({p0.y, p1.y, p2.y}));
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
+      const Point p = map.sample(i, j);
+      const bool* incl = inclusive[(i == 0 ? 1 : 0) + (j == 0 ? 2 : 0)];
+      bool inside = true;
+      for (int e = 0; e < 3 && inside; ++e) {
+        const double o = orient2d(*corner[e], *corner[(e + 1) % 3], p);
+        inside = o > 0 || (o == 0 && incl[e]);
+      }
+      if (!inside) continue;
+      // Barycentric coordinates: the sub-triangle opposite each vertex over the whole.
+      const double l0 = ((p1.x - p.x) * (p2.y - p.y) - (p1.y - p.y) * (p2.x - p.x)) / area;
+      const double l1 = ((p2.x - p.x) * (p0.y - p.y) - (p2.y - p.y) * (p0.x - p.x)) / area;
+      visit(i, j, l0, l1, 1.0 - l0 - l1);
+    }
+}
+
+}  // namespace tristream

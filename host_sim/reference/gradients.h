@@ -1,0 +1,21 @@
+#pragma once
+// Vertex gradients estimated from the surface (x, y, value) as thesis Eq. 3.2 (NOTES.md
+// §3.2): the unit normals of the triangles around a vertex, weighted by their areas,
+// summed; gradient = (-n_x / n_I, -n_y / n_I). Zienkiewicz and Clough-Tocher share it, and
+// the packer stores it in fixed point for the core.
+#include <vector>
+
+#include "model/topology.h"
+#include "model/triangulation.h"
+
+namespace tristream {
+
+struct Gradient {
+  double gx = 0;
+  double gy = 0;
+};
+
+// One gradient per vertex for value channel `value_index`. A vertex in no triangle gets 0.
+std::vector<Gradient> vertex_gradients(const Mesh& mesh, const Topology& topo, int value_index);
+
+}  // namespace tristream

@@ -1,0 +1,171 @@
+#include "reference/methods/coons.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/topology.h"
+#include "reference/coverage.h"
+#include "reference/methods/bilinear.h"
+#include "reference/methods/patch_raster.h"
+
+namespace tristream {
+namespace {
+
+// Corner control points (P200, P020, P002 = 0, 1, 2) joined by each boundary curve, and the
+// middle point of the curve joining two corners.
+constexpr int curve_end[3][2] = {{p200, p020}, {p020, p002}, {p200, p002}};
+int middle_of(int p, int q) {
+  const int lo = std::min(p, q), hi = std::max(p, q);
+  return lo == p200 ? (hi == p020 ? p110 : p101) : p011;
+}
+
+double length(const Point& p, const Point& q) { return std::hypot(p.x - q.x, p.y - q.y); }
+
+void splat_thesis(const CoonsPatch& patch, int channels, detail::PatchCanvas& canvas) {
+  std::vector<double> value(channels);
+  const int steps = int(std::floor(1.0 / kCoonsThesisStep + 1e-9));
+  for (int iu = 0; iu <= steps; ++iu) {
+    const double u = iu * kCoonsThesisStep;
+    for (int iv = 0; iv <= steps; ++iv) {
+      const double v = iv * kCoonsThesisStep;
+      const Point p = patch.position(u, v);
+      if (!(std::fabs(p.x) <= detail::kMaxPatchCoordinate && std::fabs(p.y) <= detail::kMaxPatchCoordinate)) continue;
+      patch.values(u, v, value.data());
+      canvas.add(int(std::floor(p.x + 0.5)), int(std::floor(p.y + 0.5)), value.data());
+    }
+  }
+}
+
+void rasterize_exact(const CoonsPatch& patch, int channels, detail::PatchCanvas& canvas,
+                     std::vector<detail::MicroVertex>& node) {
+  const auto [nu, nv] = patch.subdivisions(detail::kMicroEdge);
+  // Node (i, j) has u = i / nu, v = j / nv; each grid cell is split along (i, j)-(i+1, j+1).
+  auto index = [nu = nu](int i, int j) { return std::size_t(j) * (nu + 1) + i; };
+  node.resize(std::size_t(nu + 1) * (nv + 1));
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      const double u = double(i) / nu, v = double(j) / nv;
+      const Point p = patch.position(u, v);
+      if (!detail::snap(p.x, p.y, u, v, node[index(i, j)])) return;  // absurd coordinates: no patch
+      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    }
+  const int w = canvas.width(), h = canvas.height();
+  if (x1 < 0 || y1 < 0 || x0 > w - 1 || y0 > h - 1) return;
+  std::vector<double> value(channels);
+  auto visit = [&](int x, int y, double u, double v) {
+    if (!canvas.in_domain(x, y)) return;
+    detail::refine_parameters(patch, x, y, u, v);
+    patch.values(u, v, value.data());
+    canvas.add(x, y, value.data());
+  };
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j)], node[index(i + 1, j + 1)], w, h,
+                                       visit);
+      detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j + 1)], node[index(i, j + 1)], w, h,
+                                       visit);
+    }
+}
+
+}  // namespace
+
+CoonsPatch::CoonsPatch(const PatchControl& control) {
+  double best = -1;
+  for (int k = 0; k < 3; ++k) {
+    const Point& s = control.domain[curve_end[k][0]];
+    const Point& e = control.domain[curve_end[k][1]];
+    const Point& m = control.domain[middle_of(curve_end[k][0], curve_end[k][1])];
+    const double l = length(s, m) + length(m, e);
+    if (l > best) best = l, longest_ = k;
+  }
+  const int a = curve_end[longest_][0], b = curve_end[longest_][1];
+  const int c = 3 - a - b;  // the corner the longest curve misses (corners are 0, 1, 2)
+  const int m = middle_of(a, b), m_ac = middle_of(a, c), m_bc = middle_of(c, b);
+  corner_ = {a, m, b, c};
+
+  component_.resize(2 + std::size_t(control.channels));
+  for (std::size_t d = 0; d < component_.size(); ++d) {
+    auto x = [&](int k) {
+      if (d == 0) return control.pixel[k].x;
+      if (d == 1) return control.pixel[k].y;
+      return control.value[k * control.channels + int(d - 2)];
+    };
+    Component& q = component_[d];
+    const Parabola split = Parabola::through(x(a), x(m), x(b));
+    q.A = x(a), q.M = x(m), q.B = x(b), q.C = x(c);
+    q.b1 = Parabola::through(q.A, split(0.25), q.M);
+    q.a2 = Parabola::through(q.M, split(0.75), q.B);
+    q.a1 = Parabola::through(q.A, x(m_ac), q.C);
+    q.b2 = Parabola::through(q.C, x(m_bc), q.B);
+  }
+}
+
+double CoonsPatch::Component::at(double u, double v) const {
+  return (1 - u) * a1(v) + u * a2(v) + (1 - v) * b1(u) + v * b2(u) -
+         ((1 - u) * (1 - v) * A + u * (1 - v) * M + (1 - u) * v * C + u * v * B);
+}
+
+void CoonsPatch::position(double u, double v, double& x, double& y, double& x_u, double& x_v, double& y_u,
+                          double& y_v) const {
+  auto derivatives = [u, v](const Component& q, double& du, double& dv) {
+    du = q.a2(v) - q.a1(v) + (1 - v) * q.b1.derivative(u) + v * q.b2.derivative(u) -
+         ((1 - v) * (q.M - q.A) + v * (q.B - q.C));
+    dv = (1 - u) * q.a1.derivative(v) + u * q.a2.derivative(v) + q.b2(u) - q.b1(u) -
+         ((1 - u) * (q.C - q.A) + u * (q.B - q.M));
+  };
+  x = component_[0].at(u, v);
+  y = component_[1].at(u, v);
+  derivatives(component_[0], x_u, x_v);
+  derivatives(component_[1], y_u, y_v);
+}
+
+Point CoonsPatch::position(double u, double v) const { return {component_[0].at(u, v), component_[1].at(u, v)}; }
+
+void CoonsPatch::values(double u, double v, double* out) const {
+  for (std::size_t d = 2; d < component_.size(); ++d) out[d - 2] = component_[d].at(u, v);
+}
+
+std::array<int, 2> CoonsPatch::subdivisions(double max_edge) const {
+  const Component& X = component_[0];
+  const Component& Y = component_[1];
+  auto max_derivative = [](const Parabola& px, const Parabola& py) {
+    return std::max(std::hypot(px.b, py.b), std::hypot(2 * px.a + px.b, 2 * py.a + py.b));
+  };
+  auto deviation = [](const Parabola& px, const Parabola& py) { return std::hypot(px.a, py.a) / 4; };
+  const double du = std::max(max_derivative(X.b1, Y.b1), max_derivative(X.b2, Y.b2)) + deviation(X.a1, Y.a1) +
+                    deviation(X.a2, Y.a2);
+  const double dv = std::max(max_derivative(X.a1, Y.a1), max_derivative(X.a2, Y.a2)) + deviation(X.b1, Y.b1) +
+                    deviation(X.b2, Y.b2);
+  auto count = [max_edge](double bound) {
+    const double n = std::ceil(bound / max_edge);
+    return n < 1 ? 1 : n > detail::kMaxSubdivisions ? detail::kMaxSubdivisions : int(n);
+  };
+  return {count(du), count(dv)};
+}
+
+void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
+  const bool thesis = detail::is_thesis_variant("coons", options.variant);
+  const Topology topo = build_topology(mesh);
+  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+  Field prefill(out.width, out.height, out.channels);
+  render_bilinear(mesh, domain_width, domain_height, options, prefill);
+  detail::PatchCanvas canvas(prefill);
+
+  PatchControl control;
+  std::vector<detail::MicroVertex> nodes;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (!patch_control(mesh, topo, t, map, control)) continue;
+    const CoonsPatch patch(control);
+    if (thesis)
+      splat_thesis(patch, control.channels, canvas);
+    else
+      rasterize_exact(patch, control.channels, canvas, nodes);
+  }
+  if (thesis)
+    canvas.resolve_thesis(out);
+  else
+    canvas.resolve_exact(out);
+}
+
+}  // namespace tristream

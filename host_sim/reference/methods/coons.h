@@ -1,0 +1,78 @@
+#pragma once
+// Interpolation on the Coons patch of each triangle and its three edge neighbours (thesis
+// §3.4, §4.2; NOTES.md §3.4), averaged where patches overlap.
+//
+// Construction (the thesis leaves the orientation of the split open; this is the choice):
+// the three parabolic boundary curves through (P200, P110, P020), (P020, P011, P002) and
+// (P200, P101, P002), each curve(t) = a t^2 + b t + c through its ends at t = 0, 1 and its
+// middle point at t = 1/2 (Eq. 3.8). The longest in the triangulation's units
+// (|start - middle| + |middle - end|, first of equals in that order) is (A, M, B); C is the
+// remaining corner. It is split at its middle M: the half A..M is the parabola through
+// (A, T0.25, M) and the half M..B the one through (M, T0.75, B), with Tx = curve(x). These
+// halves are exactly the two halves of the original curve (the thesis's text pairs T0.75 with
+// A..M, which would bend the boundary back across M). With the other two curves A..C and
+// C..B, the four boundaries form the quadrilateral A, M, B, C and
+//   P(u, v) = (1-u) a1(v) + u a2(v) + (1-v) b1(u) + v b2(u)
+//             - (1-u)(1-v) A - u(1-v) M - (1-u) v C - u v B            (Eq. 3.10)
+// with b1 = A..M and b2 = C..B along u, a1 = A..C and a2 = M..B along v: the bilinearly
+// blended Coons patch of these four boundaries, so P(u, 0) = b1(u), P(0, v) = a1(v) and so
+// on. (Eq. 3.10's corner terms put M at (u, v) = (0, 1), which fits the layout of Eq. 3.9 but
+// not the curve list of Eq. 3.11; renaming u and v gives the same surface.) It applies to x,
+// y and every value channel alike.
+//
+// Variants as in bezier.h: "thesis" steps u and v by kCoonsThesisStep over [0, 1] and splats;
+// the default rasterizes each patch exactly (methods/patch_raster.h).
+#include <array>
+#include <vector>
+
+#include "reference/methods/patch_control.h"
+#include "reference/render.h"
+
+namespace tristream {
+
+inline constexpr double kCoonsThesisStep = 0.007;
+
+// curve(t) = (a t + b) t + c through s (t = 0), m (t = 1/2) and e (t = 1).
+struct Parabola {
+  double a = 0, b = 0, c = 0;
+
+  static Parabola through(double s, double m, double e) { return {2 * s + 2 * e - 4 * m, 4 * m - 3 * s - e, s}; }
+  double operator()(double t) const { return (a * t + b) * t + c; }
+  double derivative(double t) const { return 2 * a * t + b; }
+};
+
+class CoonsPatch {
+ public:
+  explicit CoonsPatch(const PatchControl& control);
+
+  // The split curve: 0 = (P200, P110, P020), 1 = (P020, P011, P002), 2 = (P200, P101, P002).
+  int longest_curve() const { return longest_; }
+  // Control-point indices (PatchPoint) of the corners A, M, B, C.
+  std::array<int, 4> corners() const { return corner_; }
+
+  // Position (output pixels) and its partial derivatives with respect to u and v.
+  void position(double u, double v, double& x, double& y, double& x_u, double& x_v, double& y_u,
+                double& y_v) const;
+  Point position(double u, double v) const;
+  // control.channels values at (u, v).
+  void values(double u, double v, double* out) const;
+  // Subdivisions along u and v so that the image of a parameter step is at most `max_edge`
+  // pixels: |dP/du| <= max |b1'|, |b2'| plus the largest deviations of a1 and a2 from their
+  // chords (|a| / 4 each), and likewise for v.
+  std::array<int, 2> subdivisions(double max_edge) const;
+
+ private:
+  // One coordinate (x, y or a value channel) of the patch.
+  struct Component {
+    double A = 0, M = 0, B = 0, C = 0;
+    Parabola a1, a2, b1, b2;
+    double at(double u, double v) const;
+  };
+  int longest_ = 0;
+  std::array<int, 4> corner_{};
+  std::vector<Component> component_;  // x, y, then the value channels
+};
+
+void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out);
+
+}  // namespace tristream

@@ -1,0 +1,146 @@
+#include <catch2/catch.hpp>
+#include <random>
+#include <string>
+
+#include "../support/random_mesh.h"
+#include "common/errors.h"
+#include "geometry/predicates.h"
+#include "io/tri_file.h"
+
+using namespace tristream;
+
+namespace {
+
+const char* square = R"(tri 1
+# a comment line
+size 10 10
+channels grey
+
+vertices 4
+0 0 0      # corner
+9 0 255
+9 9 128.5
+0 9 3
+triangles 2
+0 1 2
+0 3 2     # clockwise on purpose
+)";
+
+bool same(const Triangulation& a, const Triangulation& b) {
+  if (a.width != b.width || a.height != b.height || a.space != b.space || a.layers.size() != b.layers.size())
+    return false;
+  for (std::size_t l = 0; l < a.layers.size(); ++l) {
+    const Mesh &p = a.layers[l], &q = b.layers[l];
+    if (p.value_count != q.value_count || p.values != q.values || p.points.size() != q.points.size()) return false;
+    for (std::size_t i = 0; i < p.points.size(); ++i)
+      if (p.points[i].x != q.points[i].x || p.points[i].y != q.points[i].y) return false;
+    if (p.triangles.size() != q.triangles.size()) return false;
+    for (std::size_t t = 0; t < p.triangles.size(); ++t)
+      if (p.triangles[t].v != q.triangles[t].v) return false;
+  }
+  return true;
+}
+
+// The parse error for `text`, or "" when it parses.
+std::string error_of(const std::string& text) {
+  try {
+    parse_tri(text, "in.tri");
+  } catch (const DataError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string header(int n, const char* channels = "grey") {
+  return std::string("tri 1\nsize 10 10\nchannels ") + channels + "\nvertices " + std::to_string(n) + "\n";
+}
+
+}  // namespace
+
+TEST_CASE("a small file parses, with winding normalized") {
+  const Triangulation t = parse_tri(square, "square.tri");
+  CHECK(t.width == 10);
+  CHECK(t.space == ColorSpace::grey);
+  REQUIRE(t.layers.size() == 1);
+  const Mesh& m = t.layers[0];
+  CHECK(m.vertex_count() == 4);
+  CHECK(m.value(2, 0) == 128.5);
+  REQUIRE(m.triangles.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) CHECK(m.doubled_area(k) > 0);
+}
+
+TEST_CASE("writer output reads back identically") {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> frac(0, 1);
+  for (int rep = 0; rep < 5; ++rep) {
+    Triangulation t;
+    t.width = 70;
+    t.height = 50;
+    t.space = rep % 2 ? ColorSpace::rgb : ColorSpace::grey;
+    Mesh m = tristream::testing::random_lattice_mesh(70, 50, 100, 20 + rep, 20, t.channels());
+    for (double& v : m.values) v = std::floor(v) + (rep > 2 ? frac(rng) : 0.0);  // decimals too
+    for (std::size_t i = 4; i < m.points.size(); ++i)
+      if (rep > 2) m.points[i].x = std::min(69.0, m.points[i].x + frac(rng) * 0.1);
+    t.layers = {m};
+    const std::string text = format_tri(t);
+    const Triangulation back = parse_tri(text, "round.tri");
+    CHECK(same(t, back));
+    CHECK(format_tri(back) == text);
+  }
+}
+
+TEST_CASE("layered files round-trip and need rgb or ycbcr") {
+  Triangulation t;
+  t.width = 30;
+  t.height = 20;
+  t.space = ColorSpace::ycbcr;
+  for (int c = 0; c < 3; ++c) t.layers.push_back(tristream::testing::random_lattice_mesh(30, 20, 10 + 5 * c, 40 + c));
+  const std::string text = format_tri(t);
+  CHECK(text.find("layer cb\n") != std::string::npos);
+  CHECK(same(t, parse_tri(text, "layers.tri")));
+  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels grey\nlayers 3\n"), Catch::Contains("in.tri:4:"));
+  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels rgb\nlayers 3\nlayer g\n"),
+             Catch::Contains("in.tri:5: expected layer 'r'"));
+}
+
+TEST_CASE("no triangles section means Delaunay") {
+  std::string text = header(9);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 3; ++x) text += std::to_string(x * 4) + " " + std::to_string(y * 4) + " 1\n";  // cocircular lattice
+  const Triangulation a = parse_tri(text, "a.tri");
+  const Triangulation b = parse_tri(text + "triangles 0\n", "b.tri");
+  CHECK(a.layers[0].triangles.size() == 8);
+  CHECK(same(a, b));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n1 1 1\n2 2 1\n"), Catch::Contains("collinear"));
+}
+
+TEST_CASE("errors name the line, what was expected and what was found") {
+  CHECK_THAT(error_of(""), Catch::Contains("in.tri:1: expected 'tri 1', found end of file"));
+  CHECK_THAT(error_of("tri 2\n"), Catch::Contains("in.tri:1: expected format version 1"));
+  CHECK_THAT(error_of("tri 1\nsize 0 10\n"), Catch::Contains("in.tri:2: expected an image width"));
+  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels cmyk\n"), Catch::Contains("in.tri:3: expected 'grey', 'rgb' or 'ycbcr', found 'cmyk'"));
+  CHECK_THAT(error_of(header(2)), Catch::Contains("in.tri:4: expected a vertex count"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n"), Catch::Contains("in.tri:6: expected vertex line 2 of 3"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n9 0 256\n"), Catch::Contains("in.tri:6: expected a value (a number in 0..255), found '256'"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n10 0 2\n"), Catch::Contains("in.tri:6: expected an x coordinate inside the image"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n9 nan 2\n"), Catch::Contains("in.tri:6: expected a y coordinate"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n9 0 2 3\n"), Catch::Contains("in.tri:6: expected a vertex line '<x> <y> <value>'"));
+  CHECK_THAT(error_of(header(3, "rgb") + "0 0 1\n"), Catch::Contains("'<x> <y> <v0> <v1> <v2>'"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n9 0 2\n0 0 5\n"), Catch::Contains("in.tri:7: expected distinct vertex positions, found a duplicate of the vertex on line 5"));
+  const std::string three = header(3) + "0 0 1\n9 0 2\n0 9 3\n";
+  CHECK_THAT(error_of(three + "triangles 1\n0 1 3\n"), Catch::Contains("in.tri:9: expected a vertex index (an integer in 0..2), found '3'"));
+  CHECK_THAT(error_of(three + "triangles 1\n0 1 1\n"), Catch::Contains("in.tri:9: expected three distinct vertex indices"));
+  CHECK_THAT(error_of(three + "triangles 2\n0 1 2\n"), Catch::Contains("in.tri:10: expected triangle line 2 of 2"));
+  CHECK_THAT(error_of(three + "triangles 1\n0 1 2\nextra\n"), Catch::Contains("in.tri:10: expected end of file, found 'extra'"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n4 4 2\n9 9 3\ntriangles 1\n0 1 2\n"), Catch::Contains("in.tri:9: expected a triangle of non-zero area"));
+  // Two triangles that overlap: (0,0) (9,0) (0,9) and (9,9) (0,9)... shifted so they cross.
+  const std::string four = header(4) + "0 0 1\n9 0 2\n0 9 3\n9 9 4\n";
+  CHECK(error_of(four + "triangles 2\n0 1 2\n1 3 2\n").empty());
+  CHECK_THAT(error_of(four + "triangles 2\n0 1 2\n0 1 3\n"),
+             Catch::Contains("in.tri:11: expected triangles whose interiors do not overlap, found a triangle overlapping the one on line 10"));
+  CHECK_THAT(error_of(four + "triangles 2\n0 1 2\n2 1 0\n"), Catch::Contains("overlapping"));
+}
+
+TEST_CASE("files that are missing give InputError") {
+  CHECK_THROWS_AS(read_tri_file("/nonexistent/x.tri"), InputError);
+}
