@@ -1,5 +1,6 @@
 // trisim: render triangulation files, compare renders with originals, measure images.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -120,15 +121,24 @@ int main(int argc, char** argv) {
   render_cmd->add_option("-o,--output", render_output, "Output PNG")->required();
 
   RenderRequest compare_req;
-  std::string compare_original, compare_window = "gaussian";
+  std::vector<std::string> compare_methods;
+  std::string compare_original, compare_window = "gaussian", compare_save;
   bool compare_json = false;
-  auto* compare_cmd = app.add_subcommand("compare", "Render a triangulation and compare it with the original image");
+  auto* compare_cmd = app.add_subcommand(
+      "compare", "Render a triangulation with one or more methods and compare each render with the original");
   add_render_options(compare_cmd, compare_req);
+  compare_cmd->remove_option(compare_cmd->get_option("--method"));
+  std::vector<std::string> method_choices = method_names();
+  method_choices.push_back("all");
+  compare_cmd->add_option("-m,--method", compare_methods, "Interpolation methods, or 'all' (default: bilinear)")
+      ->check(CLI::IsMember(method_choices));
+  compare_cmd->add_option("--save", compare_save, "Also write each render as <dir>/<method>.png")
+      ->check(CLI::ExistingDirectory);
   compare_cmd->add_option("--original", compare_original, "Original image")->required();
   compare_cmd->add_option("--ssim-window", compare_window, "SSIM window: 'gaussian' (11x11, sigma 1.5) or '8x8'")
       ->check(CLI::IsMember({"gaussian", "8x8"}))
       ->capture_default_str();
-  compare_cmd->add_flag("--json", compare_json, "Print one JSON object");
+  compare_cmd->add_flag("--json", compare_json, "Print one JSON object per method, one per line");
 
   std::string metrics_a, metrics_b, metrics_window = "gaussian";
   bool metrics_json_out = false;
@@ -151,28 +161,42 @@ int main(int argc, char** argv) {
     }
     if (*compare_cmd) {
       const Triangulation tri = read_tri_file(compare_req.input);
-      const Rendered r = render(tri, compare_req);
-      const Image original = load_original(compare_original, tri, r.image.width, r.image.height);
+      if (compare_methods.empty()) compare_methods = {"bilinear"};
+      if (std::find(compare_methods.begin(), compare_methods.end(), "all") != compare_methods.end())
+        compare_methods = method_names();
       const SsimOptions so = ssim_options(compare_window);
-      const Metrics m = compare_images(r.image, original, so);
-      if (compare_json) {
-        nlohmann::json j = metrics_json(m, so);
-        j["method"] = compare_req.method;
-        j["engine"] = compare_req.engine;
-        j["variant"] = compare_req.variant;
-        j["ms"] = r.ms;
-        j["width"] = r.image.width;
-        j["height"] = r.image.height;
-        std::size_t vertices = 0, triangles = 0;
-        for (const Mesh& mesh : tri.layers) vertices += mesh.vertex_count(), triangles += mesh.triangles.size();
-        j["vertices"] = vertices;
-        j["triangles"] = triangles;
-        std::printf("%s\n", j.dump().c_str());
-      } else {
-        std::printf("method %s\nengine %s\n", compare_req.method.c_str(), compare_req.engine.c_str());
-        print_metrics(m, so);
-        std::printf("ms     %.3f\n", r.ms);
+      std::size_t vertices = 0, triangles = 0;
+      for (const Mesh& mesh : tri.layers) vertices += mesh.vertex_count(), triangles += mesh.triangles.size();
+      if (!compare_json)
+        std::printf("%-14s %-10s %10s %10s %9s %10s\n", "method", "engine", "mse", "psnr_db", "ssim", "ms");
+      Image original;
+      for (const std::string& method : compare_methods) {
+        RenderRequest req = compare_req;
+        req.method = method;
+        const Rendered r = render(tri, req);
+        if (original.pixels.empty()) original = load_original(compare_original, tri, r.image.width, r.image.height);
+        const Metrics m = compare_images(r.image, original, so);
+        if (!compare_save.empty()) write_png(compare_save + "/" + method + ".png", r.image);
+        if (compare_json) {
+          nlohmann::json j = metrics_json(m, so);
+          j["method"] = method;
+          j["engine"] = req.engine;
+          j["variant"] = req.variant;
+          j["ms"] = r.ms;
+          j["width"] = r.image.width;
+          j["height"] = r.image.height;
+          j["vertices"] = vertices;
+          j["triangles"] = triangles;
+          std::printf("%s\n", j.dump().c_str());
+        } else {
+          std::printf("%-14s %-10s %10.4f %10.4f %9.6f %10.3f\n", method.c_str(), req.engine.c_str(), m.mse,
+                      is_identical_psnr(m.psnr) ? INFINITY : m.psnr, m.ssim, r.ms);
+        }
+        std::fflush(stdout);
       }
+      if (!compare_json)
+        std::printf("# %zu vertices, %zu triangles; SSIM %s\n", vertices, triangles,
+                    so.window == SsimWindow::gaussian11 ? "Gaussian 11x11, sigma 1.5" : "uniform 8x8");
       return exit_ok;
     }
     const Image a = read_image(metrics_a);

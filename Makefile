@@ -1,0 +1,42 @@
+# tristream: every target installs what it needs first (tools/install-deps.sh), then builds.
+#   make run     build, then render the demo data with every method into out/ and print a table
+#   make test    build, then run every test through ctest
+# More: make build | test-sanitize | fuzz | cross | bench | ci | clean
+
+BUILD      ?= build
+JOBS       ?= $(shell nproc)
+FUZZ_TIME  ?= 60
+
+.PHONY: all deps build run test test-sanitize fuzz cross bench ci clean
+
+all: build
+
+deps:
+	@bash tools/install-deps.sh build
+
+build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j$(JOBS)
+
+run: build
+	bash tools/run-demo.sh $(BUILD)/bin out
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
+
+# The tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer.
+test-sanitize: deps
+	cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DTRISTREAM_SANITIZE=ON -DTRISTREAM_BENCH=OFF
+	cmake --build build-sanitize -j$(JOBS)
+	cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
+
+# libFuzzer (clang 14) on every fuzz target for FUZZ_TIME seconds each, from the shipped corpus.
+fuzz:
+	@bash tools/install-deps.sh build fuzz
+	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang-14 \
+	  -DCMAKE_CXX_COMPILER=clang++-14 -DTRISTREAM_FUZZ=ON -DTRISTREAM_TESTS=OFF -DTRISTREAM_BENCH=OFF
+	cmake --build build-fuzz -j$(JOBS)
+	bash tools/run-fuzzers.sh build-fuzz/bin $(FUZZ_TIME)
+
+clean:
+	rm -rf build build-sanitize build-fuzz build-cross out

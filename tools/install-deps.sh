@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Installs the Debian packages a task needs, and only those that are missing.
+# Usage: tools/install-deps.sh [build|fuzz|cross|bench|all]...   (default: build)
+set -euo pipefail
+
+declare -A groups=(
+  [build]="cmake make g++ pkg-config catch2 libstb-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev"
+  [fuzz]="clang-14 libclang-rt-14-dev"
+  [cross]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi qemu-user binutils-arm-none-eabi"
+  [bench]="valgrind"
+)
+
+wanted=()
+for group in "${@:-build}"; do
+  if [ "$group" = all ]; then
+    for g in "${!groups[@]}"; do wanted+=(${groups[$g]}); done
+  elif [ -n "${groups[$group]:-}" ]; then
+    wanted+=(${groups[$group]})
+  else
+    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench or all)" >&2
+    exit 64
+  fi
+done
+
+missing=()
+for pkg in "${wanted[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
+  [ "$status" = "install ok installed" ] || missing+=("$pkg")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "install-deps: installing ${missing[*]}" >&2
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root (or sudo) to install: ${missing[*]}" >&2; exit 77; }
+  sudo="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
