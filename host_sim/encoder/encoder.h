@@ -1,0 +1,71 @@
+#pragma once
+// The encoder: an image in, a triangulation out (greedy insertion, encoder/greedy.h).
+#include <cstddef>
+#include <functional>
+
+#include "model/image.h"
+#include "model/triangulation.h"
+
+namespace tristream {
+
+enum class ColorMode : std::uint8_t {
+  co,        // one co-triangulation carrying every channel
+  separate,  // one triangulation per channel (a layered file)
+};
+
+enum class CotriMethod : std::uint8_t {
+  greedy,  // greedy insertion on the squared error summed over the channels
+  thesis,  // the thesis's section 2.4: one pass per channel (see encode_thesis_cotri)
+};
+
+enum class VertexFit : std::uint8_t {
+  pixel,  // vertex values are the pixel values at the vertex positions
+  lsq,    // least-squares refit over all pixels, rounded to 8 bits
+};
+
+struct EncodeOptions {
+  // Stop criteria; at least one must be set, the first one reached stops. `vertices` counts
+  // the vertices of each mesh (of each layer with ColorMode::separate), four corners included.
+  std::size_t vertices = 0;
+  // Stop when the RMS error of the linear interpolant (over the pixels and the mesh's
+  // channels, in the encoding space, unrounded) is at most max_rms.
+  double max_rms = 0;
+  ColorSpace space = ColorSpace::rgb;  // rgb or ycbcr, for colour input
+  bool grey = false;                   // encode a colour image as grey (BT.601 luma)
+  ColorMode color = ColorMode::co;
+  CotriMethod cotri = CotriMethod::greedy;
+  VertexFit fit = VertexFit::pixel;
+  // The two improvements over plain Garland-Heckbert (false / 0 gives the plain algorithm):
+  bool rank_by_total_error = true;  // priority = total squared error of the triangle
+  double smoothing_sigma = 1.0;     // candidates chosen on a Gaussian-smoothed copy
+  // Called now and then with the fraction done, in [0, 1].
+  std::function<void(double)> progress;
+};
+
+struct EncodeResult {
+  Triangulation triangulation;
+  std::size_t vertices = 0;   // summed over layers
+  std::size_t triangles = 0;  // summed over layers
+  double psnr = 0;            // of the 8-bit linear interpolant against the encoded image
+  double seconds = 0;         // wall time of the encoding
+};
+
+// Encodes `image` (1 or 3 channels, at least 2 x 2). A grey image (or `grey`) gives a grey
+// triangulation. Deterministic. Throws UsageError for impossible options (no stop
+// criterion, fewer than 4 vertices, more vertices than pixels).
+EncodeResult encode(const Image& image, const EncodeOptions& options);
+
+// The image a triangulation encodes: luma for a grey triangulation of a colour image.
+Image encoded_original(const Image& image, const Triangulation& tri);
+
+// The linear interpolant of a triangulation whose vertices are pixel positions tiling
+// [0, W-1] x [0, H-1], converted to RGB for YCbCr, clamped and rounded to 8 bits.
+Image render_linear(const Triangulation& tri);
+
+// A regular grid of about `vertices` pixel positions (nx x ny with nx * ny closest to it,
+// spacing in proportion to the image's sides, the four corners included), Delaunay
+// triangulated, with pixel values (or least-squares values): the baseline of adaptive
+// sampling.
+Triangulation regular_grid(const Image& image, std::size_t vertices, ColorSpace space, VertexFit fit);
+
+}  // namespace tristream

@@ -1,0 +1,133 @@
+// triencode: turn an image into a triangulation file by greedy insertion.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "common/errors.h"
+#include "common/tool_main.h"
+#include "encoder/encoder.h"
+#include "io/image_io.h"
+#include "io/tri_file.h"
+
+using namespace tristream;
+
+namespace {
+
+// A one-line bar on stderr, redrawn when the whole percentage changes.
+class ProgressBar {
+ public:
+  void operator()(double fraction) {
+    const int percent = int(fraction * 100);
+    if (percent == last_) return;
+    last_ = percent;
+    constexpr int width = 40;
+    const int filled = percent * width / 100;
+    std::fprintf(stderr, "\r[%.*s%*s] %3d%%", filled, "########################################", width - filled, "",
+                 percent);
+    std::fflush(stderr);
+  }
+  void finish() {
+    if (last_ >= 0) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  int last_ = -1;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Encode an image (PNG, JPEG, BMP, PGM/PPM) as a triangulation (.tri) by greedy insertion:\n"
+               "start from the four corners, repeatedly insert the pixel of largest error under the\n"
+               "linear interpolant (Garland & Heckbert 1995; triangles ranked by total squared error,\n"
+               "candidates chosen on a Gaussian-smoothed copy)."};
+  std::string input, output;
+  std::size_t vertices = 0;
+  double max_rms = 0;
+  std::string color = "co", space = "rgb", cotri = "greedy", fit = "pixel", rank = "total";
+  double sigma = 1.0;
+  bool grey = false, quiet = false, json = false;
+  app.add_option("image", input, "Input image")->required();
+  app.add_option("-o,--output", output, "Output triangulation file (.tri)")->required();
+  auto* n_opt = app.add_option("-n,--vertices", vertices,
+                               "Vertices per triangulation, corners included (with --color separate: per channel)");
+  auto* e_opt = app.add_option("-e,--error", max_rms,
+                               "Stop when the RMS error of the linear interpolant (0-255 scale, encoding space) "
+                               "is at most this")
+                    ->check(CLI::PositiveNumber);
+  app.add_option("--color", color, "Colour images: one co-triangulation or one per channel")
+      ->check(CLI::IsMember({"co", "separate"}))
+      ->capture_default_str();
+  app.add_option("--space", space, "Colour space of a colour encoding")
+      ->check(CLI::IsMember({"rgb", "ycbcr"}))
+      ->capture_default_str();
+  app.add_flag("--grey", grey, "Encode a colour image as grey (BT.601 luma)");
+  app.add_option("--cotri", cotri,
+                 "Co-triangulation: greedy on the error summed over channels, or the thesis's per-channel passes "
+                 "(section 2.4)")
+      ->check(CLI::IsMember({"greedy", "thesis"}))
+      ->capture_default_str();
+  app.add_option("--fit", fit, "Vertex values: the pixel values, or a least-squares refit rounded to 8 bits")
+      ->check(CLI::IsMember({"pixel", "lsq"}))
+      ->capture_default_str();
+  app.add_option("--rank", rank, "Triangle priority: total squared error, or the worst pixel (plain G&H)")
+      ->check(CLI::IsMember({"total", "worst"}))
+      ->capture_default_str();
+  app.add_option("--sigma", sigma, "Gaussian sigma of the copy candidates are chosen on (0: the image itself)")
+      ->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str();
+  app.add_flag("-q,--quiet", quiet, "No progress bar");
+  app.add_flag("--json", json, "Print the summary as one JSON object");
+
+  return run_tool("triencode", app, argc, argv, [&] {
+    if (!n_opt->count() && !e_opt->count()) throw UsageError("give --vertices N or --error E");
+    EncodeOptions o;
+    o.vertices = vertices;
+    if (n_opt->count() && vertices < 4)
+      throw UsageError("--vertices " + std::to_string(vertices) + ": expected at least 4 (the corners)");
+    o.max_rms = max_rms;
+    o.color = color == "co" ? ColorMode::co : ColorMode::separate;
+    o.space = space == "rgb" ? ColorSpace::rgb : ColorSpace::ycbcr;
+    o.grey = grey;
+    o.cotri = cotri == "greedy" ? CotriMethod::greedy : CotriMethod::thesis;
+    o.fit = fit == "pixel" ? VertexFit::pixel : VertexFit::lsq;
+    o.rank_by_total_error = rank == "total";
+    o.smoothing_sigma = sigma;
+    ProgressBar bar;
+    if (!quiet && isatty(STDERR_FILENO)) o.progress = [&bar](double f) { bar(f); };
+
+    const Image image = read_image(input);
+    EncodeResult r;
+    try {
+      r = encode(image, o);
+    } catch (const DataError& e) {
+      throw DataError(input + ": " + e.what());
+    }
+    bar.finish();
+    write_tri_file(output, r.triangulation);
+
+    if (json) {
+      nlohmann::json j;
+      j["input"] = input;
+      j["output"] = output;
+      j["width"] = image.width;
+      j["height"] = image.height;
+      j["space"] = std::string(to_string(r.triangulation.space));
+      j["layers"] = r.triangulation.layers.size();
+      j["vertices"] = r.vertices;
+      j["triangles"] = r.triangles;
+      j["psnr_linear"] = std::isinf(r.psnr) ? nlohmann::json(nullptr) : nlohmann::json(r.psnr);
+      j["seconds"] = r.seconds;
+      std::printf("%s\n", j.dump().c_str());
+    } else {
+      std::printf("%s: %zu vertices, %zu triangles, PSNR %.2f dB (linear interpolant), %.3f s\n", output.c_str(),
+                  r.vertices, r.triangles, r.psnr, r.seconds);
+    }
+    return int(exit_ok);
+  });
+}
