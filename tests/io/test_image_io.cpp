@@ -15,7 +15,7 @@ TEST_CASE("PNG round trip, grey and RGB") {
   for (int channels : {1, 3}) {
     Image img(13, 7, channels);
     for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = std::uint8_t(i * 37 + 11);
-    const std::string path = (dir / ("x" + std::to_string(channels) + ".png")).string();
+    const std::string path = (dir / (std::to_string(channels) + "channel.png")).string();
     write_png(path, img);
     const Image back = read_image(path);
     CHECK(back.width == 13);
