@@ -1,0 +1,19 @@
+#pragma once
+// Exact integer helpers of the per-triangle setup (64-bit; never used per pixel).
+#include <stdint.h>
+
+namespace tristream::core::detail {
+
+// floor(n / d) for d > 0.
+inline int64_t floor_div(int64_t n, int64_t d) {
+  int64_t q = n / d;
+  return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+// n / d rounded to nearest (halves up) for d > 0; |n| < 2^62.
+inline int64_t round_div(int64_t n, int64_t d) { return floor_div(2 * n + d, 2 * d); }
+
+inline int32_t min3(int32_t a, int32_t b, int32_t c) { return a < b ? (a < c ? a : c) : (b < c ? b : c); }
+inline int32_t max3(int32_t a, int32_t b, int32_t c) { return a > b ? (a > c ? a : c) : (b > c ? b : c); }
+
+}  // namespace tristream::core::detail

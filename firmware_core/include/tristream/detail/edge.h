@@ -1,0 +1,122 @@
+#pragma once
+// Edge functions of a triangle and the per-row span bounds they imply.
+//
+// For an edge P -> Q (positions in position_fx) and the sample point of pixel (x, y),
+//   E(x, y) = A x + B y + C,  A = -(Qy - Py) 2^S,  B = (Qx - Px) 2^S,  C = (Qy - Py) Px - (Qx - Px) Py,
+// which is positive inside a triangle of positive orientation. A pixel is covered when
+// E >= bias on all three edges: bias 0 for inclusive edges, 1 for exclusive ones. An edge is
+// inclusive when it is on the domain boundary, or by the tie rule when A < 0 or (A == 0 and B < 0):
+// a sample point on a shared edge belongs to the triangle containing the point moved by
+// (-eps, -eps^2), i.e. to the left (and, on a horizontal edge, above), the rule of the reference
+// renderer (host_sim/reference/coverage.h). Boundary vertices have an explicit owner (blob.h).
+#include <stdint.h>
+
+#include "tristream/config.h"
+#include "tristream/detail/arith.h"
+
+namespace tristream::core::detail {
+
+struct Edge {
+  int64_t a = 0;
+  int64_t b = 0;
+  int64_t c = 0;       // reduced by the bias: covered when a x + b y + c >= 0
+  int64_t c_exact = 0;  // without the bias: a x + b y + c_exact is the exact edge function
+
+  int64_t exact_at(int32_t x, int32_t y) const { return a * x + b * y + c_exact; }
+};
+
+inline Edge make_edge(int32_t px, int32_t py, int32_t qx, int32_t qy, bool boundary) {
+  const int64_t dx = int64_t(qx) - px;
+  const int64_t dy = int64_t(qy) - py;
+  Edge e;
+  e.a = -dy * (int64_t(1) << config::subpixel_bits);
+  e.b = dx * (int64_t(1) << config::subpixel_bits);
+  const bool inclusive = boundary || e.a < 0 || (e.a == 0 && e.b < 0);
+  e.c_exact = dy * px - dx * py;
+  e.c = e.c_exact - (inclusive ? 0 : 1);
+  return e;
+}
+
+// floor(num(y) / den) for num(y) = num0 + step * (y - y0), den > 0, stepped one row at a time
+// with additions only. Exact: quotient and remainder are carried, never rounded.
+struct FloorStepper {
+  int32_t q = 0;      // floor(num / den)
+  int32_t r = 0;      // num - q * den, in [0, den)
+  int32_t den = 1;
+  int32_t q_step = 0;  // floor(step / den)
+  int32_t r_step = 0;  // step - q_step * den
+
+  void init(int64_t num, int64_t step, int64_t d) {
+    const int64_t q64 = floor_div(num, d);
+    q = int32_t(q64);
+    r = int32_t(num - q64 * d);
+    den = int32_t(d);
+    const int64_t qs = floor_div(step, d);
+    q_step = int32_t(qs);
+    r_step = int32_t(step - qs * d);
+  }
+  void next_row() {
+    q += q_step;
+    r += r_step;
+    if (r >= den) {
+      r -= den;
+      ++q;
+    }
+  }
+};
+
+// The span of covered columns of one row, from the three edges: x >= -floor(num / a) for edges
+// with a > 0 (left bounds), x <= floor(num / -a) for a < 0 (right bounds), num = b y + c.
+// Edges with a == 0 restrict rows only (see row_range).
+struct SpanStepper {
+  FloorStepper bound[3];
+  int8_t kind[3] = {0, 0, 0};  // +1 left bound, -1 right bound, 0 horizontal
+  int count = 0;
+
+  void init(const Edge* edges, int32_t y0) {
+    count = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Edge& e = edges[k];
+      if (e.a == 0) continue;
+      kind[count] = e.a > 0 ? 1 : -1;
+      const int64_t den = e.a > 0 ? e.a : -e.a;
+      bound[count].init(e.b * y0 + e.c, e.b, den);
+      ++count;
+    }
+  }
+  // Columns [*x0, *x1] (inclusive; empty when *x0 > *x1) of the current row.
+  void span(int32_t* x0, int32_t* x1) const {
+    int32_t lo = INT32_MIN, hi = INT32_MAX;
+    for (int k = 0; k < count; ++k) {
+      if (kind[k] > 0) {
+        const int32_t v = -bound[k].q;
+        lo = v > lo ? v : lo;
+      } else {
+        const int32_t v = bound[k].q;
+        hi = v < hi ? v : hi;
+      }
+    }
+    *x0 = lo;
+    *x1 = hi;
+  }
+  void next_row() {
+    for (int k = 0; k < count; ++k) bound[k].next_row();
+  }
+};
+
+// Narrows [*y0, *y1] (inclusive rows) by the edges with a == 0: b y + c >= 0.
+inline void restrict_rows(const Edge* edges, int32_t* y0, int32_t* y1) {
+  for (int k = 0; k < 3; ++k) {
+    const Edge& e = edges[k];
+    if (e.a != 0) continue;
+    if (e.b > 0) {
+      const int64_t lo = -floor_div(e.c, e.b);  // y >= ceil(-c / b)
+      if (lo > *y0) *y0 = int32_t(lo > INT32_MAX ? INT32_MAX : lo);
+    } else {
+      const int64_t hi = floor_div(e.c, -e.b);
+      if (hi < *y1) *y1 = int32_t(hi < INT32_MIN ? INT32_MIN : hi);
+    }
+  }
+}
+
+}  // namespace tristream::core::detail

@@ -1,0 +1,82 @@
+#pragma once
+// Turning interpolated channel values (q24_8, unclamped) into output pixels: colour conversion,
+// clamping, rounding, RGB565 packing (with optional Bayer dithering on absolute position).
+#include <stdint.h>
+
+#include "tristream/pixel_format.h"
+
+namespace tristream::core::detail {
+
+// Round a q24_8 value to nearest and clamp to [0, 255].
+inline uint8_t to_u8(int32_t v_q8) {
+  int32_t r = (v_q8 + 128) >> 8;
+  return uint8_t(r < 0 ? 0 : (r > 255 ? 255 : r));
+}
+
+// JPEG YCbCr (BT.601 full range) to RGB on q24_8 values, coefficients in q16.
+inline void ycbcr_to_rgb_q8(int32_t y, int32_t cb, int32_t cr, int32_t* rgb) {
+  const int64_t dcb = int64_t(cb) - 128 * 256;
+  const int64_t dcr = int64_t(cr) - 128 * 256;
+  constexpr int64_t k_r_cr = 91881;   // 1.402 * 2^16
+  constexpr int64_t k_g_cb = 22554;   // 0.344136286 * 2^16
+  constexpr int64_t k_g_cr = 46802;   // 0.714136286 * 2^16
+  constexpr int64_t k_b_cb = 116130;  // 1.772 * 2^16
+  constexpr int64_t half = 1 << 15;
+  rgb[0] = int32_t(y + ((k_r_cr * dcr + half) >> 16));
+  rgb[1] = int32_t(y - ((k_g_cb * dcb + k_g_cr * dcr - half) >> 16));
+  rgb[2] = int32_t(y + ((k_b_cb * dcb + half) >> 16));
+}
+
+// BT.601 luma of 8-bit RGB, rounded.
+inline uint8_t luma(uint8_t r, uint8_t g, uint8_t b) {
+  return uint8_t((19595u * r + 38470u * g + 7471u * b + 32768u) >> 16);
+}
+
+// 4x4 Bayer thresholds scaled to [8, 248]: the rounding offset of an 8-bit to n-bit conversion.
+inline uint32_t bayer_offset(int32_t x, int32_t y) {
+  static const uint8_t matrix[4][4] = {{0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
+  return uint32_t(matrix[y & 3][x & 3]) * 16u + 8u;
+}
+
+// n-bit value of an 8-bit one: round(v * max / 255) without dithering (offset 127).
+inline uint32_t reduce(uint32_t v, uint32_t max, uint32_t offset) { return (v * max + offset) / 255u; }
+
+inline uint16_t pack565(uint8_t r, uint8_t g, uint8_t b, uint32_t offset) {
+  return uint16_t((reduce(r, 31, offset) << 11) | (reduce(g, 63, offset) << 5) | reduce(b, 31, offset));
+}
+
+// Writes one pixel of 8-bit R, G, B at screen position (x, y) (used for dithering).
+template <PixelFormat F>
+inline void store_rgb(uint8_t* p, uint8_t r, uint8_t g, uint8_t b, int32_t x, int32_t y, bool dither) {
+  if constexpr (F == PixelFormat::l8) {
+    p[0] = luma(r, g, b);
+  } else if constexpr (F == PixelFormat::rgb888) {
+    p[0] = r;
+    p[1] = g;
+    p[2] = b;
+  } else if constexpr (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be) {
+    const uint16_t w = pack565(r, g, b, dither ? bayer_offset(x, y) : 127u);
+    const int lo = F == PixelFormat::rgb565_le ? 0 : 1;
+    p[lo] = uint8_t(w & 0xFF);
+    p[1 - lo] = uint8_t(w >> 8);
+  } else if constexpr (F == PixelFormat::xrgb8888) {
+    p[0] = b;
+    p[1] = g;
+    p[2] = r;
+    p[3] = 0xFF;
+  } else {
+    p[0] = uint8_t(p[0] + 1);
+  }
+}
+
+// Writes one grey pixel; grey is replicated to R, G and B.
+template <PixelFormat F>
+inline void store_grey(uint8_t* p, uint8_t v, int32_t x, int32_t y, bool dither) {
+  if constexpr (F == PixelFormat::l8) {
+    p[0] = v;
+  } else {
+    store_rgb<F>(p, v, v, v, x, y, dither);
+  }
+}
+
+}  // namespace tristream::core::detail

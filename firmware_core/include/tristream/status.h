@@ -1,0 +1,29 @@
+#pragma once
+// Result of every fallible core call. Host tools turn these into messages.
+#include <stdint.h>
+
+namespace tristream::core {
+
+enum class [[nodiscard]] Status : uint8_t {
+  ok = 0,
+  null_argument,        // a required pointer was null
+  truncated,            // the blob is shorter than its header or a section says
+  bad_magic,            // the first four bytes are not "TSTB"
+  bad_version,          // format version not supported by this core
+  config_mismatch,      // packed for another sub-pixel or gradient precision
+  bad_header,           // sizes, colour space, method, layer layout or reserved fields invalid
+  bad_section,          // a section offset is misaligned, overlaps the header or runs past the end
+  too_large,            // a size or count beyond the documented limits
+  coordinate_out_of_range,  // a vertex outside the domain [0, W-1] x [0, H-1]
+  value_out_of_range,       // a vertex value above 255 or a gradient beyond TS_MAX_GRADIENT
+  bad_index,            // a triangle refers to a vertex that does not exist, or repeats one
+  bad_triangle,         // a triangle with zero or negative area, or unknown flag bits
+  unsorted,             // triangles not sorted by their top row
+  bad_params,           // render parameters invalid (size, viewport, tile, format)
+  buffer_too_small,     // tile buffer or workspace smaller than required
+};
+
+// A short English description, for logs.
+const char* status_text(Status s);
+
+}  // namespace tristream::core

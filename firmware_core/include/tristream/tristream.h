@@ -1,0 +1,63 @@
+/* The C interface of the tristream core: open a blob, size the buffers, render tile by tile.
+   Thin wrappers over the C++ API in tristream/render.h; all memory belongs to the caller. */
+#ifndef TRISTREAM_TRISTREAM_H
+#define TRISTREAM_TRISTREAM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Status codes: the values of tristream::core::Status. 0 is success. */
+typedef int ts_status;
+#define TS_OK 0
+
+/* Pixel formats: the values of tristream::core::PixelFormat. */
+enum { TS_L8 = 0, TS_RGB888 = 1, TS_RGB565_LE = 2, TS_RGB565_BE = 3, TS_XRGB8888 = 4, TS_COVERAGE8 = 5 };
+
+/* An opened (validated) blob; treat as opaque. */
+typedef struct ts_blob {
+  uint64_t storage[24];
+} ts_blob;
+
+typedef struct ts_rect {
+  int32_t x0, y0, x1, y1; /* half-open: columns x0..x1-1, rows y0..y1-1 */
+} ts_rect;
+
+typedef struct ts_tile {
+  uint8_t* pixels;
+  int32_t stride; /* bytes per row */
+  ts_rect rect;
+  int format;
+} ts_tile;
+
+typedef void (*ts_sink)(void* context, const ts_tile* tile);
+
+typedef struct ts_params {
+  uint16_t output_width, output_height; /* 0: the blob's size */
+  ts_rect viewport;                     /* empty: the whole output */
+  uint16_t tile_width, tile_height;     /* 0: the viewport's width / height */
+  int format;
+  int dither; /* nonzero: Bayer dithering for RGB565 */
+  uint8_t background[3];
+} ts_params;
+
+/* Validates `size` bytes and fills `blob`. On failure *error_offset (if not null) is the byte
+   offset of the offending field. Returns TS_OK or a status code. */
+ts_status ts_open(const void* bytes, size_t size, ts_blob* blob, uint32_t* error_offset);
+/* Bytes of tile buffer and of workspace needed for these parameters. */
+ts_status ts_tile_buffer_size(const ts_blob* blob, const ts_params* params, size_t* bytes);
+ts_status ts_workspace_size(const ts_blob* blob, const ts_params* params, size_t* bytes);
+/* Renders the viewport; each finished tile goes to sink(context, tile). */
+ts_status ts_render(const ts_blob* blob, const ts_params* params, void* tile_buffer, size_t tile_buffer_size,
+                    void* workspace, size_t workspace_size, ts_sink sink, void* context);
+/* A short English description of a status code. */
+const char* ts_status_text(ts_status status);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

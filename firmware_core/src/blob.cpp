@@ -1,0 +1,170 @@
+#include "tristream/blob.h"
+
+#include "tristream/detail/bytes.h"
+#include "tristream/fixed_point.h"
+
+namespace tristream::core {
+
+using detail::load_i32;
+using detail::load_u16;
+using detail::load_u32;
+
+const char* status_text(Status s) {
+  switch (s) {
+    case Status::ok: return "ok";
+    case Status::null_argument: return "null argument";
+    case Status::truncated: return "blob truncated";
+    case Status::bad_magic: return "bad magic (expected \"TSTB\")";
+    case Status::bad_version: return "unsupported blob version";
+    case Status::config_mismatch: return "blob packed for another core configuration";
+    case Status::bad_header: return "invalid header field";
+    case Status::bad_section: return "section misaligned or out of bounds";
+    case Status::too_large: return "size or count beyond the documented limits";
+    case Status::coordinate_out_of_range: return "vertex outside the domain";
+    case Status::value_out_of_range: return "vertex value or gradient out of range";
+    case Status::bad_index: return "triangle vertex index out of range or repeated";
+    case Status::bad_triangle: return "triangle with non-positive area or unknown flags";
+    case Status::unsorted: return "triangles not sorted by top row";
+    case Status::bad_params: return "invalid render parameters";
+    case Status::buffer_too_small: return "buffer too small";
+  }
+  return "unknown status";
+}
+
+namespace {
+
+struct Checker {
+  const uint8_t* b;
+  uint32_t size;
+  BlobError* error;
+
+  Status fail(Status s, uint32_t offset) const {
+    if (error) error->offset = offset;
+    return s;
+  }
+  // True when [offset, offset + count * unit) lies inside the blob after the header.
+  bool section_ok(uint32_t offset, uint64_t count, uint32_t unit) const {
+    if (offset < blob_header_size || offset % 4 != 0) return false;
+    uint64_t end = uint64_t(offset) + count * unit;
+    return end <= size;
+  }
+};
+
+Status check_layer(const Checker& c, const Blob& blob, uint32_t entry, BlobLayer* out) {
+  const uint8_t* e = c.b + entry;
+  uint32_t vertices = load_u32(e);
+  uint32_t triangles = load_u32(e + 4);
+  uint32_t pos_off = load_u32(e + 8);
+  uint32_t val_off = load_u32(e + 12);
+  uint32_t grad_off = load_u32(e + 16);
+  uint32_t tri_off = load_u32(e + 20);
+  for (uint32_t k = 24; k < blob_layer_entry_size; ++k)
+    if (e[k] != 0) return c.fail(Status::bad_header, entry + k);
+  if (vertices < 3 || vertices > blob_max_vertices) return c.fail(Status::too_large, entry);
+  if (triangles < 1 || triangles > blob_max_triangles) return c.fail(Status::too_large, entry + 4);
+  const uint32_t nv = blob.values_per_vertex;
+  if (!c.section_ok(pos_off, vertices, 4)) return c.fail(Status::bad_section, entry + 8);
+  if (!c.section_ok(val_off, uint64_t(vertices) * nv, 2)) return c.fail(Status::bad_section, entry + 12);
+  if (blob.method == Method::zienkiewicz) {
+    if (!c.section_ok(grad_off, uint64_t(vertices) * nv, 8)) return c.fail(Status::bad_section, entry + 16);
+  } else if (grad_off != 0) {
+    return c.fail(Status::bad_section, entry + 16);
+  }
+  if (!c.section_ok(tri_off, triangles, blob_triangle_size)) return c.fail(Status::bad_section, entry + 20);
+
+  const int32_t max_x = int32_t(blob.width - 1) << config::subpixel_bits;
+  const int32_t max_y = int32_t(blob.height - 1) << config::subpixel_bits;
+  for (uint32_t v = 0; v < vertices; ++v) {
+    const uint32_t at = pos_off + 4 * v;
+    if (int32_t(load_u16(c.b + at)) > max_x || int32_t(load_u16(c.b + at + 2)) > max_y)
+      return c.fail(Status::coordinate_out_of_range, at);
+  }
+  for (uint32_t k = 0; k < vertices * nv; ++k) {
+    const uint32_t at = val_off + 2 * k;
+    if (load_u16(c.b + at) > 255 * 256) return c.fail(Status::value_out_of_range, at);
+  }
+  if (blob.method == Method::zienkiewicz) {
+    const int32_t limit = config::max_gradient << config::gradient_frac_bits;
+    for (uint32_t k = 0; k < 2 * vertices * nv; ++k) {
+      const uint32_t at = grad_off + 4 * k;
+      const int32_t g = load_i32(c.b + at);
+      if (g > limit || g < -limit) return c.fail(Status::value_out_of_range, at);
+    }
+  }
+  int32_t previous_top = 0;
+  for (uint32_t t = 0; t < triangles; ++t) {
+    const uint32_t at = tri_off + blob_triangle_size * t;
+    const uint8_t* p = c.b + at;
+    const uint32_t i0 = load_u16(p), i1 = load_u16(p + 2), i2 = load_u16(p + 4);
+    const uint16_t flags = load_u16(p + 6);
+    if (i0 >= vertices || i1 >= vertices || i2 >= vertices || i0 == i1 || i1 == i2 || i0 == i2)
+      return c.fail(Status::bad_index, at);
+    if (flags & ~uint16_t(triangle_flags_mask)) return c.fail(Status::bad_triangle, at + 6);
+    const uint8_t* pos = c.b + pos_off;
+    const int64_t x0 = load_u16(pos + 4 * i0), y0 = load_u16(pos + 4 * i0 + 2);
+    const int64_t x1 = load_u16(pos + 4 * i1), y1 = load_u16(pos + 4 * i1 + 2);
+    const int64_t x2 = load_u16(pos + 4 * i2), y2 = load_u16(pos + 4 * i2 + 2);
+    if ((x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0) <= 0) return c.fail(Status::bad_triangle, at);
+    int32_t top = int32_t(y0 < y1 ? (y0 < y2 ? y0 : y2) : (y1 < y2 ? y1 : y2));
+    if (top < previous_top) return c.fail(Status::unsorted, at);
+    previous_top = top;
+  }
+  out->vertex_count = vertices;
+  out->triangle_count = triangles;
+  out->positions = c.b + pos_off;
+  out->values = c.b + val_off;
+  out->gradients = blob.method == Method::zienkiewicz ? c.b + grad_off : nullptr;
+  out->triangles = c.b + tri_off;
+  return Status::ok;
+}
+
+}  // namespace
+
+Status open_blob(const void* bytes, size_t size, Blob* out, BlobError* error) {
+  if (!bytes || !out) return Status::null_argument;
+  const uint8_t* b = static_cast<const uint8_t*>(bytes);
+  Checker c{b, 0, error};
+  if (size < blob_header_size) return c.fail(Status::truncated, uint32_t(size));
+  if (b[0] != 'T' || b[1] != 'S' || b[2] != 'T' || b[3] != 'B') return c.fail(Status::bad_magic, 0);
+  if (load_u16(b + 4) != blob_version) return c.fail(Status::bad_version, 4);
+  if (load_u16(b + 6) != blob_header_size) return c.fail(Status::bad_header, 6);
+  const uint32_t total = load_u32(b + 8);
+  if (total < blob_header_size || total > size) return c.fail(Status::truncated, 8);
+  c.size = total;
+  if (b[20] != config::subpixel_bits) return c.fail(Status::config_mismatch, 20);
+  if (b[21] != config::gradient_frac_bits) return c.fail(Status::config_mismatch, 21);
+  if (load_u32(b + 24) != blob_config_hash()) return c.fail(Status::config_mismatch, 24);
+
+  Blob blob;
+  blob.bytes = b;
+  blob.size = total;
+  blob.width = load_u16(b + 12);
+  blob.height = load_u16(b + 14);
+  if (blob.width < 2 || blob.width > config::max_dimension) return c.fail(Status::too_large, 12);
+  if (blob.height < 2 || blob.height > config::max_dimension) return c.fail(Status::too_large, 14);
+  if (b[16] > 2) return c.fail(Status::bad_header, 16);
+  blob.space = ColorSpace(b[16]);
+  if (b[17] > 1) return c.fail(Status::bad_header, 17);
+  blob.method = Method(b[17]);
+  blob.layer_count = b[18];
+  blob.values_per_vertex = b[19];
+  const int channels = blob.space == ColorSpace::grey ? 1 : 3;
+  const bool single = blob.layer_count == 1 && blob.values_per_vertex == channels;
+  const bool layered = channels == 3 && blob.layer_count == 3 && blob.values_per_vertex == 1;
+  if (!single) {
+    if (!layered) return c.fail(Status::bad_header, blob.layer_count == 1 || blob.layer_count == 3 ? 19 : 18);
+  }
+  if (load_u16(b + 22) != 0) return c.fail(Status::bad_header, 22);
+  for (uint32_t k = 36; k < blob_header_size; ++k)
+    if (b[k] != 0) return c.fail(Status::bad_header, k);
+  const uint32_t table = load_u32(b + 28);
+  if (!c.section_ok(table, blob.layer_count, blob_layer_entry_size)) return c.fail(Status::bad_section, 28);
+  for (uint32_t l = 0; l < blob.layer_count; ++l) {
+    Status s = check_layer(c, blob, table + l * blob_layer_entry_size, &blob.layers[l]);
+    if (s != Status::ok) return s;
+  }
+  *out = blob;
+  return Status::ok;
+}
+
+}  // namespace tristream::core

@@ -1,0 +1,81 @@
+#include "tristream/tristream.h"
+
+#include "tristream/render.h"
+
+namespace core = tristream::core;
+
+static_assert(sizeof(core::Blob) <= sizeof(ts_blob), "ts_blob must hold a core::Blob");
+static_assert(alignof(core::Blob) <= alignof(ts_blob), "ts_blob must be aligned for a core::Blob");
+
+namespace {
+
+const core::Blob* view(const ts_blob* b) { return reinterpret_cast<const core::Blob*>(b); }
+
+bool convert(const ts_params* p, core::RenderParams* out) {
+  if (!p || p->format < 0 || p->format >= core::pixel_format_count) return false;
+  out->output_width = p->output_width;
+  out->output_height = p->output_height;
+  out->viewport = core::Rect{p->viewport.x0, p->viewport.y0, p->viewport.x1, p->viewport.y1};
+  out->tile_width = p->tile_width;
+  out->tile_height = p->tile_height;
+  out->format = core::PixelFormat(p->format);
+  out->dither = p->dither != 0;
+  for (int c = 0; c < 3; ++c) out->background[c] = p->background[c];
+  return true;
+}
+
+struct SinkAdapter {
+  ts_sink sink;
+  void* context;
+};
+
+void forward(void* context, const core::Tile* tile) {
+  const SinkAdapter* a = static_cast<const SinkAdapter*>(context);
+  ts_tile t;
+  t.pixels = tile->pixels;
+  t.stride = tile->stride;
+  t.rect = ts_rect{tile->rect.x0, tile->rect.y0, tile->rect.x1, tile->rect.y1};
+  t.format = int(tile->format);
+  a->sink(a->context, &t);
+}
+
+}  // namespace
+
+extern "C" {
+
+ts_status ts_open(const void* bytes, size_t size, ts_blob* blob, uint32_t* error_offset) {
+  if (!blob) return ts_status(core::Status::null_argument);
+  core::BlobError error;
+  core::Blob* out = reinterpret_cast<core::Blob*>(blob);
+  *out = core::Blob{};
+  const core::Status s = core::open_blob(bytes, size, out, &error);
+  if (error_offset) *error_offset = error.offset;
+  return ts_status(s);
+}
+
+ts_status ts_tile_buffer_size(const ts_blob* blob, const ts_params* params, size_t* bytes) {
+  core::RenderParams p;
+  if (!blob) return ts_status(core::Status::null_argument);
+  if (!convert(params, &p)) return ts_status(core::Status::bad_params);
+  return ts_status(core::tile_buffer_size(*view(blob), p, bytes));
+}
+
+ts_status ts_workspace_size(const ts_blob* blob, const ts_params* params, size_t* bytes) {
+  core::RenderParams p;
+  if (!blob) return ts_status(core::Status::null_argument);
+  if (!convert(params, &p)) return ts_status(core::Status::bad_params);
+  return ts_status(core::workspace_size(*view(blob), p, bytes));
+}
+
+ts_status ts_render(const ts_blob* blob, const ts_params* params, void* tile_buffer, size_t tile_buffer_size,
+                    void* workspace, size_t workspace_size, ts_sink sink, void* context) {
+  core::RenderParams p;
+  if (!blob || !sink) return ts_status(core::Status::null_argument);
+  if (!convert(params, &p)) return ts_status(core::Status::bad_params);
+  SinkAdapter adapter{sink, context};
+  return ts_status(core::render(*view(blob), p, tile_buffer, tile_buffer_size, workspace, workspace_size, forward, &adapter));
+}
+
+const char* ts_status_text(ts_status status) { return core::status_text(core::Status(status)); }
+
+}  // extern "C"

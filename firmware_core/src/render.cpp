@@ -1,0 +1,539 @@
+#include "tristream/render.h"
+
+#include "tristream/detail/arith.h"
+#include "tristream/detail/bytes.h"
+#include "tristream/detail/edge.h"
+#include "tristream/detail/interpolate.h"
+#include "tristream/detail/pixel_writer.h"
+#include "tristream/fixed_point.h"
+
+namespace tristream::core {
+namespace detail {
+namespace {
+
+constexpr int S = config::subpixel_bits;
+#if TS_ACTIVE_INDEX_BYTES == 2
+using ActiveIndex = uint16_t;
+#else
+using ActiveIndex = uint32_t;
+#endif
+constexpr size_t workspace_alignment = 8;
+constexpr int16_t scratch_empty = INT16_MIN;
+
+// Domain position_fx -> output position_fx, corner to corner, rounded to nearest.
+struct Mapping {
+  int64_t nx = 1, dx = 1, ny = 1, dy = 1;
+  bool identity = true;
+
+  int32_t x(int32_t v) const { return identity ? v : int32_t((v * nx + dx / 2) / dx); }
+  int32_t y(int32_t v) const { return identity ? v : int32_t((v * ny + dy / 2) / dy); }
+};
+
+struct Resolved {
+  int32_t out_w = 0, out_h = 0;
+  Rect view;
+  int32_t tile_w = 0, tile_h = 0;
+  PixelFormat format = PixelFormat::rgb888;
+  Mapping map;
+};
+
+Status resolve(const Blob& blob, const RenderParams& p, Resolved* r) {
+  if (!blob.bytes) return Status::null_argument;
+  r->out_w = p.output_width ? p.output_width : blob.width;
+  r->out_h = p.output_height ? p.output_height : blob.height;
+  if (r->out_w < 2 || r->out_h < 2 || r->out_w > config::max_dimension || r->out_h > config::max_dimension)
+    return Status::bad_params;
+  r->view = p.viewport;
+  if (r->view.empty()) r->view = Rect{0, 0, r->out_w, r->out_h};
+  if (r->view.x0 < 0 || r->view.y0 < 0 || r->view.x1 > r->out_w || r->view.y1 > r->out_h) return Status::bad_params;
+  r->tile_w = p.tile_width ? p.tile_width : r->view.width();
+  r->tile_h = p.tile_height ? p.tile_height : r->view.height();
+  if (r->tile_w > r->view.width()) r->tile_w = r->view.width();
+  if (r->tile_h > r->view.height()) r->tile_h = r->view.height();
+  if (bytes_per_pixel(p.format) == 0) return Status::bad_params;
+  r->format = p.format;
+  r->map.identity = r->out_w == blob.width && r->out_h == blob.height;
+  r->map.nx = r->out_w - 1;
+  r->map.dx = blob.width - 1;
+  r->map.ny = r->out_h - 1;
+  r->map.dy = blob.height - 1;
+  return Status::ok;
+}
+
+// A triangle of a layer with its vertices in output position_fx.
+struct TriangleView {
+  uint16_t v[3];
+  uint16_t flags;
+  int32_t x[3], y[3];
+};
+
+inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map, TriangleView* tv) {
+  const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
+  for (int k = 0; k < 3; ++k) {
+    tv->v[k] = load_u16(p + 2 * k);
+    const uint8_t* pos = layer.positions + 4 * size_t(tv->v[k]);
+    tv->x[k] = map.x(load_u16(pos));
+    tv->y[k] = map.y(load_u16(pos + 2));
+  }
+  tv->flags = load_u16(p + 6);
+}
+
+// First and last pixel row whose sample points may lie in the triangle.
+inline void row_extent(const BlobLayer& layer, uint32_t t, const Mapping& map, int32_t* top, int32_t* bottom) {
+  const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
+  const int32_t y0 = load_u16(layer.positions + 4 * size_t(load_u16(p)) + 2);
+  const int32_t y1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)) + 2);
+  const int32_t y2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)) + 2);
+  *top = position_fx::from_raw(map.y(min3(y0, y1, y2))).ceil_to_int();
+  *bottom = position_fx::from_raw(map.y(max3(y0, y1, y2))).floor_to_int();
+}
+
+// Pixel writers. A writer receives q24_8 channel values of one covered pixel.
+template <PixelFormat F, int Channels, bool YCbCr>
+struct DirectWriter {
+  uint8_t* base;
+  int32_t stride;
+  Rect rect;
+  bool dither;
+
+  uint8_t* at(int32_t x, int32_t y) const {
+    return base + (y - rect.y0) * stride + (x - rect.x0) * bytes_per_pixel(F);
+  }
+  void put(uint8_t* p, int32_t x, int32_t y, const int32_t* v) const {
+    if constexpr (F == PixelFormat::coverage8) {
+      store_rgb<F>(p, 0, 0, 0, x, y, false);
+    } else if constexpr (Channels == 1) {
+      store_grey<F>(p, to_u8(v[0]), x, y, dither);
+    } else if constexpr (YCbCr) {
+      int32_t rgb[3];
+      ycbcr_to_rgb_q8(v[0], v[1], v[2], rgb);
+      store_rgb<F>(p, to_u8(rgb[0]), to_u8(rgb[1]), to_u8(rgb[2]), x, y, dither);
+    } else {
+      store_rgb<F>(p, to_u8(v[0]), to_u8(v[1]), to_u8(v[2]), x, y, dither);
+    }
+  }
+};
+
+// One channel of a layered blob into the int16 q4 channel scratch (3 values per pixel).
+struct ScratchWriter {
+  int16_t* base;
+  int32_t width;  // pixels per scratch row
+  Rect rect;
+  int channel;
+
+  int16_t* at(int32_t x, int32_t y) const { return base + 3 * ((y - rect.y0) * width + (x - rect.x0)) + channel; }
+  static void put(int16_t* p, int32_t, int32_t, const int32_t* v) {
+    int32_t q4 = v[0] >> 4;
+    *p = int16_t(q4 < -32767 ? -32767 : (q4 > 32767 ? 32767 : q4));
+  }
+};
+
+// Values of vertex v for `channels` channels starting at `first` (q8_8).
+inline void vertex_values(const BlobLayer& layer, int per_vertex, int first, int channels, uint16_t v, int32_t* out) {
+  const uint8_t* p = layer.values + 2 * (size_t(v) * per_vertex + first);
+  for (int c = 0; c < channels; ++c) out[c] = load_u16(p + 2 * c);
+}
+
+template <int Channels, typename Writer>
+struct BilinearShader {
+  const BlobLayer* layer;
+  int per_vertex;
+  int first_channel;
+  Writer writer;
+  int bpp;
+  BilinearChannel ch[Channels];
+  int32_t xr = 0, yr = 0;
+
+  void begin(const TriangleView& tv, const Edge* e, int64_t area2) {
+    xr = position_fx::from_raw(tv.x[0]).floor_to_int();
+    yr = position_fx::from_raw(tv.y[0]).floor_to_int();
+    int32_t vals[3][Channels];
+    for (int k = 0; k < 3; ++k) vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
+    for (int c = 0; c < Channels; ++c) {
+      const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
+      ch[c].setup(e, area2, v3, xr, yr);
+    }
+  }
+  void span(int32_t y, int32_t, int32_t x0, int32_t x1) {
+    uint32_t v[Channels], dv[Channels];
+    for (int c = 0; c < Channels; ++c) {
+      v[c] = ch[c].at(x0, y, xr, yr);
+      dv[c] = ch[c].step();
+    }
+    auto* p = writer.at(x0, y);
+    for (int32_t x = x0; x <= x1; ++x) {
+      int32_t q8[Channels];
+      for (int c = 0; c < Channels; ++c) {
+        q8[c] = int32_t(v[c]) >> (q16_16::frac_bits - q24_8::frac_bits);
+        v[c] += dv[c];
+      }
+      writer.put(p, x, y, q8);
+      p += bpp;
+    }
+  }
+};
+
+template <int Channels, typename Writer>
+struct ZienkiewiczShader {
+  const BlobLayer* layer;
+  int per_vertex;
+  int first_channel;
+  Writer writer;
+  int bpp;
+  ZienkiewiczChannel ch[Channels];
+  const Edge* edges = nullptr;
+  int64_t area2 = 1;
+
+  void begin(const TriangleView& tv, const Edge* e, int64_t a2) {
+    edges = e;
+    area2 = a2;
+    int32_t dx[3], dy[3], vals[3][Channels], grads[Channels][6];
+    for (int k = 0; k < 3; ++k) {
+      const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
+      const uint8_t* pn = layer->positions + 4 * size_t(tv.v[(k + 1) % 3]);
+      dx[k] = int32_t(load_u16(pn)) - int32_t(load_u16(pk));
+      dy[k] = int32_t(load_u16(pn + 2)) - int32_t(load_u16(pk + 2));
+      vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
+      for (int c = 0; c < Channels; ++c) {
+        const uint8_t* g = layer->gradients + 8 * (size_t(tv.v[k]) * per_vertex + first_channel + c);
+        grads[c][2 * k] = load_i32(g);
+        grads[c][2 * k + 1] = load_i32(g + 4);
+      }
+    }
+    for (int c = 0; c < Channels; ++c) {
+      const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
+      ch[c].setup(dx, dy, v3, grads[c]);
+    }
+  }
+  void span(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
+    BarycentricRow row;
+    row.setup(edges, area2, xs, y);
+    uint32_t a = row.a + row.dadx * uint32_t(x0 - xs);
+    uint32_t b = row.b + row.dbdx * uint32_t(x0 - xs);
+    constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
+    auto* p = writer.at(x0, y);
+    for (int32_t x = x0; x <= x1; ++x) {
+      const int64_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;
+      int32_t q8[Channels];
+      for (int c = 0; c < Channels; ++c) q8[c] = ch[c].eval(a15, b15);
+      writer.put(p, x, y, q8);
+      p += bpp;
+      a += row.dadx;
+      b += row.dbdx;
+    }
+  }
+};
+
+struct Corner {
+  int32_t x, y;
+  bool owned;
+};
+
+// Rasterizes one triangle inside `clip`, calling shader.begin once before the first span.
+template <typename Shader>
+void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
+  const int64_t area2 = (int64_t(tv.x[1]) - tv.x[0]) * (int64_t(tv.y[2]) - tv.y[0]) -
+                        (int64_t(tv.y[1]) - tv.y[0]) * (int64_t(tv.x[2]) - tv.x[0]);
+  if (area2 <= 0) return;  // collapsed by down-scaling
+  const int32_t left = position_fx::from_raw(min3(tv.x[0], tv.x[1], tv.x[2])).ceil_to_int();
+  const int32_t right = position_fx::from_raw(max3(tv.x[0], tv.x[1], tv.x[2])).floor_to_int();
+  if (right < clip.x0 || left >= clip.x1) return;
+  int32_t y0 = position_fx::from_raw(min3(tv.y[0], tv.y[1], tv.y[2])).ceil_to_int();
+  int32_t y1 = position_fx::from_raw(max3(tv.y[0], tv.y[1], tv.y[2])).floor_to_int();
+  if (y0 < clip.y0) y0 = clip.y0;
+  if (y1 > clip.y1 - 1) y1 = clip.y1 - 1;
+  if (y0 > y1) return;
+  Edge edges[3];
+  for (int k = 0; k < 3; ++k) {
+    const int n = (k + 1) % 3;
+    edges[k] = make_edge(tv.x[k], tv.y[k], tv.x[n], tv.y[n], (tv.flags & (boundary_edge0 << k)) != 0);
+  }
+  // Rows [r0, r1] pass the horizontal edges; an owned corner on an excluded row adds that row.
+  int32_t r0 = y0, r1 = y1;
+  restrict_rows(edges, &r0, &r1);
+  Corner corners[3];
+  int corner_count = 0;
+  int32_t first = r0, last = r1;
+  for (int k = 0; k < 3; ++k) {
+    if (!(tv.flags & (corner_explicit0 << k))) continue;
+    const position_fx cx = position_fx::from_raw(tv.x[k]), cy = position_fx::from_raw(tv.y[k]);
+    if (!cx.is_integer() || !cy.is_integer()) continue;
+    const Corner c{cx.floor_to_int(), cy.floor_to_int(), (tv.flags & (corner_owned0 << k)) != 0};
+    corners[corner_count++] = c;
+    if (c.owned && c.y >= y0 && c.y <= y1) {
+      first = c.y < first ? c.y : first;
+      last = c.y > last ? c.y : last;
+    }
+  }
+  if (first > last) return;
+  SpanStepper spans;
+  spans.init(edges, first);
+  bool started = false;
+  for (int32_t y = first; y <= last; ++y, spans.next_row()) {
+    int32_t xs = 1, xe = 0;
+    if (y >= r0 && y <= r1) spans.span(&xs, &xe);
+    for (int k = 0; k < corner_count; ++k) {
+      const Corner& c = corners[k];
+      if (c.y != y) continue;
+      if (c.owned) {
+        if (xs > xe) {
+          xs = xe = c.x;
+        } else {
+          xs = c.x < xs ? c.x : xs;
+          xe = c.x > xe ? c.x : xe;
+        }
+      } else if (xs == c.x) {
+        ++xs;
+      } else if (xe == c.x) {
+        --xe;
+      }
+    }
+    if (xs > xe) continue;
+    const int32_t cs = xs > clip.x0 ? xs : clip.x0;
+    const int32_t ce = xe < clip.x1 - 1 ? xe : clip.x1 - 1;
+    if (cs > ce) continue;
+    if (!started) {
+      shader.begin(tv, edges, area2);
+      started = true;
+    }
+    shader.span(y, xs, cs, ce);
+  }
+}
+
+// The active-triangle list of one layer over caller memory.
+struct ActiveList {
+  const BlobLayer* layer = nullptr;
+  ActiveIndex* items = nullptr;
+  uint32_t capacity = 0;
+  uint32_t count = 0;
+  uint32_t cursor = 0;  // next triangle (in top-row order) not yet considered
+
+  // Drops triangles ending above row y0 and adds those starting at or before row y1 (inclusive).
+  bool advance(const Mapping& map, int32_t y0, int32_t y1) {
+    uint32_t kept = 0;
+    for (uint32_t i = 0; i < count; ++i) {
+      int32_t top, bottom;
+      row_extent(*layer, items[i], map, &top, &bottom);
+      if (bottom >= y0) items[kept++] = items[i];
+    }
+    count = kept;
+    while (cursor < layer->triangle_count) {
+      int32_t top, bottom;
+      row_extent(*layer, cursor, map, &top, &bottom);
+      if (top > y1) break;
+      if (bottom >= y0 && top <= bottom) {
+        if (count == capacity) return false;
+        items[count++] = ActiveIndex(cursor);
+      }
+      ++cursor;
+    }
+    return true;
+  }
+};
+
+// Longest active list of a layer over the bands of the viewport.
+uint32_t max_active(const BlobLayer& layer, const Resolved& r) {
+  uint32_t best = 0;
+  for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
+    const int32_t y1 = (by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1) - 1;
+    uint32_t n = 0;
+    for (uint32_t t = 0; t < layer.triangle_count; ++t) {
+      int32_t top, bottom;
+      row_extent(layer, t, r.map, &top, &bottom);
+      if (top > y1) break;
+      if (bottom >= by && top <= bottom) ++n;
+    }
+    best = n > best ? n : best;
+  }
+  return best;
+}
+
+bool layered(const Blob& blob) { return blob.layer_count > 1; }
+
+size_t scratch_bytes(const Blob& blob, const Resolved& r, PixelFormat f) {
+  if (!layered(blob) || f == PixelFormat::coverage8) return 0;
+  return size_t(r.tile_w) * r.tile_h * 3 * sizeof(int16_t);
+}
+
+template <typename Shader>
+void draw_layer(const ActiveList& list, const Mapping& map, const Rect& rect, Shader& shader) {
+  for (uint32_t i = 0; i < list.count; ++i) {
+    TriangleView tv;
+    load_triangle(*list.layer, list.items[i], map, &tv);
+    rasterize(tv, rect, shader);
+  }
+}
+
+template <int Channels, typename Writer>
+void draw_with(const Blob& blob, int layer_index, int first_channel, const ActiveList& list, const Mapping& map,
+               const Rect& rect, const Writer& writer, int step) {
+  const BlobLayer* layer = &blob.layers[layer_index];
+  if (blob.method == Method::bilinear) {
+    BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
+    draw_layer(list, map, rect, s);
+  } else {
+    ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, nullptr, 1};
+    draw_layer(list, map, rect, s);
+  }
+}
+
+template <PixelFormat F>
+void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const RenderParams& p, bool grey) {
+  for (int32_t y = rect.y0; y < rect.y1; ++y) {
+    uint8_t* row = base + (y - rect.y0) * stride;
+    for (int32_t x = rect.x0; x < rect.x1; ++x) {
+      uint8_t* px = row + (x - rect.x0) * bytes_per_pixel(F);
+      if constexpr (F == PixelFormat::coverage8) {
+        px[0] = 0;
+      } else if (grey) {
+        store_grey<F>(px, p.background[0], x, y, p.dither);
+      } else {
+        store_rgb<F>(px, p.background[0], p.background[1], p.background[2], x, y, p.dither);
+      }
+    }
+  }
+}
+
+template <PixelFormat F>
+void convert_scratch(const int16_t* scratch, uint8_t* base, int32_t stride, const Rect& rect, const RenderParams& p,
+                     bool ycbcr) {
+  const int32_t w = rect.width();
+  for (int32_t y = rect.y0; y < rect.y1; ++y) {
+    for (int32_t x = rect.x0; x < rect.x1; ++x) {
+      const int16_t* s = scratch + 3 * ((y - rect.y0) * w + (x - rect.x0));
+      uint8_t* px = base + (y - rect.y0) * stride + (x - rect.x0) * bytes_per_pixel(F);
+      if (s[0] == scratch_empty || s[1] == scratch_empty || s[2] == scratch_empty) {
+        store_rgb<F>(px, p.background[0], p.background[1], p.background[2], x, y, p.dither);
+        continue;
+      }
+      int32_t v[3] = {int32_t(s[0]) * 16, int32_t(s[1]) * 16, int32_t(s[2]) * 16};
+      if (ycbcr) {
+        int32_t rgb[3];
+        ycbcr_to_rgb_q8(v[0], v[1], v[2], rgb);
+        v[0] = rgb[0], v[1] = rgb[1], v[2] = rgb[2];
+      }
+      store_rgb<F>(px, to_u8(v[0]), to_u8(v[1]), to_u8(v[2]), x, y, p.dither);
+    }
+  }
+}
+
+template <PixelFormat F>
+void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, ActiveList* lists, const Rect& rect,
+                 uint8_t* base, int32_t stride, int16_t* scratch) {
+  const bool grey = blob.space == ColorSpace::grey;
+  fill_background<F>(base, stride, rect, p, grey);
+  constexpr int bpp = bytes_per_pixel(F);
+  if (F == PixelFormat::coverage8 || !layered(blob)) {
+    if (F == PixelFormat::coverage8 && layered(blob)) {
+      const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
+      for (int l = 0; l < blob.layer_count; ++l) draw_with<1>(blob, l, 0, lists[l], map, rect, w, bpp);
+    } else if (grey) {
+      const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
+      draw_with<1>(blob, 0, 0, lists[0], map, rect, w, bpp);
+    } else if (blob.space == ColorSpace::ycbcr) {
+      const DirectWriter<F, 3, true> w{base, stride, rect, p.dither};
+      draw_with<3>(blob, 0, 0, lists[0], map, rect, w, bpp);
+    } else {
+      const DirectWriter<F, 3, false> w{base, stride, rect, p.dither};
+      draw_with<3>(blob, 0, 0, lists[0], map, rect, w, bpp);
+    }
+    return;
+  }
+  const int32_t n = rect.width() * rect.height() * 3;
+  for (int32_t i = 0; i < n; ++i) scratch[i] = scratch_empty;
+  for (int l = 0; l < blob.layer_count; ++l) {
+    const ScratchWriter w{scratch, rect.width(), rect, l};
+    draw_with<1>(blob, l, 0, lists[l], map, rect, w, 3);
+  }
+  convert_scratch<F>(scratch, base, stride, rect, p, blob.space == ColorSpace::ycbcr);
+}
+
+using TileRenderer = void (*)(const Blob&, const RenderParams&, const Mapping&, ActiveList*, const Rect&, uint8_t*,
+                              int32_t, int16_t*);
+
+TileRenderer tile_renderer(PixelFormat f) {
+  switch (f) {
+    case PixelFormat::l8: return render_tile<PixelFormat::l8>;
+    case PixelFormat::rgb888: return render_tile<PixelFormat::rgb888>;
+    case PixelFormat::rgb565_le: return render_tile<PixelFormat::rgb565_le>;
+    case PixelFormat::rgb565_be: return render_tile<PixelFormat::rgb565_be>;
+    case PixelFormat::xrgb8888: return render_tile<PixelFormat::xrgb8888>;
+    case PixelFormat::coverage8: return render_tile<PixelFormat::coverage8>;
+  }
+  return nullptr;
+}
+
+}  // namespace
+}  // namespace detail
+
+Status tile_buffer_size(const Blob& blob, const RenderParams& params, size_t* bytes) {
+  if (!bytes) return Status::null_argument;
+  detail::Resolved r;
+  Status s = detail::resolve(blob, params, &r);
+  if (s != Status::ok) return s;
+  *bytes = size_t(r.tile_w) * r.tile_h * bytes_per_pixel(r.format);
+  return Status::ok;
+}
+
+Status workspace_size(const Blob& blob, const RenderParams& params, size_t* bytes) {
+  if (!bytes) return Status::null_argument;
+  detail::Resolved r;
+  Status s = detail::resolve(blob, params, &r);
+  if (s != Status::ok) return s;
+  uint32_t longest = 0;
+  for (int l = 0; l < blob.layer_count; ++l) {
+    const uint32_t n = detail::max_active(blob.layers[l], r);
+    longest = n > longest ? n : longest;
+  }
+  *bytes = detail::workspace_alignment + detail::scratch_bytes(blob, r, r.format) +
+           size_t(blob.layer_count) * longest * sizeof(detail::ActiveIndex);
+  return Status::ok;
+}
+
+Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,
+              void* workspace, size_t workspace_bytes, TileSink sink, void* context) {
+  if (!tile_buffer || !sink || (!workspace && workspace_bytes)) return Status::null_argument;
+  detail::Resolved r;
+  Status s = detail::resolve(blob, params, &r);
+  if (s != Status::ok) return s;
+  const int bpp = bytes_per_pixel(r.format);
+  const int32_t stride = r.tile_w * bpp;
+  if (tile_buffer_bytes < size_t(stride) * r.tile_h) return Status::buffer_too_small;
+
+  // Workspace: [alignment padding][channel scratch][active lists, one equal share per layer].
+  uint8_t* ws = static_cast<uint8_t*>(workspace);
+  const size_t pad = ws ? (detail::workspace_alignment - uintptr_t(ws) % detail::workspace_alignment) %
+                              detail::workspace_alignment
+                        : 0;
+  const size_t scratch = detail::scratch_bytes(blob, r, r.format);
+  if (workspace_bytes < pad + scratch) return Status::buffer_too_small;
+  int16_t* scratch_ptr = scratch ? reinterpret_cast<int16_t*>(ws + pad) : nullptr;
+  const size_t list_bytes = workspace_bytes - pad - scratch;
+  const uint32_t share = uint32_t(list_bytes / sizeof(detail::ActiveIndex) / blob.layer_count);
+  detail::ActiveList lists[3];
+  for (int l = 0; l < blob.layer_count; ++l) {
+    lists[l].layer = &blob.layers[l];
+    lists[l].items = share ? reinterpret_cast<detail::ActiveIndex*>(ws + pad + scratch) + size_t(l) * share : nullptr;
+    lists[l].capacity = share;
+  }
+  const detail::TileRenderer draw = detail::tile_renderer(r.format);
+  uint8_t* base = static_cast<uint8_t*>(tile_buffer);
+  for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
+    const int32_t by1 = by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1;
+    for (int l = 0; l < blob.layer_count; ++l)
+      if (!lists[l].advance(r.map, by, by1 - 1)) return Status::buffer_too_small;
+    for (int32_t bx = r.view.x0; bx < r.view.x1; bx += r.tile_w) {
+      const int32_t bx1 = bx + r.tile_w < r.view.x1 ? bx + r.tile_w : r.view.x1;
+      Tile tile;
+      tile.pixels = base;
+      tile.stride = stride;
+      tile.rect = Rect{bx, by, bx1, by1};
+      tile.format = r.format;
+      draw(blob, params, r.map, lists, tile.rect, base, stride, scratch_ptr);
+      sink(context, &tile);
+    }
+  }
+  return Status::ok;
+}
+
+}  // namespace tristream::core

@@ -1,0 +1,128 @@
+#include "core_bridge/render_core.h"
+
+#include <cstring>
+#include <string>
+
+#include "common/errors.h"
+#include "core_bridge/pack.h"
+
+namespace tristream {
+
+namespace {
+
+struct Assembly {
+  CoreFrame* frame;
+  core::Rect view;
+  int bpp;
+};
+
+void collect(void* context, const core::Tile* tile) {
+  Assembly* a = static_cast<Assembly*>(context);
+  CoreFrame& f = *a->frame;
+  const std::size_t row = std::size_t(tile->rect.width()) * a->bpp;
+  for (int y = tile->rect.y0; y < tile->rect.y1; ++y) {
+    const std::uint8_t* src = tile->pixels + std::size_t(y - tile->rect.y0) * tile->stride;
+    std::uint8_t* dst = f.bytes.data() +
+                        (std::size_t(y - a->view.y0) * f.width + (tile->rect.x0 - a->view.x0)) * a->bpp;
+    std::memcpy(dst, src, row);
+  }
+  ++f.tiles;
+}
+
+}  // namespace
+
+CoreRenderer::CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions& o, std::string_view name) {
+  core::BlobError error;
+  const core::Status s = core::open_blob(blob.data(), blob.size(), &blob_, &error);
+  if (s != core::Status::ok)
+    throw DataError(std::string(name) + ": byte " + std::to_string(error.offset) + ": " + core::status_text(s));
+  auto dimension = [](int v, const char* what) {
+    if (v < 0 || v > core::config::max_dimension)
+      throw UsageError(std::string(what) + " must be 0 to " + std::to_string(core::config::max_dimension));
+    return std::uint16_t(v);
+  };
+  params_.output_width = dimension(o.width, "output width");
+  params_.output_height = dimension(o.height, "output height");
+  params_.viewport = o.viewport;
+  params_.tile_width = dimension(o.tile_width, "tile width");
+  params_.tile_height = dimension(o.tile_height, "tile height");
+  params_.format = o.format;
+  params_.dither = o.dither;
+  for (auto& c : params_.background) c = o.background;
+  std::size_t tile_bytes = 0, work_bytes = 0;
+  core::Status st = core::tile_buffer_size(blob_, params_, &tile_bytes);
+  if (st == core::Status::ok) st = core::workspace_size(blob_, params_, &work_bytes);
+  if (st != core::Status::ok) throw UsageError(std::string("render options: ") + core::status_text(st));
+  tile_.assign(tile_bytes, 0);
+  workspace_.assign(work_bytes, 0);
+}
+
+void CoreRenderer::render(CoreFrame& frame) {
+  core::Rect view = params_.viewport;
+  const int w = params_.output_width ? params_.output_width : blob_.width;
+  const int h = params_.output_height ? params_.output_height : blob_.height;
+  if (view.empty()) view = core::Rect{0, 0, w, h};
+  const int bpp = core::bytes_per_pixel(params_.format);
+  frame.width = view.width();
+  frame.height = view.height();
+  frame.format = params_.format;
+  frame.bytes.resize(std::size_t(frame.width) * frame.height * bpp);
+  frame.tiles = 0;
+  Assembly a{&frame, view, bpp};
+  const core::Status s = core::render(blob_, params_, tile_.data(), tile_.size(), workspace_.data(),
+                                      workspace_.size(), collect, &a);
+  if (s != core::Status::ok) throw DataError(std::string("core render failed: ") + core::status_text(s));
+}
+
+Image frame_to_image(const CoreFrame& f) {
+  using core::PixelFormat;
+  if (f.format == PixelFormat::l8 || f.format == PixelFormat::coverage8) {
+    Image img(f.width, f.height, 1);
+    img.pixels = f.bytes;
+    return img;
+  }
+  Image img(f.width, f.height, 3);
+  const int bpp = core::bytes_per_pixel(f.format);
+  for (std::size_t i = 0; i < std::size_t(f.width) * f.height; ++i) {
+    const std::uint8_t* p = f.bytes.data() + i * bpp;
+    std::uint8_t* q = img.pixels.data() + 3 * i;
+    switch (f.format) {
+      case PixelFormat::rgb888: q[0] = p[0], q[1] = p[1], q[2] = p[2]; break;
+      case PixelFormat::xrgb8888: q[0] = p[2], q[1] = p[1], q[2] = p[0]; break;
+      case PixelFormat::rgb565_le:
+      case PixelFormat::rgb565_be: {
+        const unsigned word = f.format == PixelFormat::rgb565_le ? unsigned(p[0] | p[1] << 8) : unsigned(p[1] | p[0] << 8);
+        const unsigned r = word >> 11, g = (word >> 5) & 63, b = word & 31;
+        q[0] = std::uint8_t((r * 255 + 15) / 31);
+        q[1] = std::uint8_t((g * 255 + 31) / 63);
+        q[2] = std::uint8_t((b * 255 + 15) / 31);
+        break;
+      }
+      default: break;
+    }
+  }
+  return img;
+}
+
+CoreFrame render_core_frame(const Triangulation& tri, std::string_view method, const CoreOptions& options) {
+  const std::vector<std::uint8_t> blob = pack_blob(tri, parse_core_method(method));
+  CoreRenderer r(blob, options);
+  CoreFrame f;
+  r.render(f);
+  return f;
+}
+
+Image render_core(const Triangulation& tri, std::string_view method, const CoreOptions& options) {
+  return frame_to_image(render_core_frame(tri, method, options));
+}
+
+core::PixelFormat parse_pixel_format(std::string_view name) {
+  if (name == "l8") return core::PixelFormat::l8;
+  if (name == "rgb888") return core::PixelFormat::rgb888;
+  if (name == "rgb565le") return core::PixelFormat::rgb565_le;
+  if (name == "rgb565be") return core::PixelFormat::rgb565_be;
+  if (name == "xrgb8888") return core::PixelFormat::xrgb8888;
+  throw UsageError("pixel format must be l8, rgb888, rgb565le, rgb565be or xrgb8888, not \"" + std::string(name) + "\"");
+}
+
+}  // namespace tristream

@@ -1,0 +1,64 @@
+#pragma once
+// Running the fixed-point core on the host: blob bytes in, a whole frame assembled from the
+// tiles the core delivers, plus the conversions trisim needs.
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "model/image.h"
+#include "model/triangulation.h"
+#include "tristream/render.h"
+
+namespace tristream {
+
+struct CoreOptions {
+  int width = 0;   // output size; 0 = the triangulation's size (corner-to-corner mapping)
+  int height = 0;
+  core::Rect viewport;  // output pixels to render; empty = all
+  int tile_width = 32;  // 0 = the viewport width (bands)
+  int tile_height = 32; // 0 = the viewport height (one band: full frame when both are 0)
+  core::PixelFormat format = core::PixelFormat::rgb888;
+  bool dither = false;
+  std::uint8_t background = 0;
+};
+
+// The viewport's pixels in `format`, rows packed (stride = width * bytes per pixel).
+struct CoreFrame {
+  int width = 0;
+  int height = 0;
+  core::PixelFormat format = core::PixelFormat::rgb888;
+  std::vector<std::uint8_t> bytes;
+  std::uint64_t tiles = 0;  // tiles delivered by the sink
+};
+
+// Buffers sized once for repeated renders of one blob (benchmarks).
+class CoreRenderer {
+ public:
+  // Opens (validates) the blob and sizes tile buffer and workspace. Throws DataError
+  // ("<name>: byte N: <status>") for an invalid blob and UsageError for invalid options.
+  CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions& options, std::string_view name = "blob");
+  // Renders one frame into `frame` (resized on first use).
+  void render(CoreFrame& frame);
+  std::size_t tile_buffer_bytes() const { return tile_.size(); }
+  std::size_t workspace_bytes() const { return workspace_.size(); }
+  const core::Blob& blob() const { return blob_; }
+
+ private:
+  core::Blob blob_;
+  core::RenderParams params_;
+  std::vector<std::uint8_t> tile_;
+  std::vector<std::uint8_t> workspace_;
+};
+
+// Decodes a frame to an 8-bit image: L8 -> 1 channel, every other format -> RGB.
+Image frame_to_image(const CoreFrame& frame);
+
+// Packs `tri` for `method` ("bilinear" or "zienkiewicz") and renders it with the core.
+Image render_core(const Triangulation& tri, std::string_view method, const CoreOptions& options);
+CoreFrame render_core_frame(const Triangulation& tri, std::string_view method, const CoreOptions& options);
+
+// "l8", "rgb888", "rgb565le", "rgb565be", "xrgb8888"; throws UsageError otherwise.
+core::PixelFormat parse_pixel_format(std::string_view name);
+
+}  // namespace tristream
