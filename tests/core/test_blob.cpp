@@ -1,0 +1,226 @@
+// Blob validation: every kind of damage is reported with its status and byte offset, and the
+// core never reads outside the bytes it is given (run under ASan: the blob is copied into a
+// buffer of exactly its size).
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+#include "core_support.h"
+#include "tristream/tristream.h"
+
+using namespace tristream;
+using namespace tristream::testing;
+
+namespace {
+
+std::vector<std::uint8_t> sample_blob(core::Method method = core::Method::zienkiewicz) {
+  return pack_blob(single_mesh(random_lattice_mesh(40, 30, 60, 5, 10, 3), 40, 30, ColorSpace::rgb), method);
+}
+
+core::Status open(const std::vector<std::uint8_t>& bytes, std::uint32_t* offset = nullptr) {
+  std::vector<std::uint8_t> exact(bytes);  // heap block of exactly this size
+  core::Blob blob;
+  core::BlobError error;
+  const core::Status s = core::open_blob(exact.data(), exact.size(), &blob, &error);
+  if (offset) *offset = error.offset;
+  return s;
+}
+
+void put16(std::vector<std::uint8_t>& b, std::size_t at, unsigned v) {
+  b[at] = std::uint8_t(v), b[at + 1] = std::uint8_t(v >> 8);
+}
+unsigned get32(const std::vector<std::uint8_t>& b, std::size_t at) {
+  return b[at] | b[at + 1] << 8 | b[at + 2] << 16 | unsigned(b[at + 3]) << 24;
+}
+
+}  // namespace
+
+TEST_CASE("a packed blob opens") {
+  for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) CHECK(open(sample_blob(m)) == core::Status::ok);
+}
+
+TEST_CASE("damaged headers are named with their offset") {
+  const auto good = sample_blob();
+  std::uint32_t at = 0;
+  auto damaged = [&](std::size_t offset, std::uint8_t value) {
+    auto b = good;
+    b[offset] = value;
+    return open(b, &at);
+  };
+  CHECK(damaged(0, 'X') == core::Status::bad_magic);
+  CHECK(at == 0);
+  CHECK(damaged(4, 2) == core::Status::bad_version);
+  CHECK(at == 4);
+  CHECK(damaged(20, 5) == core::Status::config_mismatch);
+  CHECK(at == 20);
+  CHECK(damaged(16, 3) == core::Status::bad_header);
+  CHECK(at == 16);
+  CHECK(damaged(17, 2) == core::Status::bad_header);
+  CHECK(damaged(18, 2) == core::Status::bad_header);
+  CHECK(damaged(40, 1) == core::Status::bad_header);
+  CHECK(at == 40);
+  CHECK(damaged(13, 0x10) == core::Status::too_large);  // width 4096 + 40
+  CHECK(at == 12);
+  {
+    auto b = good;
+    b.pop_back();
+    CHECK(open(b, &at) == core::Status::truncated);
+    CHECK(at == 8);
+  }
+  {
+    std::vector<std::uint8_t> b(good.begin(), good.begin() + 10);
+    CHECK(open(b) == core::Status::truncated);
+  }
+}
+
+TEST_CASE("damaged sections, vertices and triangles") {
+  const auto good = sample_blob();
+  const std::size_t table = get32(good, 28);
+  const std::size_t positions = get32(good, table + 8), values = get32(good, table + 12);
+  const std::size_t gradients = get32(good, table + 16), triangles = get32(good, table + 20);
+  std::uint32_t at = 0;
+  {
+    auto b = good;
+    b[table + 8] += 2;  // misaligned positions
+    CHECK(open(b, &at) == core::Status::bad_section);
+    CHECK(at == table + 8);
+  }
+  {
+    auto b = good;
+    put16(b, table + 22, 0x7FFF);  // triangles far beyond the end
+    CHECK(open(b, &at) == core::Status::bad_section);
+  }
+  {
+    auto b = good;
+    put16(b, positions + 4 * 7, 40 * 16);  // x = 40 > W - 1
+    CHECK(open(b, &at) == core::Status::coordinate_out_of_range);
+    CHECK(at == positions + 4 * 7);
+  }
+  {
+    auto b = good;
+    put16(b, values + 2 * 5, 255 * 256 + 1);
+    CHECK(open(b, &at) == core::Status::value_out_of_range);
+    CHECK(at == values + 2 * 5);
+  }
+  {
+    auto b = good;
+    b[gradients + 3] = 0x7F;
+    CHECK(open(b, &at) == core::Status::value_out_of_range);
+    CHECK(at == gradients);
+  }
+  {
+    auto b = good;
+    put16(b, triangles + 8 * 3 + 2, 60000);
+    CHECK(open(b, &at) == core::Status::bad_index);
+    CHECK(at == triangles + 8 * 3);
+  }
+  {
+    auto b = good;
+    put16(b, triangles + 8 * 3 + 2, b[triangles + 8 * 3] | b[triangles + 8 * 3 + 1] << 8);
+    CHECK(open(b, &at) == core::Status::bad_index);
+  }
+  {
+    auto b = good;  // swap two vertices: negative area
+    std::swap(b[triangles + 8 * 4 + 2], b[triangles + 8 * 4 + 4]);
+    std::swap(b[triangles + 8 * 4 + 3], b[triangles + 8 * 4 + 5]);
+    CHECK(open(b, &at) == core::Status::bad_triangle);
+    CHECK(at == triangles + 8 * 4);
+  }
+  {
+    auto b = good;
+    b[triangles + 8 * 2 + 7] = 0x80;
+    CHECK(open(b, &at) == core::Status::bad_triangle);
+    CHECK(at == triangles + 8 * 2 + 6);
+  }
+  {
+    auto b = good;  // move the last triangle first: out of order
+    const std::size_t n = get32(good, table + 4);
+    std::vector<std::uint8_t> last(b.begin() + triangles + 8 * (n - 1), b.begin() + triangles + 8 * n);
+    std::memmove(b.data() + triangles + 8, b.data() + triangles, 8 * (n - 1));
+    std::memcpy(b.data() + triangles, last.data(), 8);
+    CHECK(open(b, &at) == core::Status::unsorted);
+  }
+}
+
+TEST_CASE("random damage never crashes open or render") {
+  const auto good = sample_blob();
+  std::mt19937 rng(3);
+  int opened = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    auto b = good;
+    const int flips = 1 + int(rng() % 4);
+    for (int k = 0; k < flips; ++k) b[rng() % b.size()] = std::uint8_t(rng());
+    if (trial % 7 == 0) b.resize(rng() % b.size());
+    std::vector<std::uint8_t> exact(b);
+    core::Blob blob;
+    if (core::open_blob(exact.data(), exact.size(), &blob) != core::Status::ok) continue;
+    ++opened;
+    core::RenderParams p;
+    p.tile_width = p.tile_height = 16;
+    std::size_t tile = 0, work = 0;
+    REQUIRE(core::tile_buffer_size(blob, p, &tile) == core::Status::ok);
+    REQUIRE(core::workspace_size(blob, p, &work) == core::Status::ok);
+    std::vector<std::uint8_t> tb(tile), ws(work);
+    auto sink = [](void*, const core::Tile*) {};
+    CHECK(core::render(blob, p, tb.data(), tb.size(), ws.data(), ws.size(), sink, nullptr) == core::Status::ok);
+  }
+  CHECK(opened > 0);  // some damage is harmless (values, flags of interior edges)
+}
+
+TEST_CASE("render parameters and buffers are checked") {
+  const auto bytes = sample_blob(core::Method::bilinear);
+  core::Blob blob;
+  REQUIRE(core::open_blob(bytes.data(), bytes.size(), &blob) == core::Status::ok);
+  core::RenderParams p;
+  p.tile_width = p.tile_height = 8;
+  std::size_t tile = 0, work = 0;
+  REQUIRE(core::tile_buffer_size(blob, p, &tile) == core::Status::ok);
+  REQUIRE(core::workspace_size(blob, p, &work) == core::Status::ok);
+  CHECK(tile == 8 * 8 * 3);
+  std::vector<std::uint8_t> tb(tile), ws(work);
+  auto sink = [](void*, const core::Tile*) {};
+  CHECK(core::render(blob, p, tb.data(), tile - 1, ws.data(), ws.size(), sink, nullptr) == core::Status::buffer_too_small);
+  CHECK(core::render(blob, p, tb.data(), tile, ws.data(), 8, sink, nullptr) == core::Status::buffer_too_small);
+  CHECK(core::render(blob, p, tb.data(), tile, ws.data(), ws.size(), nullptr, nullptr) == core::Status::null_argument);
+  core::RenderParams bad = p;
+  bad.viewport = core::Rect{0, 0, 41, 30};
+  CHECK(core::render(blob, bad, tb.data(), tile, ws.data(), ws.size(), sink, nullptr) == core::Status::bad_params);
+  bad = p;
+  bad.format = core::PixelFormat(9);
+  CHECK(core::tile_buffer_size(blob, bad, &tile) == core::Status::bad_params);
+  bad = p;
+  bad.output_width = 1;
+  CHECK(core::workspace_size(blob, bad, &work) == core::Status::bad_params);
+}
+
+TEST_CASE("the C interface renders the same pixels as the C++ one") {
+  const auto bytes = sample_blob();
+  ts_blob blob;
+  std::uint32_t offset = 99;
+  REQUIRE(ts_open(bytes.data(), bytes.size(), &blob, &offset) == TS_OK);
+  ts_params p{};
+  p.tile_width = 13;
+  p.tile_height = 7;
+  p.format = TS_RGB565_BE;
+  p.dither = 1;
+  std::size_t tile = 0, work = 0;
+  REQUIRE(ts_tile_buffer_size(&blob, &p, &tile) == TS_OK);
+  REQUIRE(ts_workspace_size(&blob, &p, &work) == TS_OK);
+  std::vector<std::uint8_t> tb(tile), ws(work), frame(40 * 30 * 2);
+  auto sink = [](void* ctx, const ts_tile* t) {
+    auto* f = static_cast<std::vector<std::uint8_t>*>(ctx);
+    for (int y = t->rect.y0; y < t->rect.y1; ++y)
+      std::memcpy(f->data() + (y * 40 + t->rect.x0) * 2, t->pixels + (y - t->rect.y0) * t->stride,
+                  std::size_t(t->rect.x1 - t->rect.x0) * 2);
+  };
+  REQUIRE(ts_render(&blob, &p, tb.data(), tb.size(), ws.data(), ws.size(), sink, &frame) == TS_OK);
+  CoreOptions o;
+  o.format = core::PixelFormat::rgb565_be;
+  o.dither = true;
+  CHECK(bytes_differing(core_frame(bytes, o, {0, 0}).bytes, frame) == 0);
+  std::vector<std::uint8_t> broken(bytes);
+  broken[0] = 'x';
+  CHECK(ts_open(broken.data(), broken.size(), &blob, &offset) != TS_OK);
+  CHECK(std::string(ts_status_text(ts_open(broken.data(), broken.size(), &blob, &offset))).find("magic") !=
+        std::string::npos);
+}

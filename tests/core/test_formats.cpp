@@ -1,0 +1,139 @@
+// Pixel formats, dithering, colour conversion and viewport placement, checked pixel by pixel
+// against independent expectations.
+#include <catch2/catch.hpp>
+
+#include "core_support.h"
+#include "tristream/detail/pixel_writer.h"
+
+using namespace tristream;
+using namespace tristream::testing;
+
+namespace {
+
+// A flat-coloured 2-triangle image: every pixel of the domain has exactly (r, g, b).
+Triangulation flat(int w, int h, double r, double g, double b, ColorSpace space = ColorSpace::rgb) {
+  Mesh m;
+  m.value_count = 3;
+  m.points = {{0, 0}, {double(w - 1), 0}, {0, double(h - 1)}, {double(w - 1), double(h - 1)}};
+  for (int k = 0; k < 4; ++k) m.values.insert(m.values.end(), {r, g, b});
+  m.triangles = {Triangle{{0, 1, 3}}, Triangle{{0, 3, 2}}};
+  m.normalize_winding();
+  return single_mesh(m, w, h, space);
+}
+
+CoreFrame render(const Triangulation& t, core::PixelFormat f, bool dither = false) {
+  CoreOptions o;
+  o.format = f;
+  o.dither = dither;
+  o.tile_width = 8;
+  o.tile_height = 8;
+  return render_core_frame(t, "bilinear", o);
+}
+
+}  // namespace
+
+TEST_CASE("byte layout of every format") {
+  const Triangulation t = flat(9, 5, 200, 100, 50);
+  const unsigned word = (unsigned(std::lround(200 * 31 / 255.0)) << 11) | (unsigned(std::lround(100 * 63 / 255.0)) << 5) |
+                        unsigned(std::lround(50 * 31 / 255.0));
+  CoreFrame f = render(t, core::PixelFormat::rgb888);
+  CHECK((f.bytes[0] == 200 && f.bytes[1] == 100 && f.bytes[2] == 50));
+  f = render(t, core::PixelFormat::rgb565_le);
+  CHECK((f.bytes[0] == (word & 0xFF) && f.bytes[1] == (word >> 8)));
+  f = render(t, core::PixelFormat::rgb565_be);
+  CHECK((f.bytes[0] == (word >> 8) && f.bytes[1] == (word & 0xFF)));
+  f = render(t, core::PixelFormat::xrgb8888);
+  CHECK((f.bytes[0] == 50 && f.bytes[1] == 100 && f.bytes[2] == 200 && f.bytes[3] == 0xFF));
+  f = render(t, core::PixelFormat::l8);
+  CHECK(int(f.bytes[0]) == int(std::lround(0.299 * 200 + 0.587 * 100 + 0.114 * 50)));
+  // Every pixel identical: a flat image has no seams.
+  for (core::PixelFormat fmt : {core::PixelFormat::rgb888, core::PixelFormat::rgb565_be, core::PixelFormat::xrgb8888}) {
+    f = render(t, fmt);
+    const int bpp = core::bytes_per_pixel(fmt);
+    int differing = 0;
+    for (std::size_t i = 0; i < f.bytes.size(); ++i) differing += f.bytes[i] != f.bytes[i % bpp];
+    CHECK(differing == 0);
+  }
+}
+
+TEST_CASE("Bayer dithering of RGB565 averages to the true colour and follows the screen position") {
+  // 8-bit 100 lies between the 5-bit levels 12 (98.7) and 13 (106.9): dithered tiles must mix them.
+  const Triangulation t = flat(64, 64, 100, 100, 100);
+  const CoreFrame f = render(t, core::PixelFormat::rgb565_le, true);
+  double sum = 0;
+  for (std::size_t i = 0; i < f.bytes.size(); i += 2) {
+    const unsigned w = f.bytes[i] | f.bytes[i + 1] << 8;
+    sum += (w >> 11) * 255.0 / 31;
+  }
+  CHECK(std::abs(sum / (64 * 64) - 100) < 1.0);
+  // Pattern repeats every 4 pixels in x and y, independent of the 8x8 tiles.
+  int mismatches = 0;
+  for (int y = 0; y < 60; ++y)
+    for (int x = 0; x < 60; ++x)
+      mismatches += f.bytes[2 * (y * 64 + x)] != f.bytes[2 * ((y + 4) * 64 + x + 4)];
+  CHECK(mismatches == 0);
+  const CoreFrame plain = render(t, core::PixelFormat::rgb565_le, false);
+  CHECK(bytes_differing(plain.bytes, f.bytes) > 0);
+}
+
+TEST_CASE("YCbCr is converted to RGB (BT.601 full range) and clamped") {
+  // Y 128, Cb 128, Cr 255: R = 128 + 1.402 * 127 = 306 -> 255 (clamped), G = 128 - 0.714 * 127 = 37.3, B = 128.
+  const CoreFrame f = render(flat(6, 6, 128, 128, 255, ColorSpace::ycbcr), core::PixelFormat::rgb888);
+  CHECK(int(f.bytes[0]) == 255);
+  CHECK(int(f.bytes[1]) == int(std::lround(128 - 0.714136286 * 127)));
+  CHECK(int(f.bytes[2]) == 128);
+  int r[3];
+  core::detail::ycbcr_to_rgb_q8(100 * 256, 90 * 256, 200 * 256, r);
+  CHECK(std::abs(r[0] / 256.0 - (100 + 1.402 * 72)) < 0.01);
+  CHECK(std::abs(r[1] / 256.0 - (100 - 0.344136286 * -38 - 0.714136286 * 72)) < 0.01);
+  CHECK(std::abs(r[2] / 256.0 - (100 + 1.772 * -38)) < 0.01);
+}
+
+TEST_CASE("background outside the domain, viewport placement") {
+  Mesh m;  // a triangle covering the top-left half only
+  m.points = {{0, 0}, {19, 0}, {0, 19}};
+  m.values = {10, 10, 10};
+  m.triangles = {Triangle{{0, 1, 2}}};
+  m.normalize_winding();
+  const Triangulation t = single_mesh(m, 20, 20);
+  CoreOptions o;
+  o.format = core::PixelFormat::l8;
+  o.background = 77;
+  o.tile_width = o.tile_height = 7;
+  const CoreFrame full = render_core_frame(t, "bilinear", o);
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 20; ++x) {
+      INFO(x << "," << y);
+      CHECK(int(full.bytes[y * 20 + x]) == (x + y <= 19 ? 10 : 77));
+    }
+  o.viewport = core::Rect{3, 5, 17, 11};
+  const CoreFrame part = render_core_frame(t, "bilinear", o);
+  REQUIRE((part.width == 14 && part.height == 6));
+  int wrong = 0;
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 14; ++x) wrong += part.bytes[y * 14 + x] != full.bytes[(y + 5) * 20 + x + 3];
+  CHECK(wrong == 0);
+}
+
+TEST_CASE("resized output maps corners to corners") {
+  Mesh m;
+  m.points = {{0, 0}, {9, 0}, {0, 9}, {9, 9}};
+  m.values = {0, 90, 90, 180};  // v = 10 (x + y): linear, reproduced exactly by bilinear
+  m.triangles = {Triangle{{0, 1, 3}}, Triangle{{0, 3, 2}}};
+  m.normalize_winding();
+  CoreOptions o;
+  o.format = core::PixelFormat::l8;
+  o.width = 19;
+  o.height = 28;
+  const CoreFrame f = render_core_frame(single_mesh(m, 10, 10), "bilinear", o);
+  REQUIRE((f.width == 19 && f.height == 28));
+  int worst = 0;
+  for (int j = 0; j < 28; ++j)
+    for (int i = 0; i < 19; ++i) {
+      const double expect = 10 * (i * 9.0 / 18 + j * 9.0 / 27);
+      worst = std::max(worst, std::abs(int(f.bytes[j * 19 + i]) - int(std::lround(expect))));
+    }
+  CHECK(worst <= 1);
+  CHECK(int(f.bytes[0]) == 0);
+  CHECK(int(f.bytes[28 * 19 - 1]) == 180);
+}
