@@ -151,7 +151,8 @@ EncodeResult encode(const Image& image, const EncodeOptions& o) {
   tri.height = image.height;
   tri.space = grey ? ColorSpace::grey : o.space;
   const Planes target = encoder::to_planes(grey ? to_grey(image) : image, tri.space);
-  const Planes guide = encoder::gaussian_blur(target, o.smoothing_sigma);
+  const double sigma = o.smoothing_sigma >= 0 ? o.smoothing_sigma : (o.fit == VertexFit::lsq ? 0.5 : 1.0);
+  const Planes guide = encoder::gaussian_blur(target, sigma);
   const std::size_t pixels = std::size_t(image.width) * image.height;
   const std::size_t limit = o.vertices ? o.vertices : pixels;
   encoder::GreedyOptions go;

@@ -49,8 +49,8 @@ int main(int argc, char** argv) {
   std::string input, output;
   std::size_t vertices = 0;
   double max_rms = 0;
-  std::string color = "co", space = "rgb", cotri = "greedy", fit = "pixel", rank = "total";
-  double sigma = 1.0;
+  std::string color = "co", space = "rgb", cotri = "greedy", fit = "lsq", rank = "total";
+  double sigma = -1;
   bool grey = false, quiet = false, json = false;
   app.add_option("image", input, "Input image")->required();
   app.add_option("-o,--output", output, "Output triangulation file (.tri)")->required();
@@ -78,9 +78,10 @@ int main(int argc, char** argv) {
   app.add_option("--rank", rank, "Triangle priority: total squared error, or the worst pixel (plain G&H)")
       ->check(CLI::IsMember({"total", "worst"}))
       ->capture_default_str();
-  app.add_option("--sigma", sigma, "Gaussian sigma of the copy candidates are chosen on (0: the image itself)")
-      ->check(CLI::Range(0.0, 10.0))
-      ->capture_default_str();
+  app.add_option("--sigma", sigma,
+                 "Gaussian sigma of the copy candidates are chosen on (0: the image itself; default 0.5 with "
+                 "--fit lsq, 1 with --fit pixel)")
+      ->check(CLI::Range(0.0, 10.0));
   app.add_flag("-q,--quiet", quiet, "No progress bar");
   app.add_flag("--json", json, "Print the summary as one JSON object");
 
