@@ -11,7 +11,6 @@ namespace tristream::core {
 namespace detail {
 namespace {
 
-constexpr int S = config::subpixel_bits;
 #if TS_ACTIVE_INDEX_BYTES == 2
 using ActiveIndex = uint16_t;
 #else
