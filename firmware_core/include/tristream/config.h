@@ -1,5 +1,5 @@
 #pragma once
-// Every compile-time knob of the core, with its default. Override by defining the macro before
+// Every compile-time knob of the core, with its default (C and C++). Override by defining the macro before
 // this header is included (e.g. -DTS_SUBPIXEL_BITS=4); blobs record the values that change their
 // layout (see blob_config_hash), and the core rejects a blob packed for another configuration.
 #include <stdint.h>
@@ -38,6 +38,7 @@
 #define TS_CHECK_HEADER_ON_RENDER 1
 #endif
 
+#ifdef __cplusplus
 namespace tristream::core::config {
 
 inline constexpr int subpixel_bits = TS_SUBPIXEL_BITS;
@@ -53,3 +54,4 @@ static_assert(gradient_frac_bits >= 0 && gradient_frac_bits <= 16, "gradient fra
 static_assert(int64_t(max_gradient) << gradient_frac_bits < (int64_t(1) << 31), "gradients must fit int32");
 
 }  // namespace tristream::core::config
+#endif

@@ -6,6 +6,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "tristream/config.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -34,6 +36,19 @@ typedef struct ts_tile {
 } ts_tile;
 
 typedef void (*ts_sink)(void* context, const ts_tile* tile);
+
+/* What tripack -o x.c emits besides the bytes: the blob and the buffer sizes it measured for
+   the tile size, pixel format and output size it was given. */
+typedef struct ts_blob_descriptor {
+  const uint8_t* bytes;
+  size_t size;
+  uint16_t width, height;               /* the triangulation's size */
+  uint16_t output_width, output_height; /* the size the RAM figures are for */
+  uint16_t tile_width, tile_height;
+  int format;
+  size_t tile_buffer_bytes;
+  size_t workspace_bytes;
+} ts_blob_descriptor;
 
 typedef struct ts_params {
   uint16_t output_width, output_height; /* 0: the blob's size */

@@ -1,0 +1,54 @@
+/* A C program that renders a blob compiled in by tripack (-o demo_blob.c) through the C API,
+   with static buffers only. Exit 0 when every tile arrived and every pixel was written. */
+#include <stdio.h>
+#include <string.h>
+
+#include "demo_blob.h"
+
+static uint8_t tile_buffer[32 * 32 * 2];
+static uint8_t workspace[16 * 1024];
+static uint8_t seen[512 * 768];
+
+struct count {
+  long tiles;
+  long pixels;
+};
+
+static void sink(void* context, const ts_tile* tile) {
+  struct count* c = (struct count*)context;
+  int x, y;
+  c->tiles++;
+  for (y = tile->rect.y0; y < tile->rect.y1; ++y)
+    for (x = tile->rect.x0; x < tile->rect.x1; ++x) {
+      if (!seen[y * 768 + x]) c->pixels++;
+      seen[y * 768 + x] = 1;
+    }
+}
+
+int main(void) {
+  ts_blob blob;
+  ts_params params;
+  struct count c = {0, 0};
+  uint32_t offset = 0;
+  ts_status s = ts_open(demo_blob.bytes, demo_blob.size, &blob, &offset);
+  if (s != TS_OK) {
+    fprintf(stderr, "ts_open: %s at byte %u\n", ts_status_text(s), (unsigned)offset);
+    return 1;
+  }
+  memset(&params, 0, sizeof params);
+  params.tile_width = demo_blob.tile_width;
+  params.tile_height = demo_blob.tile_height;
+  params.format = demo_blob.format;
+  if (demo_blob.tile_buffer_bytes > sizeof tile_buffer || demo_blob.workspace_bytes > sizeof workspace) {
+    fprintf(stderr, "buffers too small for the descriptor's figures\n");
+    return 1;
+  }
+  s = ts_render(&blob, &params, tile_buffer, sizeof tile_buffer, workspace, sizeof workspace, sink, &c);
+  if (s != TS_OK) {
+    fprintf(stderr, "ts_render: %s\n", ts_status_text(s));
+    return 1;
+  }
+  printf("%ld tiles, %ld pixels, RAM %zu bytes\n", c.tiles, c.pixels,
+         demo_blob.tile_buffer_bytes + demo_blob.workspace_bytes);
+  return (c.tiles == 24 * 16 && c.pixels == (long)demo_blob.width * demo_blob.height) ? 0 : 1;
+}
