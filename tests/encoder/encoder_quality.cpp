@@ -63,12 +63,14 @@ int main(int argc, char** argv) {
       const std::size_t n = std::size_t(pixels * percent / 100 + 0.5);
       EncodeOptions plain;
       plain.vertices = n;
+      plain.fit = VertexFit::pixel;
       plain.rank_by_total_error = false;
       plain.smoothing_sigma = 0;
-      EncodeOptions improved;
+      EncodeOptions improved;  // sigma 1 with pixel values
       improved.vertices = n;
-      EncodeOptions lsq = improved;
-      lsq.fit = VertexFit::lsq;
+      improved.fit = VertexFit::pixel;
+      EncodeOptions lsq;  // the default: least squares, sigma 0.5
+      lsq.vertices = n;
       EncodeOptions plain_lsq = plain;
       plain_lsq.fit = VertexFit::lsq;
       const ColorSpace space = img.channels == 1 ? ColorSpace::grey : ColorSpace::rgb;
@@ -82,15 +84,16 @@ int main(int argc, char** argv) {
       rows.push_back(encoded(img, "plain G&H, pixel values", plain));
       rows.push_back(encoded(img, "plain G&H, least squares", plain_lsq));
       rows.push_back(encoded(img, "improved, pixel values", improved));
-      rows.push_back(encoded(img, "improved, least squares", lsq));
+      rows.push_back(encoded(img, "improved, least squares (default)", lsq));
       if (img.channels == 3 && percent == 1.0) {
-        EncodeOptions o = improved;
+        // Colour variants, all with the default least-squares values.
+        EncodeOptions o = lsq;
         o.space = ColorSpace::ycbcr;
-        rows.push_back(encoded(img, "improved, YCbCr co-triangulation", o));
-        o = improved;
+        rows.push_back(encoded(img, "YCbCr co-triangulation", o));
+        o = lsq;
         o.cotri = CotriMethod::thesis;
         rows.push_back(encoded(img, "thesis co-triangulation (2.4)", o));
-        o = improved;
+        o = lsq;
         o.color = ColorMode::separate;
         o.vertices = n / 3;
         rows.push_back(encoded(img, "separate RGB, n/3 per channel", o));
