@@ -12,12 +12,6 @@
 namespace tristream {
 namespace {
 
-// Bernstein weights of P200, P020, P002, P110, P011, P101 at (a, b, 1 - a - b).
-std::array<double, 6> weights(double a, double b) {
-  const double c = 1.0 - a - b;
-  return {a * a, b * b, c * c, 2 * a * b, 2 * b * c, 2 * a * c};
-}
-
 void splat_thesis(const BezierPatch& patch, int channels, detail::PatchCanvas& canvas) {
   std::vector<double> value(channels);
   const int steps = int(std::floor(1.0 / kBezierThesisStep + 1e-9));
@@ -36,7 +30,7 @@ void splat_thesis(const BezierPatch& patch, int channels, detail::PatchCanvas& c
 
 void rasterize_exact(const BezierPatch& patch, int channels, detail::PatchCanvas& canvas,
                      std::vector<detail::MicroVertex>& node) {
-  const int n = std::min(patch.subdivisions(detail::kMicroEdge), detail::kMaxSubdivisions);
+  const int n = patch.subdivisions();
   // Node (i, j) has a = i / n, b = j / n; row j holds n + 1 - j nodes.
   auto index = [n](int i, int j) { return std::size_t(j) * (n + 1) - std::size_t(j) * (j - 1) / 2 + i; };
   node.resize(index(0, n) + 1);
@@ -49,7 +43,8 @@ void rasterize_exact(const BezierPatch& patch, int channels, detail::PatchCanvas
   std::vector<double> value(channels);
   auto visit = [&](int x, int y, double a, double b) {
     if (!canvas.in_domain(x, y)) return;
-    detail::refine_parameters(patch, x, y, a, b);
+    if (!detail::refine_parameters(patch, x, y, a, b)) return;
+    if (!patch.in_domain(a, b)) return;  // outside the patch, inside a boundary chord
     patch.values(a, b, value.data());
     canvas.add(x, y, value.data());
   };
@@ -65,53 +60,30 @@ void rasterize_exact(const BezierPatch& patch, int channels, detail::PatchCanvas
 
 }  // namespace
 
-void BezierPatch::position(double a, double b, double& x, double& y, double& x_a, double& x_b, double& y_a,
-                           double& y_b) const {
-  const auto& p = control_.pixel;
-  const double c = 1.0 - a - b;
-  const auto wt = weights(a, b);
-  x = y = 0;
-  for (int k = 0; k < 6; ++k) {
-    x += wt[k] * p[k].x;
-    y += wt[k] * p[k].y;
+BezierPatch::BezierPatch(const PatchControl& control) {
+  value_.resize(std::size_t(control.channels));
+  for (std::size_t d = 0; d < value_.size() + 2; ++d) {
+    auto q = [&](int k) {
+      if (d == 0) return control.pixel[k].x;
+      if (d == 1) return control.pixel[k].y;
+      return control.value[k * control.channels + int(d - 2)];
+    };
+    // The Bernstein form expanded in monomials of a and b (c = 1 - a - b).
+    (d == 0 ? x_ : d == 1 ? y_ : value_[d - 2]) = {q(p002),
+                     2 * (q(p101) - q(p002)),
+                     2 * (q(p011) - q(p002)),
+                     q(p200) + q(p002) - 2 * q(p101),
+                     2 * (q(p002) + q(p110) - q(p011) - q(p101)),
+                     q(p020) + q(p002) - 2 * q(p011)};
   }
-  // dP/da = 2[a (P200 - P101) + b (P110 - P011) + c (P101 - P002)], dP/db likewise.
-  x_a = 2 * (a * (p[p200].x - p[p101].x) + b * (p[p110].x - p[p011].x) + c * (p[p101].x - p[p002].x));
-  y_a = 2 * (a * (p[p200].y - p[p101].y) + b * (p[p110].y - p[p011].y) + c * (p[p101].y - p[p002].y));
-  x_b = 2 * (a * (p[p110].x - p[p101].x) + b * (p[p020].x - p[p011].x) + c * (p[p011].x - p[p002].x));
-  y_b = 2 * (a * (p[p110].y - p[p101].y) + b * (p[p020].y - p[p011].y) + c * (p[p011].y - p[p002].y));
+  const auto& p = control.pixel;
+  auto second = [&](int s, int m, int e) {
+    return 2 * std::hypot(p[s].x - 2 * p[m].x + p[e].x, p[s].y - 2 * p[m].y + p[e].y);
+  };
+  second_derivative_ = std::max({second(p200, p101, p002), second(p020, p011, p002), second(p200, p110, p020)});
 }
 
-Point BezierPatch::position(double a, double b) const {
-  const auto wt = weights(a, b);
-  Point r;
-  for (int k = 0; k < 6; ++k) {
-    r.x += wt[k] * control_.pixel[k].x;
-    r.y += wt[k] * control_.pixel[k].y;
-  }
-  return r;
-}
-
-void BezierPatch::values(double a, double b, double* out) const {
-  const auto wt = weights(a, b);
-  const int nc = control_.channels;
-  for (int c = 0; c < nc; ++c) {
-    double v = 0;
-    for (int k = 0; k < 6; ++k) v += wt[k] * control_.value[k * nc + c];
-    out[c] = v;
-  }
-}
-
-int BezierPatch::subdivisions(double max_edge) const {
-  static constexpr int net[9][2] = {{p200, p110}, {p110, p020}, {p020, p011}, {p011, p002}, {p002, p101},
-                                    {p101, p200}, {p110, p011}, {p011, p101}, {p101, p110}};
-  double longest = 0;
-  for (const auto& e : net)
-    longest = std::max(longest, std::hypot(control_.pixel[e[0]].x - control_.pixel[e[1]].x,
-                                           control_.pixel[e[0]].y - control_.pixel[e[1]].y));
-  const double n = std::ceil(2 * longest / max_edge);
-  return n < 1 ? 1 : n > detail::kMaxSubdivisions ? detail::kMaxSubdivisions : int(n);
-}
+int BezierPatch::subdivisions() const { return detail::subdivisions_for(second_derivative_, second_derivative_); }
 
 void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
   const bool thesis = detail::is_thesis_variant("bezier", options.variant);

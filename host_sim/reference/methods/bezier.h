@@ -11,7 +11,10 @@
 //   the value is the mean of the patches over the pixel, or bilinear where no patch reaches.
 // Border triangles (fewer than three neighbours) have no patch (§4.2); a mesh without
 // interior triangles renders as bilinear. Pixels outside the domain stay NaN.
+#include <vector>
+
 #include "reference/methods/patch_control.h"
+#include "reference/methods/patch_raster.h"
 #include "reference/render.h"
 
 namespace tristream {
@@ -22,20 +25,30 @@ inline constexpr double kBezierThesisStep = 0.006;
 // c = 1 - a - b, for position (output pixels) and every value channel.
 class BezierPatch {
  public:
-  explicit BezierPatch(const PatchControl& control) : control_(control) {}
+  explicit BezierPatch(const PatchControl& control);
 
   // Position and its partial derivatives with respect to a and b (c = 1 - a - b).
   void position(double a, double b, double& x, double& y, double& x_a, double& x_b, double& y_a,
-                double& y_b) const;
-  Point position(double a, double b) const;
+                double& y_b) const {
+    x = x_(a, b), y = y_(a, b);
+    x_a = x_.ds(a, b), x_b = x_.dt(a, b), y_a = y_.ds(a, b), y_b = y_.dt(a, b);
+  }
+  Point position(double a, double b) const { return {x_(a, b), y_(a, b)}; }
   // control.channels values at (a, b).
-  void values(double a, double b, double* out) const;
-  // Subdivisions n per side so that the image of a parameter step of 1/n along any grid
-  // direction is at most `max_edge` pixels: |dP| <= 2 * (longest control-net edge) / n.
-  int subdivisions(double max_edge) const;
+  void values(double a, double b, double* out) const {
+    for (std::size_t c = 0; c < value_.size(); ++c) out[c] = value_[c](a, b);
+  }
+  // The parameter domain a, b, c >= 0 (up to 1e-12).
+  static bool in_domain(double a, double b) { return a >= -1e-12 && b >= -1e-12 && 1 - a - b >= -1e-12; }
+  // Subdivisions n per side for the exact variant (patch_raster.h): the second derivatives
+  // along the three grid directions are 2 (P200 - 2 P101 + P002), 2 (P020 - 2 P011 + P002)
+  // and 2 (P200 - 2 P110 + P020), constant, and each is also a boundary curve's.
+  int subdivisions() const;
 
  private:
-  const PatchControl& control_;
+  detail::Quadratic2 x_, y_;                // position in (a, b)
+  std::vector<detail::Quadratic2> value_;  // one per value channel
+  double second_derivative_ = 0;               // largest of the three above
 };
 
 void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out);

@@ -38,7 +38,7 @@ void splat_thesis(const CoonsPatch& patch, int channels, detail::PatchCanvas& ca
 
 void rasterize_exact(const CoonsPatch& patch, int channels, detail::PatchCanvas& canvas,
                      std::vector<detail::MicroVertex>& node) {
-  const auto [nu, nv] = patch.subdivisions(detail::kMicroEdge);
+  const auto [nu, nv] = patch.subdivisions();
   // Node (i, j) has u = i / nu, v = j / nv; each grid cell is split along (i, j)-(i+1, j+1).
   auto index = [nu = nu](int i, int j) { return std::size_t(j) * (nu + 1) + i; };
   node.resize(std::size_t(nu + 1) * (nv + 1));
@@ -55,7 +55,8 @@ void rasterize_exact(const CoonsPatch& patch, int channels, detail::PatchCanvas&
   std::vector<double> value(channels);
   auto visit = [&](int x, int y, double u, double v) {
     if (!canvas.in_domain(x, y)) return;
-    detail::refine_parameters(patch, x, y, u, v);
+    if (!detail::refine_parameters(patch, x, y, u, v)) return;
+    if (!patch.in_domain(u, v)) return;  // outside the patch, inside a boundary chord
     patch.values(u, v, value.data());
     canvas.add(x, y, value.data());
   };
@@ -84,64 +85,50 @@ CoonsPatch::CoonsPatch(const PatchControl& control) {
   const int m = middle_of(a, b), m_ac = middle_of(a, c), m_bc = middle_of(c, b);
   corner_ = {a, m, b, c};
 
-  component_.resize(2 + std::size_t(control.channels));
-  for (std::size_t d = 0; d < component_.size(); ++d) {
+  value_.resize(std::size_t(control.channels));
+  for (std::size_t d = 0; d < value_.size() + 2; ++d) {
     auto x = [&](int k) {
       if (d == 0) return control.pixel[k].x;
       if (d == 1) return control.pixel[k].y;
       return control.value[k * control.channels + int(d - 2)];
     };
-    Component& q = component_[d];
+    Component& q = d == 0 ? x_ : d == 1 ? y_ : value_[d - 2];
     const Parabola split = Parabola::through(x(a), x(m), x(b));
     q.A = x(a), q.M = x(m), q.B = x(b), q.C = x(c);
     q.b1 = Parabola::through(q.A, split(0.25), q.M);
     q.a2 = Parabola::through(q.M, split(0.75), q.B);
     q.a1 = Parabola::through(q.A, x(m_ac), q.C);
     q.b2 = Parabola::through(q.C, x(m_bc), q.B);
+    q.expand();
   }
 }
 
-double CoonsPatch::Component::at(double u, double v) const {
-  return (1 - u) * a1(v) + u * a2(v) + (1 - v) * b1(u) + v * b2(u) -
-         ((1 - u) * (1 - v) * A + u * (1 - v) * M + (1 - u) * v * C + u * v * B);
+void CoonsPatch::Component::expand() {
+  // (1-u) a1(v) + u a2(v) + (1-v) b1(u) + v b2(u) - [(1-u)(1-v) A + u(1-v) M + (1-u) v C + u v B]
+  k = a1.c + b1.c - A;
+  ku = a2.c - a1.c + b1.b + A - M;
+  kv = a1.b + b2.c - b1.c + A - C;
+  kuv = a2.b - a1.b + b2.b - b1.b - A + M + C - B;
+  kuu = b1.a;
+  kvv = a1.a;
+  kuuv = b2.a - b1.a;
+  kuvv = a2.a - a1.a;
 }
 
-void CoonsPatch::position(double u, double v, double& x, double& y, double& x_u, double& x_v, double& y_u,
-                          double& y_v) const {
-  auto derivatives = [u, v](const Component& q, double& du, double& dv) {
-    du = q.a2(v) - q.a1(v) + (1 - v) * q.b1.derivative(u) + v * q.b2.derivative(u) -
-         ((1 - v) * (q.M - q.A) + v * (q.B - q.C));
-    dv = (1 - u) * q.a1.derivative(v) + u * q.a2.derivative(v) + q.b2(u) - q.b1(u) -
-         ((1 - u) * (q.C - q.A) + u * (q.B - q.M));
+std::array<int, 2> CoonsPatch::subdivisions() const {
+  const Component& X = x_;
+  const Component& Y = y_;
+  auto curvature = [](const Parabola& px, const Parabola& py) { return 2 * std::hypot(px.a, py.a); };
+  // max over t in [0, 1] of |q'(t) - p'(t)|: linear in t.
+  auto slope_gap = [](const Parabola& px, const Parabola& py, const Parabola& qx, const Parabola& qy) {
+    return std::max(std::hypot(qx.b - px.b, qy.b - py.b),
+                    std::hypot(qx.derivative(1) - px.derivative(1), qy.derivative(1) - py.derivative(1)));
   };
-  x = component_[0].at(u, v);
-  y = component_[1].at(u, v);
-  derivatives(component_[0], x_u, x_v);
-  derivatives(component_[1], y_u, y_v);
-}
-
-Point CoonsPatch::position(double u, double v) const { return {component_[0].at(u, v), component_[1].at(u, v)}; }
-
-void CoonsPatch::values(double u, double v, double* out) const {
-  for (std::size_t d = 2; d < component_.size(); ++d) out[d - 2] = component_[d].at(u, v);
-}
-
-std::array<int, 2> CoonsPatch::subdivisions(double max_edge) const {
-  const Component& X = component_[0];
-  const Component& Y = component_[1];
-  auto max_derivative = [](const Parabola& px, const Parabola& py) {
-    return std::max(std::hypot(px.b, py.b), std::hypot(2 * px.a + px.b, 2 * py.a + py.b));
-  };
-  auto deviation = [](const Parabola& px, const Parabola& py) { return std::hypot(px.a, py.a) / 4; };
-  const double du = std::max(max_derivative(X.b1, Y.b1), max_derivative(X.b2, Y.b2)) + deviation(X.a1, Y.a1) +
-                    deviation(X.a2, Y.a2);
-  const double dv = std::max(max_derivative(X.a1, Y.a1), max_derivative(X.a2, Y.a2)) + deviation(X.b1, Y.b1) +
-                    deviation(X.b2, Y.b2);
-  auto count = [max_edge](double bound) {
-    const double n = std::ceil(bound / max_edge);
-    return n < 1 ? 1 : n > detail::kMaxSubdivisions ? detail::kMaxSubdivisions : int(n);
-  };
-  return {count(du), count(dv)};
+  const double kuu = std::max(curvature(X.b1, Y.b1), curvature(X.b2, Y.b2));
+  const double kvv = std::max(curvature(X.a1, Y.a1), curvature(X.a2, Y.a2));
+  const double kuv = slope_gap(X.a1, Y.a1, X.a2, Y.a2) + slope_gap(X.b1, Y.b1, X.b2, Y.b2) +
+                     std::hypot(X.M - X.A - X.B + X.C, Y.M - Y.A - Y.B + Y.C);
+  return {detail::subdivisions_for(kuu, 2 * (kuu + kuv)), detail::subdivisions_for(kvv, 2 * (kvv + kuv))};
 }
 
 void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {

@@ -52,25 +52,48 @@ class CoonsPatch {
 
   // Position (output pixels) and its partial derivatives with respect to u and v.
   void position(double u, double v, double& x, double& y, double& x_u, double& x_v, double& y_u,
-                double& y_v) const;
-  Point position(double u, double v) const;
+                double& y_v) const {
+    x_.evaluate(u, v, x, x_u, x_v);
+    y_.evaluate(u, v, y, y_u, y_v);
+  }
+  Point position(double u, double v) const { return {x_.at(u, v), y_.at(u, v)}; }
   // control.channels values at (u, v).
-  void values(double u, double v, double* out) const;
-  // Subdivisions along u and v so that the image of a parameter step is at most `max_edge`
-  // pixels: |dP/du| <= max |b1'|, |b2'| plus the largest deviations of a1 and a2 from their
-  // chords (|a| / 4 each), and likewise for v.
-  std::array<int, 2> subdivisions(double max_edge) const;
+  void values(double u, double v, double* out) const {
+    for (std::size_t c = 0; c < value_.size(); ++c) out[c] = value_[c].at(u, v);
+  }
+  // The parameter domain [0, 1]^2 (up to 1e-12).
+  static bool in_domain(double u, double v) { return u >= -1e-12 && v >= -1e-12 && u <= 1 + 1e-12 && v <= 1 + 1e-12; }
+  // Subdivisions (nu, nv) for the exact variant (patch_raster.h). Bounds over the square:
+  // |P_uu| <= Kuu = 2 max(|b1.a|, |b2.a|) (also the boundary curves' along u), |P_vv| <= Kvv
+  // likewise with a1, a2, |P_uv| <= Kuv = max |a2' - a1'| + max |b2' - b1'| + |M - A - B + C|
+  // (derivatives are linear, so their maxima are at the ends). A micro-triangle edge d (steps
+  // hu = 1/nu, hv = 1/nv) has |d' H d| <= (Kuu + Kuv) hu^2 + (Kvv + Kuv) hv^2, so each side
+  // takes twice its share as the interior bound.
+  std::array<int, 2> subdivisions() const;
 
  private:
-  // One coordinate (x, y or a value channel) of the patch.
+  // One coordinate (x, y or a value channel) of the patch: its corners and curves, and the
+  // same surface in monomials 1, u, v, uv, u^2, v^2, u^2 v, u v^2.
   struct Component {
     double A = 0, M = 0, B = 0, C = 0;
     Parabola a1, a2, b1, b2;
-    double at(double u, double v) const;
+    double k = 0, ku = 0, kv = 0, kuv = 0, kuu = 0, kvv = 0, kuuv = 0, kuvv = 0;
+
+    void expand();
+    double at(double u, double v) const {
+      return k + u * (ku + u * kuu) + v * (kv + v * kvv) + u * v * (kuv + u * kuuv + v * kuvv);
+    }
+    void evaluate(double u, double v, double& value, double& d_u, double& d_v) const {
+      const double uu = u * u, vv = v * v, uv = u * v;
+      value = k + u * ku + v * kv + uv * kuv + uu * kuu + vv * kvv + uu * v * kuuv + u * vv * kuvv;
+      d_u = ku + v * kuv + 2 * u * kuu + 2 * uv * kuuv + vv * kuvv;
+      d_v = kv + u * kuv + 2 * v * kvv + uu * kuuv + 2 * uv * kuvv;
+    }
   };
   int longest_ = 0;
   std::array<int, 4> corner_{};
-  std::vector<Component> component_;  // x, y, then the value channels
+  Component x_, y_;                // position
+  std::vector<Component> value_;  // one per value channel
 };
 
 void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out);

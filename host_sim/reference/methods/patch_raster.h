@@ -5,14 +5,20 @@
 //
 // - thesis: step s and t by a fixed step, round each sample's position to the nearest pixel,
 //   add it there; the bilinear pre-fill counts as one more sample in every pixel.
-// - exact (the default): tessellate the patch into micro-triangles whose edges are at most
-//   kMicroEdge pixels, rasterize them with exact integer edge tests and a top-left tie rule
-//   (each pixel is covered once per layer of the surface, a fold gives more layers), and
-//   evaluate the surface at the pixel itself: the micro-triangle gives the parameters by
-//   linear interpolation and Newton's method on the patch's position makes them exact. So the
-//   value is that of the surface point above the pixel's sample point; only the decision
-//   whether a pixel near the patch boundary is inside follows the tessellation (the boundary
-//   curve replaced by its chords). A pixel no patch covers keeps the bilinear value.
+// - exact (the default): tessellate the patch's parameter domain uniformly, rasterize the
+//   micro-triangles with exact integer edge tests and a top-left tie rule (each pixel is
+//   covered once per layer of the surface; a fold gives more layers), and evaluate the
+//   surface at the pixel itself: the micro-triangle gives the parameters by linear
+//   interpolation, Newton's method on the patch's position makes them exact. So a pixel's
+//   value is that of the surface point above its sample point; a pixel whose parameters
+//   fall outside the patch's parameter domain, or which Newton cannot place (beside a fold
+//   of the patch, where the tessellation's fold line is off), is not counted. So the tessellation only decides
+//   coverage of pixels between a boundary curve and its chord, which stays within
+//   kBoundaryTolerance of the curve; its interior stays within kGuessTolerance of the patch
+//   (Newton's start). Both follow from bounds on the position's second derivatives, so a nearly affine
+//   patch is one or two micro-triangles. Work: about one Newton solve (two or three position
+//   evaluations) per covered pixel and patch, plus the micro-triangles. A pixel no patch
+//   covers keeps the bilinear value.
 //
 // Pixels outside the triangulation's domain (NaN in the bilinear field) are never written.
 #include <algorithm>
@@ -74,15 +80,36 @@ class PatchCanvas {
 // Coverage decisions use positions snapped to 1/256 output pixel. Bit budget: a patch is
 // skipped unless every node is within +-2^20 pixels, so fixed-point coordinates are below
 // 2^28, differences below 2^29 and the edge functions (products of two differences, summed)
-// below 2^59: int64 is exact.
+// below 2^59, also when stepped across a bounding box: int64 is exact.
 inline constexpr int kSubpixelBits = 8;
 inline constexpr double kSubpixelScale = 1 << kSubpixelBits;
 inline constexpr double kMaxPatchCoordinate = 1 << 20;
-// Upper bound on a micro-triangle edge, in output pixels, along the grid directions.
-inline constexpr double kMicroEdge = 1.0;
-// Subdivisions per patch side are capped (a micro-edge may then exceed kMicroEdge; coverage
-// stays exact for the coarser tessellation and values stay exact).
-inline constexpr int kMaxSubdivisions = 2048;
+// Distances in output pixels between a patch and its tessellation. A chord of a quadratic
+// curve with second derivative K and parameter step h deviates by at most K h^2 / 8; the
+// linear interpolant of a quadratic map over a triangle with edge vectors d_k (parameter
+// space) deviates by at most max_k |d_k' H d_k| / 6 (H the second derivative).
+inline constexpr double kBoundaryTolerance = 1.0 / 8;
+inline constexpr double kGuessTolerance = 1.0;
+// Subdivisions per patch side are capped (the tessellation may then deviate more).
+inline constexpr int kMaxSubdivisions = 1024;
+
+// Subdivisions n of a parameter side for second-derivative bounds `boundary` (along the
+// boundary curves) and `interior` (max |d' H d| over the micro-triangle edge directions d
+// scaled to the whole side): n^2 >= boundary / (8 kBoundaryTolerance) and
+// n^2 >= interior / (6 kGuessTolerance), at least 1.
+inline int subdivisions_for(double boundary, double interior) {
+  const double n = std::ceil(std::sqrt(std::max(boundary / (8 * kBoundaryTolerance), interior / (6 * kGuessTolerance))));
+  return n < 1 ? 1 : n > kMaxSubdivisions ? kMaxSubdivisions : int(n);
+}
+
+// A quadratic polynomial in two parameters (s, t) with its first derivatives.
+struct Quadratic2 {
+  double k = 0, ks = 0, kt = 0, kss = 0, kst = 0, ktt = 0;
+
+  double operator()(double s, double t) const { return k + s * (ks + s * kss + t * kst) + t * (kt + t * ktt); }
+  double ds(double s, double t) const { return ks + 2 * s * kss + t * kst; }
+  double dt(double s, double t) const { return kt + s * kst + 2 * t * ktt; }
+};
 
 // A tessellation node: snapped output position and the patch parameters there.
 struct MicroVertex {
@@ -95,7 +122,7 @@ struct MicroVertex {
 // False when (x, y) is outside +-kMaxPatchCoordinate (or NaN): the caller skips the patch.
 inline bool snap(double x, double y, double s, double t, MicroVertex& out) {
   if (!(std::fabs(x) <= kMaxPatchCoordinate && std::fabs(y) <= kMaxPatchCoordinate)) return false;
-  out = {std::llround(x * kSubpixelScale), std::llround(y * kSubpixelScale), s, t};
+  out = {std::int64_t(std::floor(x * kSubpixelScale + 0.5)), std::int64_t(std::floor(y * kSubpixelScale + 0.5)), s, t};
   return true;
 }
 
@@ -137,41 +164,53 @@ void rasterize_micro_triangle(const MicroVertex& a, const MicroVertex& b, const 
   const std::int64_t j1 = std::min<std::int64_t>(height - 1, max_y >> kSubpixelBits);
   if (i0 > i1 || j0 > j1) return;
   const std::int64_t bias0 = edge_bias(*v1, *v2), bias1 = edge_bias(*v2, *v0), bias2 = edge_bias(*v0, *v1);
+  // Edge functions at the first pixel of the box, stepped by whole pixels: w(p + (1, 0)) =
+  // w(p) - dy * one, w(p + (0, 1)) = w(p) + dx * one, for edge (p -> q), dx = q.x - p.x.
+  const std::int64_t px0 = i0 << kSubpixelBits, py0 = j0 << kSubpixelBits;
+  std::int64_t r0 = edge_function(*v1, *v2, px0, py0);
+  std::int64_t r1 = edge_function(*v2, *v0, px0, py0);
+  std::int64_t r2 = edge_function(*v0, *v1, px0, py0);
+  const std::int64_t sx0 = -(v2->y - v1->y) * one, sy0 = (v2->x - v1->x) * one;
+  const std::int64_t sx1 = -(v0->y - v2->y) * one, sy1 = (v0->x - v2->x) * one;
+  const std::int64_t sx2 = -(v1->y - v0->y) * one, sy2 = (v1->x - v0->x) * one;
   const double inv_area = 1.0 / double(area);
-  for (std::int64_t j = j0; j <= j1; ++j)
-    for (std::int64_t i = i0; i <= i1; ++i) {
-      const std::int64_t px = i << kSubpixelBits, py = j << kSubpixelBits;
-      const std::int64_t w0 = edge_function(*v1, *v2, px, py);
-      const std::int64_t w1 = edge_function(*v2, *v0, px, py);
-      const std::int64_t w2 = edge_function(*v0, *v1, px, py);
+  for (std::int64_t j = j0; j <= j1; ++j, r0 += sy0, r1 += sy1, r2 += sy2) {
+    std::int64_t w0 = r0, w1 = r1, w2 = r2;
+    for (std::int64_t i = i0; i <= i1; ++i, w0 += sx0, w1 += sx1, w2 += sx2) {
       if (w0 < bias0 || w1 < bias1 || w2 < bias2) continue;
       const double l0 = double(w0) * inv_area, l1 = double(w1) * inv_area, l2 = 1.0 - l0 - l1;
       visit(int(i), int(j), l0 * v0->s + l1 * v1->s + l2 * v2->s, l0 * v0->t + l1 * v1->t + l2 * v2->t);
     }
+  }
 }
 
-// Refines (s, t) so that patch.position(s, t) is the point (x, y), by Newton's method from a
-// close start (the micro-triangle's linear guess). Keeps the start when the Jacobian is
-// singular or a step would leave the neighbourhood of the start (near a fold).
+// Solves patch.position(s, t) = (x, y) by Newton's method from a close start (the
+// micro-triangle's linear guess) and returns true with the solution in (s, t). It stops
+// after the step that corrects a residual below 1e-3 pixels: convergence is quadratic, so
+// the error left is about 1e-6 pixels times the patch's relative curvature |P''| / |P'|.
+// Returns false, leaving (s, t) alone, when the Jacobian is singular, the iteration leaves
+// the start's neighbourhood (0.25 in parameter) or does not settle in 8 steps: that happens
+// beside a fold of the patch, where the pixel may have no preimage near the guess.
 // Patch provides position(s, t, x, y, dx_ds, dx_dt, dy_ds, dy_dt).
 template <class Patch>
-void refine_parameters(const Patch& patch, double x, double y, double& s, double& t) {
+bool refine_parameters(const Patch& patch, double x, double y, double& s, double& t) {
   double cs = s, ct = t;
-  for (int iteration = 0; iteration < 6; ++iteration) {
+  for (int iteration = 0; iteration < 8; ++iteration) {
     double px, py, xs, xt, ys, yt;
     patch.position(cs, ct, px, py, xs, xt, ys, yt);
     const double det = xs * yt - xt * ys;
-    if (!(std::fabs(det) > 1e-300)) return;
+    if (!(std::fabs(det) > 1e-300)) return false;
     const double ex = x - px, ey = y - py;
-    const double ds = (yt * ex - xt * ey) / det;
-    const double dt = (xs * ey - ys * ex) / det;
-    cs += ds;
-    ct += dt;
-    if (!(std::fabs(cs - s) + std::fabs(ct - t) < 0.25)) return;  // diverging: keep the guess
-    if (std::fabs(ds) + std::fabs(dt) < 1e-14) break;
+    cs += (yt * ex - xt * ey) / det;
+    ct += (xs * ey - ys * ex) / det;
+    if (!(std::fabs(cs - s) + std::fabs(ct - t) < 0.25)) return false;
+    if (std::fabs(ex) + std::fabs(ey) < 1e-3) {
+      s = cs;
+      t = ct;
+      return true;
+    }
   }
-  s = cs;
-  t = ct;
+  return false;
 }
 
 }  // namespace tristream::detail
