@@ -4,6 +4,8 @@
 #include "reference/methods/bilinear.h"
 #include "reference/methods/clough_tocher.h"
 #include "reference/methods/coons.h"
+#include "reference/methods/natural.h"
+#include "reference/methods/voronoi.h"
 #include "reference/methods/zienkiewicz.h"
 #include "reference/render.h"
 
@@ -18,6 +20,8 @@ constexpr std::array methods{
     MethodInfo{"bezier", "second-degree Bezier triangle patches over each triangle and its neighbours (thesis 3.3)",
                render_bezier},
     MethodInfo{"coons", "Coons patches over each triangle and its neighbours (thesis 3.4)", render_coons},
+    MethodInfo{"voronoi", "Meyer polygon coordinates in Voronoi cells, zienkiewicz cell-vertex values (thesis 3.5)", render_voronoi},
+    MethodInfo{"natural", "Sibson natural-neighbour coordinates on the Delaunay triangulation (thesis 3.6)", render_natural},
     MethodInfo{"clough-tocher", "C1 cubic over the Clough-Tocher split, zienkiewicz's gradients", render_clough_tocher},
 };
 

@@ -1,0 +1,327 @@
+#include "reference/methods/natural.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geometry/delaunay.h"
+#include "geometry/predicates.h"
+
+namespace tristream {
+namespace {
+
+// Circumcentre of (o, a, b) minus o. Finite whenever o, a, b are not collinear.
+Point circumcentre_from(const Point& o, const Point& a, const Point& b) {
+  const double ax = a.x - o.x, ay = a.y - o.y;
+  const double bx = b.x - o.x, by = b.y - o.y;
+  const double r = 0.5 / (ax * by - ay * bx);
+  const double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by;
+  return {(by * a2 - ay * b2) * r, (ax * b2 - bx * a2) * r};
+}
+
+// The filter's error bound relative to the permanent: Shewchuk's incircle bound is
+// (10 + 96 eps) eps for the same sum of six lift x coordinate x coordinate products;
+// 32 eps leaves a wide margin.
+constexpr double circle_filter = 32 * std::numeric_limits<double>::epsilon();
+
+}  // namespace
+
+SibsonCoordinates::SibsonCoordinates(std::span<const Point> points) {
+  mesh_.points.assign(points.begin(), points.end());
+  mesh_.triangles = delaunay_triangulation(points);
+  topo_ = build_topology(mesh_);
+  const std::size_t nt = mesh_.triangles.size();
+  centre_.resize(nt);
+  circle_.resize(nt);
+  for (std::size_t t = 0; t < nt; ++t) {
+    const auto& v = mesh_.triangles[t].v;
+    const Point& a = mesh_.points[v[0]];
+    const Point& b = mesh_.points[v[1]];
+    const Point& c = mesh_.points[v[2]];
+    const Point cc = circumcentre_from(a, b, c);
+    centre_[t] = {a.x + cc.x, a.y + cc.y};
+    const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+    const double lb = bx * bx + by * by, lc = cx * cx + cy * cy;
+    circle_[t] = {a.x,
+                  a.y,
+                  lb * cy - by * lc,
+                  bx * lc - lb * cx,
+                  -(bx * cy - by * cx),
+                  std::abs(lb * cy) + std::abs(by * lc),
+                  std::abs(bx * lc) + std::abs(lb * cx),
+                  std::abs(bx * cy) + std::abs(by * cx)};
+  }
+  stamp_.assign(nt, 0);
+  in_cavity_.assign(nt, 0);
+  vertex_stamp_.assign(mesh_.points.size(), 0);
+  vertex_slot_.assign(mesh_.points.size(), 0);
+}
+
+bool SibsonCoordinates::in_circle(std::uint32_t t, const Point& p) const {
+  const CircleTest& k = circle_[t];
+  const double dx = p.x - k.ax, dy = p.y - k.ay, l = dx * dx + dy * dy;
+  const double f = k.alpha * dx + k.beta * dy + k.gamma * l;
+  const double bound = circle_filter * (k.alpha_abs * std::abs(dx) + k.beta_abs * std::abs(dy) + k.gamma_abs * l);
+  if (f > bound) return true;
+  if (f < -bound) return false;
+  const auto& v = mesh_.triangles[t].v;
+  return incircle(mesh_.points[v[0]], mesh_.points[v[1]], mesh_.points[v[2]], p) > 0;
+}
+
+std::uint32_t SibsonCoordinates::locate(const Point& p) {
+  if (mesh_.triangles.empty()) return no_neighbour;
+  // Visibility walk; it terminates on a Delaunay triangulation (Edelsbrunner 1990), and the
+  // step budget only guards against a broken invariant.
+  std::uint32_t t = hint_ < mesh_.triangles.size() ? hint_ : 0;
+  for (std::size_t steps = 0; steps <= 4 * mesh_.triangles.size() + 8; ++steps) {
+    const auto& v = mesh_.triangles[t].v;
+    int cross = -1;
+    for (int e = 0; e < 3 && cross < 0; ++e)
+      if (orient2d(mesh_.points[v[e]], mesh_.points[v[(e + 1) % 3]], p) < 0) cross = e;
+    if (cross < 0) return hint_ = t;
+    const std::uint32_t n = topo_.neighbour[3 * t + cross];
+    if (n == no_neighbour) return no_neighbour;  // beyond a hull edge: outside the hull
+    t = n;
+  }
+  return no_neighbour;
+}
+
+bool SibsonCoordinates::compute(const Point& p, std::vector<NeighbourWeight>& out) {
+  const std::uint32_t t = locate(p);
+  if (t == no_neighbour) {
+    out.clear();
+    return false;
+  }
+  return compute_in(p, t, out);
+}
+
+bool SibsonCoordinates::compute_in(const Point& p, std::uint32_t t0, std::vector<NeighbourWeight>& out) {
+  out.clear();
+  const auto& tv = mesh_.triangles[t0].v;
+  for (int k = 0; k < 3; ++k) {
+    const Point& q = mesh_.points[tv[k]];
+    if (q.x == p.x && q.y == p.y) {
+      out.push_back({tv[k], 1.0});
+      return true;
+    }
+  }
+  for (int e = 0; e < 3; ++e) {
+    if (!topo_.is_boundary_edge(t0, e)) continue;
+    const Point& a = mesh_.points[tv[e]];
+    const Point& b = mesh_.points[tv[(e + 1) % 3]];
+    if (orient2d(a, b, p) != 0) continue;
+    // On a hull edge (p is in the closed triangle, so on the segment): linear along it.
+    const double s = std::abs(b.x - a.x) >= std::abs(b.y - a.y) ? (p.x - a.x) / (b.x - a.x) : (p.y - a.y) / (b.y - a.y);
+    out.push_back({tv[e], 1.0 - s});
+    out.push_back({tv[(e + 1) % 3], s});
+    return true;
+  }
+
+  // The cavity: triangles whose circumcircle strictly contains p, a connected set around t0
+  // (p lies in the closed t0 and on none of its vertices, so strictly inside its circle).
+  if (++query_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), 0);
+    query_ = 1;
+  }
+  cavity_.clear();
+  stack_.assign(1, t0);
+  stamp_[t0] = query_;
+  in_cavity_[t0] = 1;
+  while (!stack_.empty()) {
+    const std::uint32_t t = stack_.back();
+    stack_.pop_back();
+    cavity_.push_back(t);
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t n = topo_.neighbour[3 * t + e];
+      if (n != no_neighbour && stamp_[n] != query_) {
+        stamp_[n] = query_;
+        in_cavity_[n] = in_circle(n, p);
+        if (in_cavity_[n]) stack_.push_back(n);
+      }
+    }
+  }
+  auto inside = [&](std::uint32_t n) { return n != no_neighbour && stamp_[n] == query_ && in_cavity_[n]; };
+
+  // The stolen polygon of a cavity boundary vertex w, between boundary edges u -> w and
+  // w -> x (cavity on their left), is [g(u, w), c(T1), ..., c(Tm), g(w, x)]: c(T) the
+  // circumcentres of the cavity triangles around w, g the circumcentre of p with a boundary
+  // edge. Its shoelace sum is accumulated edge by edge, with coordinates relative to p:
+  // crossing cavity edge a -> b from T to the cavity triangle N adds c(T) x c(N) to a's
+  // polygon; boundary edge a -> b of T adds c(T) x g to a's and g x c(T) to b's, and
+  // closes a's polygon with g x (a's first point) and opens b's with g.
+  auto slot_of = [&](std::uint32_t v) {
+    if (vertex_stamp_[v] != query_) {
+      vertex_stamp_[v] = query_;
+      vertex_slot_[v] = std::uint32_t(out.size());
+      out.push_back({v, 0.0});
+      polygon_.push_back({});
+    }
+    return vertex_slot_[v];
+  };
+  polygon_.clear();
+  for (const std::uint32_t t : cavity_) {
+    const auto& v = mesh_.triangles[t].v;
+    const Point ct = {centre_[t].x - p.x, centre_[t].y - p.y};
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t n = topo_.neighbour[3 * t + e];
+      const std::uint32_t a = v[e], b = v[(e + 1) % 3];
+      if (inside(n)) {
+        const Point cn = {centre_[n].x - p.x, centre_[n].y - p.y};
+        out[slot_of(a)].weight += ct.x * cn.y - cn.x * ct.y;
+        continue;
+      }
+      const Point g = circumcentre_from(p, mesh_.points[a], mesh_.points[b]);
+      const std::uint32_t sa = slot_of(a);
+      out[sa].weight += ct.x * g.y - g.x * ct.y;
+      polygon_[sa].last = g;
+      const std::uint32_t sb = slot_of(b);
+      out[sb].weight += g.x * ct.y - ct.x * g.y;
+      polygon_[sb].first = g;
+    }
+  }
+  double total = 0;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const Point& l = polygon_[k].last;
+    const Point& f = polygon_[k].first;
+    // The polygon runs clockwise in the orient2d > 0 frame, hence the minus sign. A true
+    // stolen area is >= 0; rounding could leave a tiny negative for a sliver: taken as 0.
+    const double stolen = std::max(0.0, -0.5 * (out[k].weight + l.x * f.y - f.x * l.y));
+    out[k].weight = stolen;
+    total += stolen;
+  }
+  if (!(total > 0)) {  // cannot happen for p strictly inside the hull; never divide by 0
+    out.clear();
+    return false;
+  }
+  const double inv = 1.0 / total;
+  for (NeighbourWeight& nw : out) nw.weight *= inv;
+  return true;
+}
+
+std::vector<std::uint32_t> owning_triangles(const Mesh& mesh, const Topology& topo, const PixelMapping& map) {
+  const int width = map.out_width;
+  std::vector<std::uint32_t> owner(std::size_t(width) * map.out_height, no_neighbour);
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& v = mesh.triangles[t].v;
+    const Point* corner[3] = {&mesh.points[v[0]], &mesh.points[v[1]], &mesh.points[v[2]]};
+    // The same ownership rule as for_each_owned_pixel: inclusive[k][e] with k = 0 elsewhere,
+    // 1 in column 0, 2 in row 0, 3 at pixel (0, 0).
+    bool inclusive[4][3];
+    for (int k = 0; k < 4; ++k)
+      for (int e = 0; e < 3; ++e)
+        inclusive[k][e] = topo.is_boundary_edge(t, e) ||
+                          owns_edge_points(*corner[e], *corner[(e + 1) % 3], k & 1 ? 1 : -1, k & 2 ? 1 : -1);
+    auto inside = [&](int i, int j) {
+      const Point p = map.sample(i, j);
+      const bool* incl = inclusive[(i == 0 ? 1 : 0) + (j == 0 ? 2 : 0)];
+      for (int e = 0; e < 3; ++e) {
+        const double o = orient2d(*corner[e], *corner[(e + 1) % 3], p);
+        if (!(o > 0 || (o == 0 && incl[e]))) return false;
+      }
+      return true;
+    };
+    const double xmin = std::min({corner[0]->x, corner[1]->x, corner[2]->x});
+    const double xmax = std::max({corner[0]->x, corner[1]->x, corner[2]->x});
+    // Rows whose sample y lies in [ymin, ymax] (with a margin far above rounding).
+    const double ymin = std::min({corner[0]->y, corner[1]->y, corner[2]->y});
+    const double ymax = std::max({corner[0]->y, corner[1]->y, corner[2]->y});
+    const int j0 = std::max(map.first_row(ymin), int(std::ceil(ymin / map.sy - 1e-7)));
+    const int j1 = std::min(map.last_row(ymax), int(std::floor(ymax / map.sy + 1e-7)));
+    // x = a.x + (y - a.y) * slope on each edge line; the kind of bound it gives.
+    double slope[3];
+    int kind[3];  // +1: upper bound on x, -1: lower bound, 0: horizontal edge
+    for (int e = 0; e < 3; ++e) {
+      const Point& a = *corner[e];
+      const Point& b = *corner[(e + 1) % 3];
+      const double dy = b.y - a.y;
+      kind[e] = dy > 0 ? 1 : dy < 0 ? -1 : 0;
+      slope[e] = dy != 0 ? (b.x - a.x) / dy : 0.0;
+    }
+    const double inv_sx = 1.0 / map.sx;
+    // Column 0 has its own tie rule, so it is tested alone; the span search runs over
+    // columns >= 1, where all sample points share one rule and the owned set is an interval.
+    const bool has_column0 = map.first_column(xmin) == 0;
+    const int i_min = std::max(1, map.first_column(xmin)), i_max = map.last_column(xmax);
+    for (int j = j0; j <= j1; ++j) {
+      std::uint32_t* row = owner.data() + std::size_t(j) * width;
+      if (has_column0 && inside(0, j)) row[0] = t;
+      if (i_min > i_max) continue;
+      // The row's span from the edge lines in floating point. The estimate is within 1e-9
+      // pixel of the true ends, so only an end that close to a sample point (a sample point
+      // on an edge or at a vertex) needs an exact test, of that one pixel.
+      const double y = map.sample(0, j).y;
+      const bool* incl = inclusive[j == 0 ? 2 : 0];
+      double lo = xmin, hi = xmax;
+      bool empty = false;
+      for (int e = 0; e < 3; ++e) {
+        const Point& a = *corner[e];
+        if (kind[e] > 0) {
+          hi = std::min(hi, a.x + (y - a.y) * slope[e]);
+        } else if (kind[e] < 0) {
+          lo = std::max(lo, a.x + (y - a.y) * slope[e]);
+        } else {
+          const Point& b = *corner[(e + 1) % 3];
+          const double f = (b.x - a.x) * (y - a.y);  // exact sign: the row against a horizontal edge
+          if (f < 0 || (f == 0 && !incl[e])) empty = true;
+        }
+      }
+      if (empty) continue;
+      constexpr double near = 1e-7;
+      const double l = lo * inv_sx, h = hi * inv_sx;
+      const double cl = std::ceil(l), fh = std::floor(h);
+      if (cl > fh + 2) continue;  // no candidate pixel (lo and hi lie within the bounding box)
+      int il = int(std::clamp(cl, double(i_min), double(i_max + 1)));
+      int ih = int(std::clamp(fh, double(i_min - 1), double(i_max)));
+      if (cl - l < near && il == int(cl) && il <= i_max && !inside(il, j)) ++il;
+      else if (l - (cl - 1) < near && il - 1 == int(cl - 1) && il - 1 >= i_min && inside(il - 1, j)) --il;
+      if (h - fh < near && ih == int(fh) && ih >= i_min && !inside(ih, j)) --ih;
+      else if (fh + 1 - h < near && ih + 1 == int(fh + 1) && ih + 1 <= i_max && inside(ih + 1, j)) ++ih;
+      if (il > ih) continue;
+      std::fill(row + il, row + ih + 1, t);
+    }
+  }
+  return owner;
+}
+
+namespace {
+
+// Twice the area of a mesh's triangles, summed. Exact for coordinates on a fine enough
+// binary grid (pixel positions, halves, ...); elsewhere it may differ by rounding, which only
+// sends render_natural down its general path.
+double doubled_area(const Mesh& mesh) {
+  double sum = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) sum += mesh.doubled_area(t);
+  return sum;
+}
+
+}  // namespace
+
+void render_natural(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
+  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+  SibsonCoordinates sibson(mesh.points);
+  const std::vector<std::uint32_t> cell = owning_triangles(sibson.delaunay(), sibson.delaunay_topology(), map);
+  // The mesh's domain is the vertices' hull when both have the same area (the triangles of a
+  // valid mesh do not overlap); otherwise the mesh's own coverage decides the domain.
+  std::vector<std::uint32_t> domain;
+  if (doubled_area(mesh) != doubled_area(sibson.delaunay()))
+    domain = owning_triangles(mesh, build_topology(mesh), map);
+  const int nc = mesh.value_count;
+  std::vector<NeighbourWeight> weights;
+  for (int j = 0; j < out.height; ++j)
+    for (int i = 0; i < out.width; ++i) {
+      const std::size_t k = std::size_t(j) * out.width + i;
+      if (domain.empty() ? cell[k] == no_neighbour : domain[k] == no_neighbour) continue;
+      const Point p = map.sample(i, j);
+      // The mesh domain lies inside the vertices' hull, so cell[k] is set for its pixels.
+      const bool ok = cell[k] != no_neighbour ? sibson.compute_in(p, cell[k], weights) : sibson.compute(p, weights);
+      if (!ok) continue;
+      for (int c = 0; c < nc; ++c) {
+        double sum = 0;
+        for (const NeighbourWeight& nw : weights) sum += nw.weight * mesh.value(nw.vertex, c);
+        out.at(i, j, c) = sum;
+      }
+    }
+}
+
+}  // namespace tristream

@@ -1,0 +1,91 @@
+#pragma once
+// Natural-neighbour (Sibson) interpolation (thesis §3.6, §4.4; NOTES.md §3.6).
+//
+// The weights come from the Delaunay triangulation of the mesh's vertices (the file's own
+// triangles only decide which pixels are in the domain): the natural neighbours of a point p
+// are the vertices of its Bowyer-Watson cavity (the triangles whose circumcircle strictly
+// contains p), and the weight of neighbour v is the area that p's Voronoi cell would steal
+// from v's cell, over the area of p's cell. The stolen piece of v's cell is the polygon
+// [g(u, v), c(T1), ..., c(Tm), g(v, w)]: c(T) the circumcentres of the cavity triangles
+// around v, g the circumcentres of p with the cavity boundary edges (u, v) and (v, w).
+// Nothing is rebuilt per pixel: the renderer rasterizes the Delaunay triangles, so each
+// pixel starts from the triangle that contains it, and the cavity is grown with incircle
+// tests that are exact (a floating-point filter with precomputed per-triangle terms, then
+// geometry/predicates.h when the filter cannot decide).
+//
+// Exact for every point of the closed convex hull: a point on a vertex gets that vertex
+// alone; a point on a hull edge gets the linear interpolation of the edge's two ends (the
+// limit of Sibson's coordinates there, where p's cell becomes unbounded).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "model/topology.h"
+#include "reference/coverage.h"
+#include "reference/render.h"
+
+namespace tristream {
+
+struct NeighbourWeight {
+  std::uint32_t vertex = 0;
+  double weight = 0;
+};
+
+class SibsonCoordinates {
+ public:
+  // Builds the Delaunay triangulation of `points` (distinct; at least three not collinear,
+  // otherwise every query returns false).
+  explicit SibsonCoordinates(std::span<const Point> points);
+
+  // Sibson coordinates of p: non-negative weights summing to 1, one per natural neighbour,
+  // into `out` (cleared first). Returns false, with `out` empty, when p is outside the
+  // convex hull. Point location walks from where the last query ended.
+  bool compute(const Point& p, std::vector<NeighbourWeight>& out);
+  // The same when triangle t of delaunay() is known to contain p (closed); no walk.
+  bool compute_in(const Point& p, std::uint32_t t, std::vector<NeighbourWeight>& out);
+
+  // The Delaunay triangulation used (points as given, triangles with orient2d > 0).
+  const Mesh& delaunay() const { return mesh_; }
+  const Topology& delaunay_topology() const { return topo_; }
+
+ private:
+  // A triangle whose closed interior contains p, or no_neighbour when p is outside the hull.
+  std::uint32_t locate(const Point& p);
+  // incircle(triangle t, p) > 0, decided exactly.
+  bool in_circle(std::uint32_t t, const Point& p) const;
+
+  // The lifted incircle determinant of triangle (a, b, c) expanded along p's row, relative
+  // to a: F(p) = alpha dx + beta dy + gamma (dx^2 + dy^2), dx = p.x - a.x, dy = p.y - a.y,
+  // positive iff p is strictly inside; *_abs are the matching permanents for the error bound.
+  struct CircleTest {
+    double ax, ay, alpha, beta, gamma, alpha_abs, beta_abs, gamma_abs;
+  };
+
+  Mesh mesh_;  // the Delaunay triangulation (points and triangles only)
+  Topology topo_;
+  std::vector<Point> centre_;  // circumcentre of each triangle
+  std::vector<CircleTest> circle_;
+  std::uint32_t hint_ = 0;
+  // Scratch of compute_in().
+  struct PolygonEnds {
+    Point first, last;  // g of the boundary edges into and out of a cavity boundary vertex
+  };
+  std::vector<std::uint32_t> stamp_;  // per triangle: query number when tested
+  std::vector<std::uint8_t> in_cavity_;
+  std::uint32_t query_ = 0;
+  std::vector<std::uint32_t> stack_, cavity_;
+  std::vector<std::uint32_t> vertex_stamp_, vertex_slot_;  // per vertex: query, index in out
+  std::vector<PolygonEnds> polygon_;
+};
+
+// For every output pixel, the triangle of `mesh` that owns its sample point under the rule of
+// reference/coverage.h (for_each_owned_pixel), or no_neighbour outside the domain; row-major.
+// Per triangle and row it finds the span with a few exact orient2d tests at its ends instead
+// of one test per pixel of the bounding box.
+std::vector<std::uint32_t> owning_triangles(const Mesh& mesh, const Topology& topo, const PixelMapping& map);
+
+// ChannelRenderer: every mesh-domain pixel (the domain lies inside the vertices' hull).
+void render_natural(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options,
+                    Field& out);
+
+}  // namespace tristream

@@ -1,0 +1,391 @@
+#include "reference/methods/voronoi.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "geometry/delaunay.h"
+#include "geometry/predicates.h"
+#include "reference/coverage.h"
+#include "reference/gradients.h"
+#include "reference/methods/natural.h"
+#include "reference/methods/zienkiewicz.h"
+
+namespace tristream {
+namespace {
+
+Point circumcentre(const Point& a, const Point& b, const Point& c) {
+  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+  const double r = 0.5 / (bx * cy - by * cx);
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  return {a.x + (cy * b2 - by * c2) * r, a.y + (bx * c2 - cx * b2) * r};
+}
+
+double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
+
+// Mesh triangles by a uniform grid of buckets, to find a triangle containing a point.
+class TriangleGrid {
+ public:
+  TriangleGrid(const Mesh& mesh, double width, double height) : mesh_(mesh) {
+    const double n = std::max<double>(1, mesh.triangles.size());
+    cell_ = std::max(1.0, 2 * std::sqrt(std::max(1.0, width * height) / n));
+    nx_ = std::max(1, int(std::ceil(width / cell_)) + 1);
+    ny_ = std::max(1, int(std::ceil(height / cell_)) + 1);
+    start_.assign(std::size_t(nx_) * ny_ + 1, 0);
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+      for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+        int x0, x1, y0, y1;
+        range(t, x0, x1, y0, y1);
+        for (int y = y0; y <= y1; ++y)
+          for (int x = x0; x <= x1; ++x) {
+            const std::size_t c = std::size_t(y) * nx_ + x;
+            if (pass == 0) ++start_[c + 1];
+            else items_[fill[c]++] = t;
+          }
+      }
+      if (pass == 0) {
+        for (std::size_t c = 0; c + 1 < start_.size(); ++c) start_[c + 1] += start_[c];
+        items_.resize(start_.back());
+      }
+    }
+  }
+
+  // A triangle whose closed interior contains p, or no_neighbour.
+  std::uint32_t find(const Point& p) const {
+    const int x = std::clamp(int(std::floor(p.x / cell_)), 0, nx_ - 1);
+    const int y = std::clamp(int(std::floor(p.y / cell_)), 0, ny_ - 1);
+    const std::size_t c = std::size_t(y) * nx_ + x;
+    for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+      const auto& v = mesh_.triangles[items_[k]].v;
+      if (orient2d(mesh_.points[v[0]], mesh_.points[v[1]], p) >= 0 &&
+          orient2d(mesh_.points[v[1]], mesh_.points[v[2]], p) >= 0 &&
+          orient2d(mesh_.points[v[2]], mesh_.points[v[0]], p) >= 0)
+        return items_[k];
+    }
+    return no_neighbour;
+  }
+
+ private:
+  void range(std::uint32_t t, int& x0, int& x1, int& y0, int& y1) const {
+    const auto& v = mesh_.triangles[t].v;
+    const Point &a = mesh_.points[v[0]], &b = mesh_.points[v[1]], &c = mesh_.points[v[2]];
+    auto cx = [&](double x) { return std::clamp(int(std::floor(x / cell_)), 0, nx_ - 1); };
+    auto cy = [&](double y) { return std::clamp(int(std::floor(y / cell_)), 0, ny_ - 1); };
+    x0 = cx(std::min({a.x, b.x, c.x}));
+    x1 = cx(std::max({a.x, b.x, c.x}));
+    y0 = cy(std::min({a.y, b.y, c.y}));
+    y1 = cy(std::max({a.y, b.y, c.y}));
+  }
+
+  const Mesh& mesh_;
+  double cell_ = 1;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::uint32_t> start_, items_;
+};
+
+// Barycentric coordinates of p in triangle t of mesh (orient2d > 0 winding).
+std::array<double, 3> barycentric(const Mesh& mesh, std::uint32_t t, const Point& p) {
+  const auto& v = mesh.triangles[t].v;
+  const Point &p0 = mesh.points[v[0]], &p1 = mesh.points[v[1]], &p2 = mesh.points[v[2]];
+  const double area = cross(p1.x - p0.x, p1.y - p0.y, p2.x - p0.x, p2.y - p0.y);
+  const double l0 = cross(p1.x - p.x, p1.y - p.y, p2.x - p.x, p2.y - p.y) / area;
+  const double l1 = cross(p2.x - p.x, p2.y - p.y, p0.x - p.x, p0.y - p.y) / area;
+  return {l0, l1, 1.0 - l0 - l1};
+}
+
+}  // namespace
+
+VoronoiDiagram::VoronoiDiagram(std::span<const Point> points) : sites_(points.size()) {
+  mesh_.points.assign(points.begin(), points.end());
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  if (!points.empty()) {
+    x0 = x1 = points[0].x;
+    y0 = y1 = points[0].y;
+    for (const Point& p : points) {
+      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+      y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    }
+  }
+  const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+  const double s = 20 * std::max({x1 - x0, y1 - y0, 1.0});
+  mesh_.points.push_back({cx, cy - s});
+  mesh_.points.push_back({cx - s, cy + s});
+  mesh_.points.push_back({cx + s, cy + s});
+  mesh_.triangles = delaunay_triangulation(mesh_.points);
+  topo_ = build_topology(mesh_);
+
+  std::vector<Point> centre(mesh_.triangles.size());
+  for (std::size_t t = 0; t < centre.size(); ++t) {
+    const auto& v = mesh_.triangles[t].v;
+    centre[t] = circumcentre(mesh_.points[v[0]], mesh_.points[v[1]], mesh_.points[v[2]]);
+  }
+  auto index_of = [&](std::uint32_t t, std::uint32_t v) {
+    const auto& tv = mesh_.triangles[t].v;
+    return tv[0] == v ? 0 : tv[1] == v ? 1 : 2;
+  };
+
+  cell_start_.assign(1, 0);
+  neighbour_start_.assign(1, 0);
+  std::vector<std::uint32_t> ring;
+  for (std::uint32_t v = 0; v < sites_; ++v) {
+    ring.clear();
+    if (topo_.vertex_start[v] < topo_.vertex_start[v + 1]) {
+      // Around v: crossing edge v -> next of each triangle; v is inside the far triangle, so
+      // the ring closes.
+      const std::uint32_t first = topo_.vertex_triangles[topo_.vertex_start[v]];
+      std::uint32_t t = first;
+      do {
+        ring.push_back(t);
+        t = topo_.neighbour[3 * t + index_of(t, v)];
+      } while (t != first && t != no_neighbour && ring.size() <= mesh_.triangles.size());
+    }
+    const std::size_t m = ring.size();
+    const std::size_t cell_begin = cell_points_.size();
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::uint32_t prev = ring[(i + m - 1) % m], t = ring[i];
+      // prev and t share edge v -> x; they have one circumcentre iff t's third vertex lies on
+      // prev's circumcircle.
+      const int k = index_of(prev, v);
+      const std::uint32_t x = mesh_.triangles[prev].v[(k + 1) % 3];
+      std::uint32_t opposite = 0;
+      for (std::uint32_t w : mesh_.triangles[t].v)
+        if (w != v && w != x) opposite = w;
+      const auto& pv = mesh_.triangles[prev].v;
+      if (m > 1 && incircle(mesh_.points[pv[0]], mesh_.points[pv[1]], mesh_.points[pv[2]], mesh_.points[opposite]) == 0)
+        continue;
+      cell_points_.push_back(centre[t]);
+      cell_tris_.push_back(t);
+    }
+    if (cell_points_.size() == cell_begin && m > 0) {  // all cocircular: cannot happen for distinct sites
+      cell_points_.push_back(centre[ring[0]]);
+      cell_tris_.push_back(ring[0]);
+    }
+    cell_start_.push_back(std::uint32_t(cell_points_.size()));
+    for (const std::uint32_t t : ring) {
+      const std::uint32_t x = mesh_.triangles[t].v[(index_of(t, v) + 1) % 3];
+      if (x < sites_) neighbours_.push_back(x);
+    }
+    neighbour_start_.push_back(std::uint32_t(neighbours_.size()));
+  }
+}
+
+std::span<const Point> VoronoiDiagram::cell(std::uint32_t v) const {
+  return {cell_points_.data() + cell_start_[v], cell_points_.data() + cell_start_[v + 1]};
+}
+
+std::span<const std::uint32_t> VoronoiDiagram::cell_triangles(std::uint32_t v) const {
+  return {cell_tris_.data() + cell_start_[v], cell_tris_.data() + cell_start_[v + 1]};
+}
+
+std::uint32_t VoronoiDiagram::nearest_site(const Point& p, std::uint32_t start) const {
+  auto d2 = [&](std::uint32_t v) {
+    const double dx = mesh_.points[v].x - p.x, dy = mesh_.points[v].y - p.y;
+    return dx * dx + dy * dy;
+  };
+  std::uint32_t v = start;
+  double best = d2(v);
+  for (std::size_t steps = 0; steps <= sites_; ++steps) {
+    std::uint32_t next = v;
+    for (std::uint32_t k = neighbour_start_[v]; k < neighbour_start_[v + 1]; ++k) {
+      const double d = d2(neighbours_[k]);
+      if (d < best) best = d, next = neighbours_[k];
+    }
+    if (next == v) break;
+    v = next;
+  }
+  return v;
+}
+
+void meyer_coordinates(std::span<const Point> polygon, const Point& p, std::vector<double>& w) {
+  const std::size_t n = polygon.size();
+  w.assign(n, 0.0);
+  if (n == 0) return;
+  if (n < 3) {
+    w[0] = 1;
+    return;
+  }
+  // Eq. 3.12 equals Wachspress's coordinates on a convex polygon: with A_k the doubled area
+  // of (p, Q_k, Q_k+1) and C_j that of (Q_j-1, Q_j, Q_j+1),
+  //   (cot gamma_j + cot delta_j) / |p - Q_j|^2 = C_j / (A_j-1 A_j).
+  // Multiplied through by the product of all A_k, w_j = C_j * prod_{k != j-1, j} A_k: the
+  // same weights after normalisation, but stable next to an edge, where the cotangent form
+  // divides rounding noise by rounding noise. On edge k's line (A_k == 0) only Q_k and Q_k+1
+  // keep a weight, in proportion to the other end's distance: the thesis's fallback, linear
+  // interpolation along the edge.
+  thread_local std::vector<double> area;
+  area.resize(n);
+  double scale = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Point& a = polygon[k];
+    const Point& b = polygon[(k + 1) % n];
+    area[k] = cross(a.x - p.x, a.y - p.y, b.x - p.x, b.y - p.y);
+    scale = std::max(scale, std::abs(area[k]));
+  }
+  if (scale > 0)
+    for (double& a : area) a /= scale;  // keeps the products in range
+  double sum = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const Point& q0 = polygon[(j + n - 1) % n];
+    const Point& q1 = polygon[j];
+    const Point& q2 = polygon[(j + 1) % n];
+    double x = cross(q1.x - q0.x, q1.y - q0.y, q2.x - q1.x, q2.y - q1.y);
+    for (std::size_t k = 0; k < n; ++k)
+      if (k != j && k != (j + n - 1) % n) x *= area[k];
+    w[j] = x;
+    sum += x;
+  }
+  if (sum != 0 && std::isfinite(sum)) {
+    for (double& x : w) x /= sum;
+    return;
+  }
+  // Degenerate (p at a vertex of a polygon with a repeated vertex, or underflow): linear
+  // interpolation along the edge nearest to p's line.
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (std::abs(area[i]) < std::abs(area[k])) k = i;
+  const Point& a = polygon[k];
+  const Point& b = polygon[(k + 1) % n];
+  const double ex = b.x - a.x, ey = b.y - a.y, len2 = ex * ex + ey * ey;
+  const double t = len2 > 0 ? std::clamp(((p.x - a.x) * ex + (p.y - a.y) * ey) / len2, 0.0, 1.0) : 0.0;
+  std::fill(w.begin(), w.end(), 0.0);
+  w[k] += 1 - t;
+  w[(k + 1) % n] += t;
+}
+
+void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
+  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+  const Topology topo = build_topology(mesh);
+  const std::vector<std::uint32_t> domain = owning_triangles(mesh, topo, map);
+  const int nc = mesh.value_count;
+  const VoronoiDiagram voronoi(mesh.points);
+  const Mesh& dt = voronoi.delaunay();
+  const std::vector<std::uint32_t> located = owning_triangles(dt, voronoi.delaunay_topology(), map);
+
+  // Zienkiewicz values at the circumcentres inside the image rectangle and the mesh domain.
+  const double xmax = domain_width - 1, ymax = domain_height - 1;
+  std::vector<std::vector<Gradient>> gradients;
+  for (int c = 0; c < nc; ++c) gradients.push_back(vertex_gradients(mesh, topo, c));
+  const TriangleGrid grid(mesh, xmax, ymax);
+  std::vector<double> value(dt.triangles.size() * nc, std::numeric_limits<double>::quiet_NaN());
+  std::vector<std::uint8_t> has_value(dt.triangles.size(), 0);
+  for (std::uint32_t t = 0; t < dt.triangles.size(); ++t) {
+    const auto& dv = dt.triangles[t].v;
+    const Point q = circumcentre(dt.points[dv[0]], dt.points[dv[1]], dt.points[dv[2]]);
+    if (!(q.x >= 0 && q.x <= xmax && q.y >= 0 && q.y <= ymax)) continue;
+    const std::uint32_t m = grid.find(q);
+    if (m == no_neighbour) continue;
+    const auto& v = mesh.triangles[m].v;
+    const auto l = barycentric(mesh, m, q);
+    for (int c = 0; c < nc; ++c) {
+      const ZienkiewiczCoefficients k = zienkiewicz_coefficients(
+          mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.value(v[0], c), mesh.value(v[1], c),
+          mesh.value(v[2], c), gradients[c][v[0]], gradients[c][v[1]], gradients[c][v[2]]);
+      value[std::size_t(t) * nc + c] = zienkiewicz_value(k, l[0], l[1], l[2]);
+    }
+    has_value[t] = 1;
+  }
+
+  // Cells clipped to the rectangle; each vertex keeps the circumcentre whose value it takes.
+  struct Vertex {
+    Point q;
+    std::uint32_t source;  // Delaunay triangle
+  };
+  const std::size_t sites = voronoi.site_count();
+  std::vector<std::uint32_t> clipped_start(sites + 1, 0);
+  std::vector<Vertex> clipped;
+  std::vector<Point> clipped_points;
+  std::vector<Vertex> poly, next;
+  const Point corners[4] = {{0, 0}, {xmax, 0}, {xmax, ymax}, {0, ymax}};
+  for (std::uint32_t s = 0; s < sites; ++s) {
+    clipped_start[s] = std::uint32_t(clipped.size());
+    const auto cell = voronoi.cell(s);
+    const auto tris = voronoi.cell_triangles(s);
+    // A cell holding a corner of the rectangle is left to the bilinear pre-fill.
+    bool holds_corner = false;
+    for (const Point& k : corners) {
+      bool left = false, right = false;
+      for (std::size_t i = 0; i < cell.size(); ++i) {
+        const Point& a = cell[i];
+        const Point& b = cell[(i + 1) % cell.size()];
+        const double o = cross(b.x - a.x, b.y - a.y, k.x - a.x, k.y - a.y);
+        left = left || o > 0;
+        right = right || o < 0;
+      }
+      holds_corner = holds_corner || !(left && right);
+    }
+    if (holds_corner || cell.size() < 3) continue;
+    poly.clear();
+    for (std::size_t i = 0; i < cell.size(); ++i) poly.push_back({cell[i], tris[i]});
+    // Sutherland-Hodgman against x >= 0, x <= xmax, y >= 0, y <= ymax; a point made on edge
+    // S -> E takes the source of the endpoint inside the current half-plane.
+    for (int plane = 0; plane < 4 && !poly.empty(); ++plane) {
+      auto dist = [&](const Point& q) {  // >= 0 inside
+        switch (plane) {
+          case 0: return q.x;
+          case 1: return xmax - q.x;
+          case 2: return q.y;
+          default: return ymax - q.y;
+        }
+      };
+      next.clear();
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Vertex& a = poly[i];
+        const Vertex& b = poly[(i + 1) % poly.size()];
+        const double da = dist(a.q), db = dist(b.q);
+        if (da >= 0) next.push_back(a);
+        if ((da >= 0) != (db >= 0) && da != 0 && db != 0) {
+          const double t = da / (da - db);
+          Point q{a.q.x + t * (b.q.x - a.q.x), a.q.y + t * (b.q.y - a.q.y)};
+          if (plane == 0) q.x = 0;
+          if (plane == 1) q.x = xmax;
+          if (plane == 2) q.y = 0;
+          if (plane == 3) q.y = ymax;
+          next.push_back({q, da >= 0 ? a.source : b.source});
+        }
+      }
+      std::swap(poly, next);
+    }
+    bool valued = poly.size() >= 3;
+    for (const Vertex& x : poly) valued = valued && has_value[x.source];
+    if (valued) clipped.insert(clipped.end(), poly.begin(), poly.end());
+  }
+  clipped_start[sites] = std::uint32_t(clipped.size());
+
+  std::vector<double> w;
+  for (int j = 0; j < out.height; ++j)
+    for (int i = 0; i < out.width; ++i) {
+      const std::size_t k = std::size_t(j) * out.width + i;
+      if (domain[k] == no_neighbour) continue;
+      const Point p = map.sample(i, j);
+      std::uint32_t site = no_neighbour;
+      if (located[k] != no_neighbour) {
+        double best = std::numeric_limits<double>::infinity();
+        for (const std::uint32_t v : dt.triangles[located[k]].v) {
+          const double dx = dt.points[v].x - p.x, dy = dt.points[v].y - p.y;
+          if (v < sites && dx * dx + dy * dy < best) best = dx * dx + dy * dy, site = v;
+        }
+      }
+      if (site != no_neighbour) site = voronoi.nearest_site(p, site);
+      if (site != no_neighbour && clipped_start[site] < clipped_start[site + 1]) {
+        const std::uint32_t b = clipped_start[site], e = clipped_start[site + 1];
+        clipped_points.clear();
+        for (std::uint32_t x = b; x < e; ++x) clipped_points.push_back(clipped[x].q);
+        meyer_coordinates(clipped_points, p, w);
+        for (int c = 0; c < nc; ++c) {
+          double sum = 0;
+          for (std::uint32_t x = b; x < e; ++x) sum += w[x - b] * value[std::size_t(clipped[x].source) * nc + c];
+          out.at(i, j, c) = sum;
+        }
+        continue;
+      }
+      // Bilinear pre-fill.
+      const auto& v = mesh.triangles[domain[k]].v;
+      const auto l = barycentric(mesh, domain[k], p);
+      for (int c = 0; c < nc; ++c)
+        out.at(i, j, c) = l[0] * mesh.value(v[0], c) + l[1] * mesh.value(v[1], c) + l[2] * mesh.value(v[2], c);
+    }
+}
+
+}  // namespace tristream
