@@ -7,7 +7,7 @@ BUILD      ?= build
 JOBS       ?= $(shell nproc)
 FUZZ_TIME  ?= 60
 
-.PHONY: all deps build run test test-sanitize fuzz cross bench ci clean
+.PHONY: all deps build run test test-sanitize fuzz cross bench ci clean experiments experiments-quick
 
 all: build
 
@@ -40,3 +40,9 @@ fuzz:
 
 clean:
 	rm -rf build build-sanitize build-fuzz build-cross out
+
+experiments: build
+	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set full
+
+experiments-quick: build
+	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set quick

@@ -1,0 +1,569 @@
+"""The report: CSV files, charts, pictures and one self-contained index.html."""
+import base64
+import csv
+import html
+import io
+from collections import defaultdict
+from pathlib import Path
+
+import numpy as np
+
+import charts
+import findings
+import pictures
+import trifile
+from execute import Run, load_image
+from runner import atomic_write_text
+
+# Figure 6.22 of the thesis: seconds per 512x512 image, 1.86 GHz Core2Duo E6300, .NET.
+THESIS_TIMES = {
+    "bilinear": {2000: 0.0391, 4000: 0.0531, 5000: 0.0610, 7000: 0.0688, 10000: 0.0906, 12000: 0.0938,
+                 15000: 0.1313},
+    "zienkiewicz": {2000: 0.0656, 4000: 0.0813, 5000: 0.0891, 7000: 0.1141, 10000: 0.1344, 12000: 0.1594,
+                    15000: 0.1860},
+    "voronoi": {2000: 0.6095, 4000: 0.6531, 5000: 0.6502, 7000: 0.6656, 10000: 0.6830, 12000: 0.6938,
+                15000: 0.7127},
+    "natural": {2000: 3.0807, 4000: 3.2422, 5000: 3.3354, 7000: 3.4234, 10000: 3.5322, 12000: 3.5922,
+                15000: 3.6463},
+    "bezier": {2000: 4.8888, 4000: 9.5922, 5000: 12.091, 7000: 16.75, 10000: 24.070, 12000: 29.064,
+               15000: 37.597},
+    "coons": {2000: 17.2735, 4000: 33.8125, 5000: 43.4367, 7000: 56.6, 10000: 83.2392, 12000: 98.2891,
+              15000: 128.57},
+}
+
+FIELDS = ["study", "image", "group", "width", "height", "colour", "mode", "space", "cotri", "nominal_vertices",
+          "vertices", "triangles", "method", "variant", "engine", "status", "mse", "psnr", "ssim", "ssim_window",
+          "ssim_8x8", "ms", "cpu_s", "load1", "mae_high", "mae_low", "error"]
+TIME_FIELDS = ["image", "width", "height", "nominal_vertices", "vertices", "triangles", "method", "variant",
+               "engine", "rep", "status", "ms", "cpu_s", "load1", "error"]
+SEP_CO_COLOURS = {"separate": "#1f77b4", "co-triangulation": "#d62728"}
+MODE_COLOURS = {"separate-rgb": "#1f77b4", "separate-ycbcr": "#9ecae1", "co-rgb": "#d62728",
+                "co-ycbcr": "#fc9272", "co-rgb-thesis": "#7f0000"}
+
+
+def label(method, variant, engine):
+    return method + (f" ({variant})" if variant else "") + ("" if engine == "reference" else f" [{engine}]")
+
+
+def quality_rows(work, executor):
+    rows = []
+    for enc, runs in work.items():
+        e = executor.enc_results.get(enc, {})
+        for run in runs:
+            r = executor.run_results.get(run, {"status": "missing"})
+            a = r.get("analysis") or {}
+            rows.append({
+                "study": enc.study, "image": enc.image, "group": enc.group, "width": enc.source.width,
+                "height": enc.source.height, "colour": enc.label, "mode": enc.mode, "space": enc.space,
+                "cotri": enc.cotri if enc.mode == "co" else "", "nominal_vertices": enc.nominal,
+                "vertices": r.get("vertices", e.get("vertices")), "triangles": r.get("triangles", e.get("triangles")),
+                "method": run.method, "variant": run.variant, "engine": run.engine, "status": r.get("status"),
+                "mse": r.get("mse"), "psnr": r.get("psnr"), "ssim": r.get("ssim"),
+                "ssim_window": r.get("ssim_window"), "ssim_8x8": r.get("ssim_8x8"), "ms": r.get("ms"),
+                "cpu_s": r.get("cpu_s"), "load1": r.get("load1"), "mae_high": a.get("mae_high"),
+                "mae_low": a.get("mae_low"), "error": r.get("error", ""),
+                "_render": r.get("render"), "_tri": e.get("tri"), "_original": e.get("image_file"),
+            })
+    return rows
+
+
+def time_rows(timing, executor):
+    rows = []
+    for t in timing:
+        r = executor.time_results.get(t, {"status": "missing"})
+        rows.append({"image": t.enc.image, "width": t.enc.source.width, "height": t.enc.source.height,
+                     "nominal_vertices": t.enc.nominal, "vertices": r.get("vertices"),
+                     "triangles": r.get("triangles"), "method": t.method, "variant": t.variant,
+                     "engine": t.engine, "rep": t.rep, "status": r.get("status"), "ms": r.get("ms"),
+                     "cpu_s": r.get("cpu_s"), "load1": r.get("load1"), "error": r.get("error", "")})
+    return rows
+
+
+def write_csv(path: Path, rows, fields):
+    buf = io.StringIO()
+    w = csv.DictWriter(buf, fieldnames=fields, extrasaction="ignore", lineterminator="\n")
+    w.writeheader()
+    for r in rows:
+        w.writerow({k: ("" if r.get(k) is None else r.get(k)) for k in fields})
+    atomic_write_text(path, buf.getvalue())
+    return path
+
+
+def time_table(trows):
+    """{label: {nominal: (mean over images of the min wall s over repeats, same for CPU s, images)}}."""
+    best = defaultdict(lambda: defaultdict(list))
+    for r in trows:
+        if r["status"] != "ok":
+            continue
+        best[(label(r["method"], r["variant"], r["engine"]), r["nominal_vertices"], r["image"])]["ms"].append(r["ms"])
+        best[(label(r["method"], r["variant"], r["engine"]), r["nominal_vertices"], r["image"])]["cpu"].append(
+            r["cpu_s"])
+    per = defaultdict(lambda: defaultdict(list))
+    for (lab, n, image), v in best.items():
+        per[lab][n].append((min(v["ms"]) / 1000.0, min(v["cpu"])))
+    return {lab: {n: (float(np.mean([x[0] for x in vals])), float(np.mean([x[1] for x in vals])), len(vals))
+                  for n, vals in d.items()} for lab, d in per.items()}
+
+
+class Html:
+    def __init__(self):
+        self.parts = []
+
+    def add(self, s):
+        self.parts.append(s)
+
+    def h(self, level, text, anchor=None):
+        a = f' id="{anchor}"' if anchor else ""
+        self.add(f"<h{level}{a}>{html.escape(text)}</h{level}>")
+
+    def p(self, text, raw=False):
+        self.add(f"<p>{text if raw else html.escape(text)}</p>")
+
+    def img(self, path: Path, caption: str, width=None):
+        data = base64.b64encode(Path(path).read_bytes()).decode()
+        style = f' style="max-width:{width}px"' if width else ""
+        self.add(f'<figure><img src="data:image/png;base64,{data}" alt="{html.escape(caption)}"{style}>'
+                 f"<figcaption>{html.escape(caption)} <span class=file>({html.escape(Path(path).name)})</span>"
+                 f"</figcaption></figure>")
+
+    def table(self, header, rows, cls=""):
+        out = [f'<table class="{cls}"><thead><tr>' + "".join(f"<th>{html.escape(str(h))}</th>" for h in header)
+               + "</tr></thead><tbody>"]
+        for row in rows:
+            out.append("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>")
+        out.append("</tbody></table>")
+        self.add("".join(out))
+
+
+CSS = """
+body{font-family:system-ui,-apple-system,Segoe UI,Roboto,sans-serif;max-width:1200px;margin:2em auto;padding:0 1em;
+color:#222;line-height:1.45}
+h1{font-size:1.6em}h2{border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:2em}
+table{border-collapse:collapse;margin:1em 0;font-size:.85em}td,th{border:1px solid #ccc;padding:.25em .5em;
+text-align:right;vertical-align:top}th{background:#f3f3f3}td:first-child,th:first-child{text-align:left}
+table.findings td{text-align:left}table.findings td:nth-child(4){white-space:nowrap;font-weight:600}
+figure{margin:1em 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{font-size:.85em;color:#555}
+.file{color:#999}.agrees{color:#1a7f37}.disagrees{color:#c62828}.mixed{color:#b26a00}.mostly{color:#4d7f1a}
+code{background:#f4f4f4;padding:0 .2em}.note{background:#fff8e1;padding:.5em 1em;border-left:3px solid #f0b400}
+"""
+
+
+def fmt(v, digits=3):
+    if v is None or v == "":
+        return "–"
+    if isinstance(v, float) and not np.isfinite(v):
+        return "∞"
+    return f"{v:.{digits}f}"
+
+
+def mean_of(rows, metric):
+    vals = [float(r[metric]) for r in rows if r.get(metric) not in (None, "")]
+    return float(np.mean(vals)) if vals else None
+
+
+def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
+    out_dir = Path(out_dir)
+    chart_dir = out_dir / "charts"
+    pic_dir = out_dir / "pictures"
+    rows = quality_rows(work, executor)
+    trows = time_rows(timing, executor)
+    grey = [r for r in rows if r["study"] == "grey"]
+    colour = [r for r in rows if r["study"] in ("colour", "split")]
+    write_csv(out_dir / "results.csv", rows, FIELDS)
+    write_csv(out_dir / "greyscale.csv", grey, FIELDS)
+    write_csv(out_dir / "colour.csv", colour, FIELDS)
+    write_csv(out_dir / "time_runs.csv", trows, TIME_FIELDS)
+    ttable = time_table(trows)
+    trows_out = []
+    for lab, d in ttable.items():
+        base = lab.split(" ")[0]
+        for n, (wall, cpu, images) in sorted(d.items()):
+            th = THESIS_TIMES.get(base, {}).get(n) if "[" not in lab else None
+            trows_out.append({"method": lab, "nominal_vertices": n, "seconds": wall, "cpu_seconds": cpu,
+                              "images": images, "thesis_seconds": th, "thesis_over_here": th / wall if th else None})
+    write_csv(out_dir / "time.csv", trows_out, ["method", "nominal_vertices", "seconds", "cpu_seconds", "images",
+                                                 "thesis_seconds", "thesis_over_here"])
+
+    doc = Html()
+    doc.add(f"<!DOCTYPE html><html lang=en><head><meta charset=utf-8><title>tristream: chapter 6 reproduced "
+            f"({plan.name} set)</title><style>{CSS}</style></head><body>")
+    doc.h(1, f"tristream: the thesis's chapter 6 reproduced ({plan.name} set)")
+    doc.p(f"Run started {html.escape(ctx['started'])}; computing took {ctx['elapsed_s']:.0f} s"
+          f"{' (report written from the cache only)' if ctx['report_only'] else ''}. Machine: "
+          f"{html.escape(ctx['machine'])}. Load average (1 min) {ctx['load_start'][0]:.2f} at the start and "
+          f"{ctx['load_end'][0]:.2f} at the end (the machine is shared; wall-clock times include that load). "
+          f"Repository commit {html.escape(ctx['commit'])}; trisim sha256 {ctx['trisim_sha']}…, triencode sha256 "
+          f"{ctx['triencode_sha']}…. Command: <code>{html.escape(ctx['command'])}</code>; {ctx['jobs']} job(s).",
+          raw=True)
+    doc.add("<p>Contents: <a href=#conventions>conventions</a> · <a href=#findings>findings</a> · "
+            "<a href=#grey>greyscale</a> · <a href=#colour>colour</a> · <a href=#time>time</a> · "
+            "<a href=#pictures>pictures</a> · <a href=#notes>notes and failures</a> · <a href=#files>files</a></p>")
+
+    # ---- conventions
+    doc.h(2, "Conventions", "conventions")
+    missing_methods = [m for m in ("bilinear", "zienkiewicz", "bezier", "coons", "voronoi", "natural",
+                                   "clough-tocher") if m not in tools.methods]
+    conv = [
+        f"Methods run: {', '.join(tools.methods)} (from <code>trisim compare --help</code>)"
+        + (f"; not built, so absent: {', '.join(missing_methods)}" if missing_methods else "")
+        + ". Bezier and Coons run in their default (exact per-pixel) form; their <i>thesis</i> variant (step "
+          "sampling 0.006 / 0.007 with sum and count buffers) is run where stated.",
+        f"Engines: {', '.join(tools.engines)}"
+        + ("" if "core" in tools.engines else " (the fixed-point core engine is not offered by this trisim, so "
+                                              "core results are absent)") + ".",
+        "Triangulations: <code>triencode</code>'s greedy insertion (Garland-Heckbert, triangles ranked by total "
+        "squared error, candidates on a Gaussian-smoothed copy, sigma 1), vertex values = pixel values. Greyscale "
+        "experiments encode the BT.601 luma of colour images (computed as trisim's to_grey does) and compare "
+        "against that luma.",
+        "Vertex counts are the thesis's for a 512x512 image; other sizes get n = round(N x W x H / 512²) (768x512: "
+        "x1.5, 512x480: x0.9375). Tables and charts label rows by the thesis-scale N; the CSV files also give "
+        "the actual count.",
+        "Colour: a co-triangulation with T vertices (one triangulation, three values per vertex; <code>--cotri "
+        "greedy</code> unless marked thesis) against separate triangulations with T/3 vertices per channel, so the "
+        "totals are equal. Spaces RGB and YCbCr (JPEG BT.601, full range). Figure 6.13's Y/Cb/Cr allocations "
+        "are composed from two separate encodings (the Y layer of one, the Cb and Cr layers of the other).",
+        "Metrics: MSE and PSNR over all pixels and channels; SSIM as Wang et al. 2004 (11x11 Gaussian window, "
+        "sigma 1.5, K1 0.01, K2 0.03, population covariance, mean of the channels) unless labelled 8x8, the "
+        "thesis's box window, which every run also reports (column ssim_8x8).",
+        "Time: trisim's own render time (the <code>ms</code> field: rendering only, excluding reading and "
+        "metrics), wall clock, the minimum over repeats per image, then the mean over images; CPU seconds of the "
+        "whole trisim process are given beside it. The thesis timed 512x512 images on a 1.86 GHz Core2Duo E6300 "
+        "under .NET.",
+    ]
+    doc.add("<ul>" + "".join(f"<li>{c}</li>" for c in conv) + "</ul>")
+    for note in plan.notes:
+        doc.add(f'<p class=note>{html.escape(note)}</p>')
+
+    # ---- findings
+    fl = findings.grey_findings(grey) + findings.colour_findings(colour)
+    tfind_table = {lab: {n: v[0] for n, v in d.items()} for lab, d in ttable.items() if "[" not in lab}
+    fl += findings.time_findings(tfind_table, THESIS_TIMES)
+    doc.h(2, "Findings against the thesis", "findings")
+    doc.p("Each line quotes a conclusion of the thesis and sets the numbers measured here beside it; the verdict "
+          "is computed from the share of cases that agree (at least 75%: agrees; over 50%: mostly agrees; 25-50%: "
+          "mixed; under 25%: disagrees).")
+    doc.table(["topic", "thesis", "here", "verdict"],
+              [[html.escape(f["topic"]), html.escape(f["thesis"]), html.escape(f["here"]),
+                f'<span class="{f["verdict"].split()[0]}">{html.escape(f["verdict"])}</span>'] for f in fl],
+              cls="findings")
+
+    # ---- greyscale
+    doc.h(2, "Greyscale images (thesis 6.1.1)", "grey")
+    images = sorted({(r["image"], r["group"], r["width"], r["height"]) for r in grey})
+    doc.p(f"{len(images)} images: " + ", ".join(f"{i} ({g}, {w}x{h})" for i, g, w, h in images) + ". Counts: "
+          + ", ".join(f"{n:,}" for n in plan.grey_counts) + " (thesis scale).")
+    ok_grey = [r for r in grey if r["status"] == "ok"]
+    ref_grey = [r for r in ok_grey if r["engine"] == "reference"]
+    for n in plan.grey_counts:
+        sel = [r for r in ref_grey if r["nominal_vertices"] == n]
+        if not sel:
+            continue
+        per = defaultdict(lambda: defaultdict(list))
+        for r in sel:
+            for m in ("mse", "psnr", "ssim", "ssim_8x8"):
+                if r.get(m) is not None:
+                    per[label(r["method"], r["variant"], r["engine"])][m].append(float(r[m]))
+        per = {k: per[k] for k in order_labels(per)}
+        path = charts.method_bars(chart_dir / f"grey_bars_{n}.png",
+                                  f"Greyscale, {n:,} vertices (thesis scale): mean over {len({r['image'] for r in sel})} "
+                                  f"image(s), whiskers min..max", per)
+        doc.img(path, f"Like figures 6.1, 6.2, 6.4, 6.7, 6.8: MSE, PSNR and SSIM per method at {n:,} vertices.")
+    featured = [img for img, lab, n in plan.picture_cases if lab == "grey"]
+    for img in featured:
+        for n in plan.grey_counts[:1] + [c for c in plan.grey_counts if c == 5000]:
+            sel = [r for r in ref_grey if r["image"] == img and r["nominal_vertices"] == n]
+            if not sel:
+                continue
+            per = {label(r["method"], r["variant"], r["engine"]): {m: [float(r[m])] for m in ("mse", "psnr", "ssim")
+                                                                    if r.get(m) is not None} for r in sel}
+            per = {k: per[k] for k in order_labels(per)}
+            path = charts.method_bars(chart_dir / f"grey_bars_{img}_{n}.png",
+                                      f"{img}, {n:,} vertices (thesis scale; {sel[0]['vertices']} here)", per,
+                                      spread=False)
+            doc.img(path, f"{img} at {n:,} vertices.")
+    series = defaultdict(lambda: defaultdict(list))
+    by = defaultdict(lambda: defaultdict(list))
+    for r in ref_grey:
+        for m in ("psnr", "ssim", "ssim_8x8"):
+            if r.get(m) is not None:
+                by[(label(r["method"], r["variant"], r["engine"]), m)][r["nominal_vertices"]].append(float(r[m]))
+    for (lab, m), d in by.items():
+        series[lab][m] = [(n, float(np.mean(v))) for n, v in d.items()]
+    series = {k: series[k] for k in order_labels(series)}
+    if series:
+        path = charts.lines_vs_count(chart_dir / "grey_vs_vertices.png",
+                                     "Greyscale: mean over images against the vertex count", series,
+                                     metrics=("psnr", "ssim", "ssim_8x8"), hline=30)
+        doc.img(path, "Like figure 6.11: PSNR and SSIM against the vertex count (dotted: 30 dB).")
+    for img in [i for i in ("fruits",) if any(r["image"] == i for r in ref_grey)]:
+        s2 = defaultdict(dict)
+        for r in ref_grey:
+            if r["image"] == img:
+                for m in ("psnr", "ssim"):
+                    s2[label(r["method"], r["variant"], r["engine"])].setdefault(m, []).append(
+                        (r["nominal_vertices"], float(r[m])))
+        s2 = {k: s2[k] for k in order_labels(s2)}
+        path = charts.lines_vs_count(chart_dir / f"grey_vs_vertices_{img}.png", f"{img} (the thesis's figure 6.11 image)",
+                                     s2, hline=30)
+        doc.img(path, f"Figure 6.11's image: {img}.")
+    # Table of means.
+    labs = order_labels({label(r["method"], r["variant"], r["engine"]) for r in ok_grey})
+    trs = []
+    for lab in labs:
+        cells = [html.escape(lab)]
+        for n in plan.grey_counts:
+            sel = [r for r in ok_grey if label(r["method"], r["variant"], r["engine"]) == lab
+                   and r["nominal_vertices"] == n]
+            cells.append(f"{fmt(mean_of(sel, 'psnr'), 2)} / {fmt(mean_of(sel, 'ssim'))} / "
+                         f"{fmt(mean_of(sel, 'ssim_8x8'))}" if sel else "–")
+        trs.append(cells)
+    doc.p("Mean PSNR [dB] / SSIM (Gaussian) / SSIM (8x8) over the images, per vertex count:")
+    doc.table(["method"] + [f"{n:,}" for n in plan.grey_counts], trs)
+    engines_section(doc, ok_grey, plan, chart_dir)
+
+    # ---- colour
+    colour_section(doc, [r for r in colour if r["status"] == "ok"], plan, chart_dir)
+
+    # ---- time
+    time_section(doc, ttable, trows, plan, chart_dir)
+
+    # ---- pictures
+    pictures_section(doc, rows, plan, pic_dir)
+
+    # ---- notes
+    doc.h(2, "Notes, skipped combinations and failures", "notes")
+    bad = defaultdict(list)
+    for r in rows:
+        if r["status"] != "ok":
+            bad[(r["status"], label(r["method"], r["variant"], r["engine"]), r["error"])].append(
+                f"{r['image']} {r['colour']} {r['nominal_vertices']}")
+    for r in trows:
+        if r["status"] != "ok":
+            bad[(r["status"], label(r["method"], r["variant"], r["engine"]) + " (timing)", r["error"])].append(
+                f"{r['image']} {r['nominal_vertices']}")
+    if not bad:
+        doc.p("Every run succeeded.")
+    else:
+        doc.table(["status", "method", "message", "cases"],
+                  [[html.escape(s), html.escape(m), html.escape(e or ""),
+                    f"{len(c)}: " + html.escape(", ".join(c[:6]) + (" …" if len(c) > 6 else ""))]
+                   for (s, m, e), c in sorted(bad.items())])
+    if missing_methods:
+        doc.p("Methods not built by this trisim (so absent from every table): " + ", ".join(missing_methods) + ".")
+
+    doc.h(2, "Files", "files")
+    files = ["results.csv", "greyscale.csv", "colour.csv", "time.csv", "time_runs.csv"]
+    doc.add("<ul>" + "".join(f'<li><a href="{f}">{f}</a></li>' for f in files)
+            + "<li>charts/*.png, pictures/*.png: the figures above</li>"
+            "<li>cache/: triangulations and results, reused by the next run unless --force</li></ul>")
+    doc.add("</body></html>")
+    atomic_write_text(out_dir / "index.html", "\n".join(doc.parts))
+
+
+METHOD_ORDER = ["bilinear", "zienkiewicz", "bezier", "coons", "voronoi", "natural", "clough-tocher"]
+
+
+def order_labels(labels):
+    def key(lab):
+        base = lab.split(" ")[0]
+        return (METHOD_ORDER.index(base) if base in METHOD_ORDER else len(METHOD_ORDER), lab)
+    return sorted(labels, key=key)
+
+
+def engines_section(doc, ok_grey, plan, chart_dir):
+    engines = sorted({r["engine"] for r in ok_grey} - {"reference"})
+    doc.h(3, "Engines")
+    if not engines:
+        doc.p("Only the reference engine produced results; the fixed-point core engine is compared here once "
+              "trisim offers it (--engine core).")
+        return
+    ref = {(r["image"], r["nominal_vertices"], r["method"]): r for r in ok_grey
+           if r["engine"] == "reference" and not r["variant"]}
+    rows = []
+    series = defaultdict(lambda: defaultdict(list))
+    for eng in engines:
+        for r in ok_grey:
+            if r["engine"] != eng:
+                continue
+            base = ref.get((r["image"], r["nominal_vertices"], r["method"]))
+            if base is None or r.get("psnr") is None or base.get("psnr") is None:
+                continue
+            d = float(r["psnr"]) - float(base["psnr"])
+            series[f"{r['method']} [{eng}]"][r["nominal_vertices"]].append(d)
+            rows.append((eng, r["method"], r["nominal_vertices"], d, float(r["ssim"]) - float(base["ssim"])))
+    table = []
+    for lab, d in series.items():
+        for n, vals in sorted(d.items()):
+            table.append([html.escape(lab), f"{n:,}", f"{np.mean(vals):+.4f}", f"{np.min(vals):+.4f}",
+                          f"{np.max(vals):+.4f}", str(len(vals))])
+    doc.p("PSNR of each engine minus the reference engine's on the same triangulation (dB):")
+    doc.table(["method [engine]", "vertices", "mean", "min", "max", "images"], table)
+
+
+def colour_section(doc, ok, plan, chart_dir):
+    doc.h(2, "Colour images (thesis 6.1.2, 6.1.3)", "colour")
+    if not ok:
+        doc.p("No colour results.")
+        return
+    col = [r for r in ok if r["study"] == "colour" and r["engine"] == "reference" and not r["variant"]]
+    images = sorted({(r["image"], r["width"], r["height"]) for r in col})
+    doc.p(f"{len(images)} images: " + ", ".join(f"{i} ({w}x{h})" for i, w, h in images) + ". Totals (thesis scale): "
+          + ", ".join(f"{n:,}" for n in plan.colour_totals) + ".")
+    methods = order_labels({r["method"] for r in col})
+    # 6.12: separate RGB, per method, per total.
+    for mode_label in ("separate-rgb", "separate-ycbcr", "co-rgb", "co-ycbcr"):
+        vals = {}
+        for n in plan.colour_totals:
+            for m in methods:
+                sel = [r for r in col if r["colour"] == mode_label and r["nominal_vertices"] == n and r["method"] == m]
+                if sel:
+                    vals[(f"{n:,}", m)] = {"psnr": mean_of(sel, "psnr"), "ssim": mean_of(sel, "ssim")}
+        if vals:
+            path = charts.grouped_bars(chart_dir / f"colour_methods_{mode_label}.png",
+                                       f"{mode_label}: mean over images per total vertex count",
+                                       [f"{n:,}" for n in plan.colour_totals], methods, vals,
+                                       xlabel="total vertices (thesis scale)")
+            cap = "Like figure 6.12" if mode_label == "separate-rgb" else "As figure 6.12"
+            doc.img(path, f"{cap}: each method on {mode_label} triangulations.")
+    # 6.13: Y vs CbCr allocation.
+    split = [r for r in ok if r["study"] == "split" and r["engine"] == "reference" and not r["variant"]]
+    if split:
+        groups = []
+        for ny, nc in plan.splits:
+            g = f"Y{ny}/C{nc}"
+            groups.append(g)
+        vals = {}
+        for g in groups:
+            for m in methods:
+                sel = [r for r in split if r["method"] == m and r["colour"].endswith(" " + g)]
+                if sel:
+                    vals[(g, m)] = {"psnr": mean_of(sel, "psnr"), "ssim": mean_of(sel, "ssim")}
+        path = charts.grouped_bars(chart_dir / "colour_ycbcr_split.png",
+                                   "Separate YCbCr: vertices in Y against Cb and Cr (thesis scale; mean over images)",
+                                   groups, methods, vals)
+        doc.img(path, "Like figure 6.13: Y with 3,000 or 7,000 vertices, Cb and Cr with 1,000 or 20,000 each "
+                      "(scaled by area).")
+    # 6.14 and 6.17-6.20: modes against each other for bilinear and zienkiewicz.
+    modes = [m for m in ("separate-rgb", "separate-ycbcr", "co-rgb", "co-ycbcr", "co-rgb-thesis")
+             if any(r["colour"] == m for r in col)]
+    for m in [x for x in ("zienkiewicz", "bilinear") if x in methods]:
+        vals = {}
+        for n in plan.colour_totals:
+            for mode in modes:
+                sel = [r for r in col if r["colour"] == mode and r["nominal_vertices"] == n and r["method"] == m]
+                if sel:
+                    vals[(f"{n:,}", mode)] = {"psnr": mean_of(sel, "psnr"), "ssim": mean_of(sel, "ssim")}
+        path = charts.grouped_bars(chart_dir / f"colour_modes_{m}.png",
+                                   f"{m}: separate against co-triangulation, RGB against YCbCr (equal totals)",
+                                   [f"{n:,}" for n in plan.colour_totals], modes, vals, colours=MODE_COLOURS,
+                                   xlabel="total vertices (thesis scale)")
+        doc.img(path, f"Like figures 6.14 and 6.17-6.20, {m}: mean PSNR and SSIM over the images.")
+    # Per image like 6.17-6.20 (RGB), at the largest total with both.
+    for img, _, _ in images:
+        for space in ("rgb",):
+            totals = [n for n in plan.colour_totals
+                      if any(r["image"] == img and r["colour"] == f"separate-{space}" and r["nominal_vertices"] == n
+                             for r in col)
+                      and any(r["image"] == img and r["colour"] == f"co-{space}" and r["nominal_vertices"] == n
+                              for r in col)]
+            if not totals:
+                continue
+            n = totals[len(totals) // 2]
+            vals = {}
+            for m in methods:
+                for mode, name in ((f"separate-{space}", "separate"), (f"co-{space}", "co-triangulation")):
+                    sel = [r for r in col if r["image"] == img and r["colour"] == mode and r["nominal_vertices"] == n
+                           and r["method"] == m]
+                    if sel:
+                        vals[(m, name)] = {"psnr": mean_of(sel, "psnr"), "ssim": mean_of(sel, "ssim")}
+            path = charts.grouped_bars(chart_dir / f"colour_sep_co_{img}_{space}_{n}.png",
+                                       f"{img} ({space.upper()}): separate (3 x {n // 3:,}) against co-triangulation "
+                                       f"({n:,}), thesis scale", methods, ["separate", "co-triangulation"], vals,
+                                       colours=SEP_CO_COLOURS)
+            doc.img(path, f"Like figures 6.17-6.20: {img}, separate (blue) against co-triangulation (red).")
+    # Table.
+    trs = []
+    for mode in modes:
+        for m in [x for x in ("bilinear", "zienkiewicz", "natural") if x in methods]:
+            cells = [html.escape(mode), html.escape(m)]
+            for n in plan.colour_totals:
+                sel = [r for r in col if r["colour"] == mode and r["nominal_vertices"] == n and r["method"] == m]
+                cells.append(f"{fmt(mean_of(sel, 'psnr'), 2)} / {fmt(mean_of(sel, 'ssim'))}" if sel else "–")
+            trs.append(cells)
+    doc.p("Mean PSNR [dB] / SSIM (Gaussian) over the colour images, per total vertex count (thesis scale):")
+    doc.table(["triangulation", "method"] + [f"{n:,}" for n in plan.colour_totals], trs)
+
+
+def time_section(doc, ttable, trows, plan, chart_dir):
+    doc.h(2, "Time (thesis 6.2)", "time")
+    if not ttable:
+        doc.p("No timing results.")
+        return
+    images = sorted({(r["image"], r["width"], r["height"]) for r in trows if r["status"] == "ok"})
+    loads = [r["load1"] for r in trows if r.get("load1") is not None]
+    doc.p(f"Images: {', '.join(f'{i} ({w}x{h})' for i, w, h in images)}; {plan.time_repeats} repeat(s) per "
+          f"default method (1 for the thesis variants), minimum taken per image, mean over images. Load average "
+          f"during the timing runs: median {np.median(loads) if loads else float('nan'):.2f} on "
+          f"{__import__('os').cpu_count()} CPUs. Each cell: seconds here (wall) / thesis / thesis ÷ here.")
+    labs = order_labels(ttable)
+    counts = sorted({n for d in ttable.values() for n in d} | set(THESIS_TIMES["bilinear"]))
+    trs = []
+    for n in counts:
+        cells = [f"{n:,}"]
+        for lab in labs:
+            here = ttable[lab].get(n)
+            th = THESIS_TIMES.get(lab.split(" ")[0], {}).get(n) if "[" not in lab else None
+            parts = [fmt(here[0], 4) + " s" if here else "–", fmt(th, 4) + " s" if th else "–"]
+            parts.append(f"{th / here[0]:.1f}x" if (here and th) else "–")
+            cells.append("<br>".join(parts))
+        trs.append(cells)
+    doc.table(["vertices"] + labs, trs)
+    cpu_rows = []
+    for n in sorted({n for d in ttable.values() for n in d}):
+        cpu_rows.append([f"{n:,}"] + [fmt(ttable[lab][n][1], 3) if n in ttable[lab] else "–" for lab in labs])
+    doc.p("CPU seconds of the whole trisim process (reading, rendering and metrics), minimum over repeats, mean "
+          "over images:")
+    doc.table(["vertices"] + labs, cpu_rows)
+    ours = {lab: [(n, v[0]) for n, v in d.items()] for lab, d in ttable.items()}
+    thesis = {m: list(d.items()) for m, d in THESIS_TIMES.items()}
+    path = charts.time_chart(chart_dir / "time.png", "Seconds per 512x512 image: here (solid) and the thesis "
+                                                     "(dashed)", ours, thesis)
+    doc.img(path, "Like figure 6.22, as a chart (log scale).")
+
+
+def pictures_section(doc, rows, plan, pic_dir):
+    doc.h(2, "Pictures", "pictures")
+    doc.p("The triangulation over the image, the Voronoi diagram of its vertices (scipy.spatial.Voronoi), each "
+          "method's render (reference engine) and its absolute error (mean over channels; one colour scale, "
+          f"clipped at {pictures.ERROR_VMAX}). The detail is the window where triangle sizes vary most, where "
+          "the thesis saw patch artifacts.")
+    for img, lab, nominal in plan.picture_cases:
+        sel = [r for r in rows if r["image"] == img and r["colour"] == lab and r["nominal_vertices"] == nominal
+               and r["study"] in ("grey", "colour") and r["engine"] == "reference" and not r["variant"]
+               and r["status"] == "ok" and r.get("_render") and Path(r["_render"]).exists()]
+        if not sel:
+            doc.p(f"{img} {lab} {nominal:,}: no renders available.")
+            continue
+        tri = trifile.read_tri(sel[0]["_tri"])
+        original = load_image(sel[0]["_original"])
+        stem = f"{img}_{lab}_{nominal}"
+        h, w = original.shape[:2]
+        doc.h(3, f"{img}, {lab}, {nominal:,} vertices (thesis scale; {tri.vertex_count():,} here, {w}x{h})")
+        path = pictures.triangulation_figure(pic_dir / f"{stem}_triangulation.png", tri, original,
+                                             f"{img}: triangulation ({lab})")
+        doc.img(path, "The triangulation over the image" + (" (each layer in its own colour)"
+                                                             if len(tri.layers) > 1 else "") + ".")
+        path = pictures.voronoi_figure(pic_dir / f"{stem}_voronoi.png", tri, original, f"{img}: Voronoi diagram")
+        doc.img(path, "The Voronoi diagram of the vertices.")
+        renders = {}
+        for m in order_labels({r["method"] for r in sel}):
+            r = next(x for x in sel if x["method"] == m)
+            stats = f"PSNR {fmt(r['psnr'], 2)} dB, SSIM {fmt(r['ssim'])}"
+            renders[m] = (load_image(r["_render"]), stats)
+        path = pictures.renders_figure(pic_dir / f"{stem}_renders.png", original, renders,
+                                       f"{img} ({lab}, {tri.vertex_count():,} vertices): renders and absolute errors")
+        doc.img(path, "Each method's render and its absolute error.")
+        window = pictures.detail_window(tri, w, h, 96)
+        path = pictures.detail_figure(pic_dir / f"{stem}_detail.png", original, tri, renders, window,
+                                      f"{img}: detail at x={window[0]}, y={window[1]} ({window[2]}x{window[3]})")
+        doc.img(path, "Detail (zoomed): original, triangulation, each method, and the absolute errors.")
