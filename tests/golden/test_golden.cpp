@@ -11,6 +11,7 @@
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STBI_ONLY_PNG
+#define STBI_NO_THREAD_LOCALS  // bare-metal newlib (the qemu-arm run) has no thread pointer
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
