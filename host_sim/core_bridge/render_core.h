@@ -35,7 +35,8 @@ struct CoreFrame {
 // Buffers sized once for repeated renders of one blob (benchmarks).
 class CoreRenderer {
  public:
-  // Opens (validates) the blob and sizes tile buffer and workspace. Throws DataError
+  // Opens (validates) the blob, which must outlive the renderer (it is read in place), and
+  // sizes tile buffer and workspace. Throws DataError
   // ("<name>: byte N: <status>") for an invalid blob and UsageError for invalid options.
   CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions& options, std::string_view name = "blob");
   // Renders one frame into `frame` (resized on first use).

@@ -4,12 +4,16 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "common/errors.h"
 #include "common/tool_main.h"
+#include "core_bridge/pack.h"
+#include "core_bridge/render_core.h"
 #include "io/image_io.h"
 #include "io/tri_file.h"
 #include "metrics/metrics.h"
@@ -27,6 +31,9 @@ struct RenderRequest {
   int width = 0;
   int height = 0;
   int background = 0;
+  int tile = 32;       // --engine core: square tile side, 0 = full frame
+  std::string format;  // --engine core: pixel format ("" = l8 for grey, rgb888 for colour)
+  bool dither = false;
 };
 
 std::vector<std::string> method_names() {
@@ -40,9 +47,16 @@ void add_render_options(CLI::App* cmd, RenderRequest& req) {
   cmd->add_option("-m,--method", req.method, "Interpolation method")
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
-  cmd->add_option("-e,--engine", req.engine, "Renderer: the double-precision reference")
-      ->check(CLI::IsMember({"reference"}))
+  cmd->add_option("-e,--engine", req.engine,
+                  "Renderer: the double-precision reference, or the fixed-point core (bilinear, zienkiewicz)")
+      ->check(CLI::IsMember({"reference", "core"}))
       ->capture_default_str();
+  cmd->add_option("--tile", req.tile, "Core: square tile side in pixels, 0 = full frame")
+      ->check(CLI::Range(0, 2048))
+      ->capture_default_str();
+  cmd->add_option("--format", req.format, "Core: pixel format (default l8 for grey, rgb888 for colour)")
+      ->check(CLI::IsMember({"l8", "rgb888", "rgb565le", "rgb565be", "xrgb8888"}));
+  cmd->add_flag("--dither", req.dither, "Core: Bayer dithering of RGB565");
   cmd->add_option("--variant", req.variant, "Method variant (e.g. 'thesis' for the patch methods)");
   cmd->add_option("--width", req.width, "Output width (default: the triangulation's; mapped corner to corner)")
       ->check(CLI::Range(1, 65535));
@@ -57,7 +71,26 @@ struct Rendered {
   double ms = 0;
 };
 
+CoreOptions core_options(const Triangulation& tri, const RenderRequest& req) {
+  CoreOptions o;
+  o.width = req.width;
+  o.height = req.height;
+  o.tile_width = o.tile_height = req.tile;
+  o.format = parse_pixel_format(req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : req.format);
+  o.dither = req.dither;
+  o.background = static_cast<std::uint8_t>(req.background);
+  return o;
+}
+
 Rendered render(const Triangulation& tri, const RenderRequest& req) {
+  if (req.engine == "core") {
+    const auto t0 = std::chrono::steady_clock::now();
+    Image image = render_core(tri, req.method, core_options(tri, req));
+    if (tri.channels() == 1 && image.channels == 3) image = to_grey(image);
+    Rendered out{std::move(image), 0};
+    out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  }
   const MethodInfo* method = find_reference_method(req.method);
   if (!method) throw UsageError("unknown method '" + req.method + "'");
   RenderOptions options;
@@ -140,6 +173,16 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   compare_cmd->add_flag("--json", compare_json, "Print one JSON object per method, one per line");
 
+  RenderRequest bench_req;
+  bool bench_json = false;
+  int bench_runs = 0;
+  auto* bench_cmd = app.add_subcommand(
+      "bench", "Render repeatedly after a warm-up; print the median ms per frame and Mpixel/s");
+  add_render_options(bench_cmd, bench_req);
+  bench_cmd->add_option("--runs", bench_runs, "Timed renders (default: as many as fit in about 2 s, 5 to 200)")
+      ->check(CLI::Range(1, 100000));
+  bench_cmd->add_flag("--json", bench_json, "Print one JSON object");
+
   std::string metrics_a, metrics_b, metrics_window = "gaussian";
   bool metrics_json_out = false;
   auto* metrics_cmd = app.add_subcommand("metrics", "MSE, PSNR and SSIM of two images of equal size");
@@ -159,6 +202,60 @@ int main(int argc, char** argv) {
                    r.image.height, render_req.method.c_str(), render_req.engine.c_str(), r.ms);
       return exit_ok;
     }
+    if (*bench_cmd) {
+      const Triangulation tri = read_tri_file(bench_req.input);
+      std::function<int()> once;  // renders one frame, returns its pixel count
+      std::optional<CoreRenderer> core_renderer;
+      CoreFrame frame;
+      std::vector<std::uint8_t> blob;  // read in place by the core: outlives core_renderer
+      if (bench_req.engine == "core") {
+        blob = pack_blob(tri, parse_core_method(bench_req.method), bench_req.input);
+        core_renderer.emplace(blob, core_options(tri, bench_req), bench_req.input);
+        once = [&] {
+          core_renderer->render(frame);  // tiles delivered through the sink into a frame
+          return frame.width * frame.height;
+        };
+      } else {
+        once = [&] {
+          const Image image = render(tri, bench_req).image;
+          return image.width * image.height;
+        };
+      }
+      int pixels = once();  // warm-up
+      pixels = once();
+      std::vector<double> ms;
+      const auto start = std::chrono::steady_clock::now();
+      while (true) {
+        const auto t0 = std::chrono::steady_clock::now();
+        pixels = once();
+        const auto t1 = std::chrono::steady_clock::now();
+        ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+        const double elapsed = std::chrono::duration<double>(t1 - start).count();
+        if (bench_runs ? int(ms.size()) >= bench_runs : (ms.size() >= 200 || (ms.size() >= 5 && elapsed > 2.0))) break;
+      }
+      std::sort(ms.begin(), ms.end());
+      const double median = ms.size() % 2 ? ms[ms.size() / 2] : 0.5 * (ms[ms.size() / 2 - 1] + ms[ms.size() / 2]);
+      const double mpix = pixels / (median * 1e-3) * 1e-6;
+      if (bench_json) {
+        nlohmann::json j;
+        j["method"] = bench_req.method;
+        j["engine"] = bench_req.engine;
+        j["runs"] = ms.size();
+        j["pixels"] = pixels;
+        j["ms_median"] = median;
+        j["mpix_per_s"] = mpix;
+        if (core_renderer) {
+          j["tile"] = bench_req.tile;
+          j["format"] = bench_req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : bench_req.format;
+          j["ram_bytes"] = core_renderer->tile_buffer_bytes() + core_renderer->workspace_bytes();
+        }
+        std::printf("%s\n", j.dump().c_str());
+      } else {
+        std::printf("%s %s: median %.3f ms per frame over %zu runs, %.1f Mpixel/s\n", bench_req.method.c_str(),
+                    bench_req.engine.c_str(), median, ms.size(), mpix);
+      }
+      return exit_ok;
+    }
     if (*compare_cmd) {
       const Triangulation tri = read_tri_file(compare_req.input);
       if (compare_methods.empty()) compare_methods = {"bilinear"};
@@ -176,6 +273,17 @@ int main(int argc, char** argv) {
         const Rendered r = render(tri, req);
         if (original.pixels.empty()) original = load_original(compare_original, tri, r.image.width, r.image.height);
         const Metrics m = compare_images(r.image, original, so);
+        int max_diff_ref = -1;
+        double psnr_ref = 0;
+        if (req.engine == "core") {
+          RenderRequest ref = req;
+          ref.engine = "reference";
+          const Image reference = render(tri, ref).image;
+          max_diff_ref = 0;
+          for (std::size_t i = 0; i < reference.pixels.size(); ++i)
+            max_diff_ref = std::max(max_diff_ref, std::abs(int(reference.pixels[i]) - int(r.image.pixels[i])));
+          psnr_ref = psnr(r.image, reference);
+        }
         if (!compare_save.empty()) write_png(compare_save + "/" + method + ".png", r.image);
         if (compare_json) {
           nlohmann::json j = metrics_json(m, so);
@@ -187,10 +295,17 @@ int main(int argc, char** argv) {
           j["height"] = r.image.height;
           j["vertices"] = vertices;
           j["triangles"] = triangles;
+          if (max_diff_ref >= 0) {
+            j["max_abs_diff_vs_reference"] = max_diff_ref;
+            j["psnr_vs_reference"] = is_identical_psnr(psnr_ref) ? nlohmann::json(nullptr) : nlohmann::json(psnr_ref);
+          }
           std::printf("%s\n", j.dump().c_str());
         } else {
           std::printf("%-14s %-10s %10.4f %10.4f %9.6f %10.3f\n", method.c_str(), req.engine.c_str(), m.mse,
                       is_identical_psnr(m.psnr) ? INFINITY : m.psnr, m.ssim, r.ms);
+          if (max_diff_ref >= 0)
+            std::printf("%-14s %-10s max |core - reference| %d, PSNR vs reference %.2f dB\n", "", "", max_diff_ref,
+                        is_identical_psnr(psnr_ref) ? INFINITY : psnr_ref);
         }
         std::fflush(stdout);
       }
