@@ -220,3 +220,40 @@ TEST_CASE("natural: owning_triangles follows the coverage rule of for_each_owned
     }
   }
 }
+
+TEST_CASE("natural: the in-hull search equals the located one, hull boundary included") {
+  // Lattice sites with many collinear vertices on the hull's sides.
+  std::vector<Point> sites;
+  std::mt19937 rng(17);
+  for (int y = 0; y <= 30; y += 3)
+    for (int x = 0; x <= 40; x += 4)
+      if (x == 0 || y == 0 || x == 40 || y == 30 || rng() % 2) sites.push_back({double(x), double(y)});
+  SibsonCoordinates located(sites), walking(sites);
+  std::vector<NeighbourWeight> a, b;
+  for (int y = 0; y <= 30; ++y)
+    for (int x = 0; x <= 40; ++x) {
+      INFO("point " << x << ", " << y);
+      const Point p{double(x), double(y)};
+      REQUIRE(located.compute(p, a));
+      REQUIRE(walking.compute_in_hull(p, b));
+      std::map<std::uint32_t, double> ma, mb;
+      for (const auto& nw : a) ma[nw.vertex] += nw.weight;
+      for (const auto& nw : b) mb[nw.vertex] += nw.weight;
+      for (const auto& [v, w] : ma) CHECK(std::abs(w - mb[v]) < 1e-12);
+      for (const auto& [v, w] : mb) CHECK(std::abs(w - ma[v]) < 1e-12);
+    }
+}
+
+TEST_CASE("natural: a Delaunay mesh is used as is, with the same result as a rebuilt triangulation") {
+  const Mesh delaunay = tristream::testing::random_lattice_mesh(50, 40, 120, 31, 0, 1);
+  const Mesh flipped = tristream::testing::random_lattice_mesh(50, 40, 120, 31, 60, 1);
+  CHECK(is_locally_delaunay(delaunay, build_topology(delaunay)));
+  CHECK_FALSE(is_locally_delaunay(flipped, build_topology(flipped)));
+  CHECK(covers_rectangle(delaunay, 49, 39));
+  CHECK(covers_rectangle(flipped, 49, 39));
+  CHECK_FALSE(covers_rectangle(delaunay, 50, 39));
+  Field a(50, 40, 1), b(50, 40, 1);
+  render_natural(delaunay, 50, 40, {}, a);  // reuses the mesh's triangles
+  render_natural(flipped, 50, 40, {}, b);   // builds the Delaunay triangulation
+  for (std::size_t k = 0; k < a.v.size(); ++k) CHECK(std::abs(a.v[k] - b.v[k]) < 1e-9);
+}

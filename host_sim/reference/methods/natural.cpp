@@ -11,7 +11,7 @@ namespace tristream {
 namespace {
 
 // Circumcentre of (o, a, b) minus o. Finite whenever o, a, b are not collinear.
-Point circumcentre_from(const Point& o, const Point& a, const Point& b) {
+[[gnu::always_inline]] inline Point circumcentre_from(const Point& o, const Point& a, const Point& b) {
   const double ax = a.x - o.x, ay = a.y - o.y;
   const double bx = b.x - o.x, by = b.y - o.y;
   const double r = 0.5 / (ax * by - ay * bx);
@@ -30,6 +30,34 @@ SibsonCoordinates::SibsonCoordinates(std::span<const Point> points) {
   mesh_.points.assign(points.begin(), points.end());
   mesh_.triangles = delaunay_triangulation(points);
   topo_ = build_topology(mesh_);
+  prepare();
+}
+
+SibsonCoordinates::SibsonCoordinates(const Mesh& delaunay, const Topology& topo) {
+  mesh_.points = delaunay.points;
+  mesh_.triangles = delaunay.triangles;
+  topo_ = topo;
+  prepare();
+}
+
+bool is_locally_delaunay(const Mesh& mesh, const Topology& topo) {
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    if (topo.vertex_start[v] == topo.vertex_start[v + 1]) return false;  // in no triangle
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& v = mesh.triangles[t].v;
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t n = topo.neighbour[3 * t + e];
+      if (n == no_neighbour || n < t) continue;  // each interior edge once
+      std::uint32_t opposite = 0;
+      for (std::uint32_t w : mesh.triangles[n].v)
+        if (w != v[e] && w != v[(e + 1) % 3]) opposite = w;
+      if (incircle(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[opposite]) > 0) return false;
+    }
+  }
+  return true;
+}
+
+void SibsonCoordinates::prepare() {
   const std::size_t nt = mesh_.triangles.size();
   centre_.resize(nt);
   circle_.resize(nt);
@@ -51,8 +79,7 @@ SibsonCoordinates::SibsonCoordinates(std::span<const Point> points) {
                   std::abs(bx * lc) + std::abs(lb * cx),
                   std::abs(bx * cy) + std::abs(by * cx)};
   }
-  stamp_.assign(nt, 0);
-  in_cavity_.assign(nt, 0);
+  mark_.assign(nt, 0);
   vertex_stamp_.assign(mesh_.points.size(), 0);
   vertex_slot_.assign(mesh_.points.size(), 0);
 }
@@ -86,6 +113,20 @@ std::uint32_t SibsonCoordinates::locate(const Point& p) {
   return no_neighbour;
 }
 
+bool SibsonCoordinates::on_hull_edge(const Point& p, std::uint32_t a, std::uint32_t b,
+                                     std::vector<NeighbourWeight>& out) const {
+  // p on the line of hull edge a-b: when on the segment, linear along it (the limit of
+  // Sibson's coordinates there) and true; false beyond the segment.
+  const Point& pa = mesh_.points[a];
+  const Point& pb = mesh_.points[b];
+  const double s = std::abs(pb.x - pa.x) >= std::abs(pb.y - pa.y) ? (p.x - pa.x) / (pb.x - pa.x) : (p.y - pa.y) / (pb.y - pa.y);
+  if (!(s >= 0 && s <= 1)) return false;
+  out.clear();
+  out.push_back({a, 1.0 - s});
+  out.push_back({b, s});
+  return true;
+}
+
 bool SibsonCoordinates::compute(const Point& p, std::vector<NeighbourWeight>& out) {
   const std::uint32_t t = locate(p);
   if (t == no_neighbour) {
@@ -93,6 +134,14 @@ bool SibsonCoordinates::compute(const Point& p, std::vector<NeighbourWeight>& ou
     return false;
   }
   return compute_in(p, t, out);
+}
+
+bool SibsonCoordinates::compute_in_hull(const Point& p, std::vector<NeighbourWeight>& out) {
+  // The cavity only needs a start whose circle strictly contains p; for the next pixel the
+  // last start usually still does. (A vertex is strictly inside no Delaunay circle, so p is
+  // not a vertex on this path.)
+  if (hint_ < mesh_.triangles.size() && in_circle(hint_, p)) return cavity_coordinates(p, hint_, out);
+  return compute(p, out);
 }
 
 bool SibsonCoordinates::compute_in(const Point& p, std::uint32_t t0, std::vector<NeighbourWeight>& out) {
@@ -105,43 +154,36 @@ bool SibsonCoordinates::compute_in(const Point& p, std::uint32_t t0, std::vector
       return true;
     }
   }
-  for (int e = 0; e < 3; ++e) {
-    if (!topo_.is_boundary_edge(t0, e)) continue;
-    const Point& a = mesh_.points[tv[e]];
-    const Point& b = mesh_.points[tv[(e + 1) % 3]];
-    if (orient2d(a, b, p) != 0) continue;
-    // On a hull edge (p is in the closed triangle, so on the segment): linear along it.
-    const double s = std::abs(b.x - a.x) >= std::abs(b.y - a.y) ? (p.x - a.x) / (b.x - a.x) : (p.y - a.y) / (b.y - a.y);
-    out.push_back({tv[e], 1.0 - s});
-    out.push_back({tv[(e + 1) % 3], s});
-    return true;
-  }
+  // p lies in the closed t0 and on none of its vertices, so strictly inside its circle.
+  return cavity_coordinates(p, t0, out);
+}
 
-  // The cavity: triangles whose circumcircle strictly contains p, a connected set around t0
-  // (p lies in the closed t0 and on none of its vertices, so strictly inside its circle).
+bool SibsonCoordinates::cavity_coordinates(const Point& p, std::uint32_t t0, std::vector<NeighbourWeight>& out) {
+  out.clear();
+  // The cavity: triangles whose circumcircle strictly contains p, a connected set around t0.
   if (++query_ == 0) {
-    std::fill(stamp_.begin(), stamp_.end(), 0);
+    std::fill(mark_.begin(), mark_.end(), 0);
     std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), 0);
     query_ = 1;
   }
   cavity_.clear();
   stack_.assign(1, t0);
-  stamp_[t0] = query_;
-  in_cavity_[t0] = 1;
+  mark_[t0] = 2 * std::uint64_t(query_) + 1;
   while (!stack_.empty()) {
     const std::uint32_t t = stack_.back();
     stack_.pop_back();
     cavity_.push_back(t);
     for (int e = 0; e < 3; ++e) {
       const std::uint32_t n = topo_.neighbour[3 * t + e];
-      if (n != no_neighbour && stamp_[n] != query_) {
-        stamp_[n] = query_;
-        in_cavity_[n] = in_circle(n, p);
-        if (in_cavity_[n]) stack_.push_back(n);
+      if (n != no_neighbour && (mark_[n] >> 1) != query_) {
+        const bool in = in_circle(n, p);
+        mark_[n] = 2 * std::uint64_t(query_) + in;
+        if (in) stack_.push_back(n);
       }
     }
   }
-  auto inside = [&](std::uint32_t n) { return n != no_neighbour && stamp_[n] == query_ && in_cavity_[n]; };
+  const std::uint64_t in_mark = 2 * std::uint64_t(query_) + 1;
+  auto inside = [&](std::uint32_t n) { return n != no_neighbour && mark_[n] == in_mark; };
 
   // The stolen polygon of a cavity boundary vertex w, between boundary edges u -> w and
   // w -> x (cavity on their left), is [g(u, w), c(T1), ..., c(Tm), g(w, x)]: c(T) the
@@ -150,7 +192,7 @@ bool SibsonCoordinates::compute_in(const Point& p, std::uint32_t t0, std::vector
   // crossing cavity edge a -> b from T to the cavity triangle N adds c(T) x c(N) to a's
   // polygon; boundary edge a -> b of T adds c(T) x g to a's and g x c(T) to b's, and
   // closes a's polygon with g x (a's first point) and opens b's with g.
-  auto slot_of = [&](std::uint32_t v) {
+  auto slot_of = [&](std::uint32_t v) __attribute__((always_inline)) {
     if (vertex_stamp_[v] != query_) {
       vertex_stamp_[v] = query_;
       vertex_slot_[v] = std::uint32_t(out.size());
@@ -169,6 +211,12 @@ bool SibsonCoordinates::compute_in(const Point& p, std::uint32_t t0, std::vector
       if (inside(n)) {
         const Point cn = {centre_[n].x - p.x, centre_[n].y - p.y};
         out[slot_of(a)].weight += ct.x * cn.y - cn.x * ct.y;
+        continue;
+      }
+      if (n == no_neighbour && orient2d(mesh_.points[a], mesh_.points[b], p) == 0) {
+        // p is on the hull boundary. On this edge: linear along it. On the line but beyond
+        // the segment (collinear hull vertices): the edge holding p is a boundary edge too.
+        if (on_hull_edge(p, a, b, out)) return true;
         continue;
       }
       const Point g = circumcentre_from(p, mesh_.points[a], mesh_.points[b]);
@@ -239,6 +287,10 @@ std::vector<std::uint32_t> owning_triangles(const Mesh& mesh, const Topology& to
       slope[e] = dy != 0 ? (b.x - a.x) / dy : 0.0;
     }
     const double inv_sx = 1.0 / map.sx;
+    // The estimates below are within about 1e-12 (domain units) of the exact edge lines, far
+    // inside these margins (relative to the sample spacing).
+    constexpr double near = 1e-7;
+    const double near_x = near * map.sx;
     // Column 0 has its own tie rule, so it is tested alone; the span search runs over
     // columns >= 1, where all sample points share one rule and the owned set is an interval.
     const bool has_column0 = map.first_column(xmin) == 0;
@@ -253,13 +305,14 @@ std::vector<std::uint32_t> owning_triangles(const Mesh& mesh, const Topology& to
       const double y = map.sample(0, j).y;
       const bool* incl = inclusive[j == 0 ? 2 : 0];
       double lo = xmin, hi = xmax;
+      double bound[3] = {0, 0, 0};  // x of each sloped edge's line on this row
       bool empty = false;
       for (int e = 0; e < 3; ++e) {
         const Point& a = *corner[e];
-        if (kind[e] > 0) {
-          hi = std::min(hi, a.x + (y - a.y) * slope[e]);
-        } else if (kind[e] < 0) {
-          lo = std::max(lo, a.x + (y - a.y) * slope[e]);
+        if (kind[e] != 0) {
+          bound[e] = a.x + (y - a.y) * slope[e];
+          if (kind[e] > 0) hi = std::min(hi, bound[e]);
+          else lo = std::max(lo, bound[e]);
         } else {
           const Point& b = *corner[(e + 1) % 3];
           const double f = (b.x - a.x) * (y - a.y);  // exact sign: the row against a horizontal edge
@@ -267,16 +320,33 @@ std::vector<std::uint32_t> owning_triangles(const Mesh& mesh, const Topology& to
         }
       }
       if (empty) continue;
-      constexpr double near = 1e-7;
+      // Whether column i (>= 1) of this row is owned: edges whose line is clearly away from
+      // the sample point are decided by the estimate, the others by an exact orient2d.
+      auto owned = [&](int i) {
+        const Point p = map.sample(i, j);
+        for (int e = 0; e < 3; ++e) {
+          if (kind[e] == 0) continue;  // decided above for the whole row
+          const double d = kind[e] > 0 ? bound[e] - p.x : p.x - bound[e];  // >= 0: inside
+          if (d > near_x) continue;
+          if (d < -near_x) return false;
+          const double o = orient2d(*corner[e], *corner[(e + 1) % 3], p);
+          if (!(o > 0 || (o == 0 && incl[e]))) return false;
+        }
+        return true;
+      };
+      // lo and hi lie in the bounding box, so the columns fit an int; ceil and floor by
+      // truncation (std::ceil is a library call without SSE4.1).
       const double l = lo * inv_sx, h = hi * inv_sx;
-      const double cl = std::ceil(l), fh = std::floor(h);
-      if (cl > fh + 2) continue;  // no candidate pixel (lo and hi lie within the bounding box)
-      int il = int(std::clamp(cl, double(i_min), double(i_max + 1)));
-      int ih = int(std::clamp(fh, double(i_min - 1), double(i_max)));
-      if (cl - l < near && il == int(cl) && il <= i_max && !inside(il, j)) ++il;
-      else if (l - (cl - 1) < near && il - 1 == int(cl - 1) && il - 1 >= i_min && inside(il - 1, j)) --il;
-      if (h - fh < near && ih == int(fh) && ih >= i_min && !inside(ih, j)) --ih;
-      else if (fh + 1 - h < near && ih + 1 == int(fh + 1) && ih + 1 <= i_max && inside(ih + 1, j)) ++ih;
+      int cl = int(l), fh = int(h);
+      cl += cl < l;
+      fh -= fh > h;
+      if (cl > fh + 2) continue;  // no candidate pixel
+      int il = std::clamp(cl, i_min, i_max + 1);
+      int ih = std::clamp(fh, i_min - 1, i_max);
+      if (cl - l < near && il == cl && il <= i_max && !owned(il)) ++il;
+      else if (l - (cl - 1) < near && il - 1 == cl - 1 && il - 1 >= i_min && owned(il - 1)) --il;
+      if (h - fh < near && ih == fh && ih >= i_min && !owned(ih)) --ih;
+      else if (fh + 1 - h < near && ih + 1 == fh + 1 && ih + 1 <= i_max && owned(ih + 1)) ++ih;
       if (il > ih) continue;
       std::fill(row + il, row + ih + 1, t);
     }
@@ -287,8 +357,7 @@ std::vector<std::uint32_t> owning_triangles(const Mesh& mesh, const Topology& to
 namespace {
 
 // Twice the area of a mesh's triangles, summed. Exact for coordinates on a fine enough
-// binary grid (pixel positions, halves, ...); elsewhere it may differ by rounding, which only
-// sends render_natural down its general path.
+// binary grid (pixel positions, halves, ...).
 double doubled_area(const Mesh& mesh) {
   double sum = 0;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) sum += mesh.doubled_area(t);
@@ -297,24 +366,44 @@ double doubled_area(const Mesh& mesh) {
 
 }  // namespace
 
+bool covers_rectangle(const Mesh& mesh, double xmax, double ymax) {
+  int corners = 0;
+  for (const Point& p : mesh.points) {
+    if (p.x < 0 || p.x > xmax || p.y < 0 || p.y > ymax) return false;
+    corners += (p.x == 0 || p.x == xmax) && (p.y == 0 || p.y == ymax);
+  }
+  return corners == 4 && doubled_area(mesh) == 2 * xmax * ymax;
+}
+
 void render_natural(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
   const PixelMapping map(domain_width, domain_height, out.width, out.height);
-  SibsonCoordinates sibson(mesh.points);
-  const std::vector<std::uint32_t> cell = owning_triangles(sibson.delaunay(), sibson.delaunay_topology(), map);
-  // The mesh's domain is the vertices' hull when both have the same area (the triangles of a
-  // valid mesh do not overlap); otherwise the mesh's own coverage decides the domain.
+  const double xmax = domain_width - 1, ymax = domain_height - 1;
+  const Topology topo = build_topology(mesh);
+  const bool full = covers_rectangle(mesh, xmax, ymax);
+  // A mesh that covers the rectangle (its hull) and is locally Delaunay is a Delaunay
+  // triangulation of its vertices, and is used as is; otherwise one is built.
+  SibsonCoordinates sibson = full && is_locally_delaunay(mesh, topo) ? SibsonCoordinates(mesh, topo)
+                                                                     : SibsonCoordinates(mesh.points);
+  // Pixels of the domain: every sample point of the rectangle when the mesh covers it,
+  // otherwise those the mesh's own coverage rule assigns. Either way they lie in the hull.
   std::vector<std::uint32_t> domain;
-  if (doubled_area(mesh) != doubled_area(sibson.delaunay()))
-    domain = owning_triangles(mesh, build_topology(mesh), map);
+  if (!full) domain = owning_triangles(mesh, topo, map);
   const int nc = mesh.value_count;
   std::vector<NeighbourWeight> weights;
-  for (int j = 0; j < out.height; ++j)
+  std::uint32_t row_start = 0;  // where the next row's first search starts: this row's start
+  for (int j = 0; j < out.height; ++j) {
+    sibson.set_hint(row_start);
     for (int i = 0; i < out.width; ++i) {
+      if (i == 1) row_start = sibson.hint();
       const std::size_t k = std::size_t(j) * out.width + i;
-      if (domain.empty() ? cell[k] == no_neighbour : domain[k] == no_neighbour) continue;
       const Point p = map.sample(i, j);
-      // The mesh domain lies inside the vertices' hull, so cell[k] is set for its pixels.
-      const bool ok = cell[k] != no_neighbour ? sibson.compute_in(p, cell[k], weights) : sibson.compute(p, weights);
+      bool ok;
+      if (domain.empty()) {
+        const bool in_rectangle = p.x >= 0 && p.x <= xmax && p.y >= 0 && p.y <= ymax;
+        ok = in_rectangle ? sibson.compute_in_hull(p, weights) : sibson.compute(p, weights);
+      } else {
+        ok = domain[k] != no_neighbour && sibson.compute_in_hull(p, weights);
+      }
       if (!ok) continue;
       for (int c = 0; c < nc; ++c) {
         double sum = 0;
@@ -322,6 +411,7 @@ void render_natural(const Mesh& mesh, int domain_width, int domain_height, const
         out.at(i, j, c) = sum;
       }
     }
+  }
 }
 
 }  // namespace tristream

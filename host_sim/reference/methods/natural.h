@@ -1,17 +1,19 @@
 #pragma once
 // Natural-neighbour (Sibson) interpolation (thesis §3.6, §4.4; NOTES.md §3.6).
 //
-// The weights come from the Delaunay triangulation of the mesh's vertices (the file's own
-// triangles only decide which pixels are in the domain): the natural neighbours of a point p
-// are the vertices of its Bowyer-Watson cavity (the triangles whose circumcircle strictly
-// contains p), and the weight of neighbour v is the area that p's Voronoi cell would steal
-// from v's cell, over the area of p's cell. The stolen piece of v's cell is the polygon
-// [g(u, v), c(T1), ..., c(Tm), g(v, w)]: c(T) the circumcentres of the cavity triangles
-// around v, g the circumcentres of p with the cavity boundary edges (u, v) and (v, w).
-// Nothing is rebuilt per pixel: the renderer rasterizes the Delaunay triangles, so each
-// pixel starts from the triangle that contains it, and the cavity is grown with incircle
-// tests that are exact (a floating-point filter with precomputed per-triangle terms, then
-// geometry/predicates.h when the filter cannot decide).
+// The weights come from a Delaunay triangulation of the mesh's vertices (the file's own
+// triangles when they already are one, checked exactly; otherwise they only decide which
+// pixels are in the domain): the natural neighbours of a point p are the vertices of its
+// Bowyer-Watson cavity (the triangles whose circumcircle strictly contains p), and the weight
+// of neighbour v is the area that p's Voronoi cell would steal from v's cell, over the area
+// of p's cell. The stolen piece of v's cell is the polygon [g(u, v), c(T1), ..., c(Tm),
+// g(v, w)]: c(T) the circumcentres of the cavity triangles around v, g the circumcentres of
+// p with the cavity boundary edges (u, v) and (v, w).
+// Nothing is rebuilt per pixel: the renderer visits pixels in rows; the cavity search starts
+// from the previous pixel's start triangle while its circle still contains p (else a walk
+// from there locates p), and grows with incircle tests that are exact (a floating-point
+// filter with precomputed per-triangle terms, then geometry/predicates.h when it cannot
+// decide).
 //
 // Exact for every point of the closed convex hull: a point on a vertex gets that vertex
 // alone; a point on a hull edge gets the linear interpolation of the edge's two ends (the
@@ -36,6 +38,9 @@ class SibsonCoordinates {
   // Builds the Delaunay triangulation of `points` (distinct; at least three not collinear,
   // otherwise every query returns false).
   explicit SibsonCoordinates(std::span<const Point> points);
+  // Uses `delaunay`'s triangles as they are: the caller guarantees that they form a Delaunay
+  // triangulation of its points (for example: is_locally_delaunay() and a convex domain).
+  SibsonCoordinates(const Mesh& delaunay, const Topology& topo);
 
   // Sibson coordinates of p: non-negative weights summing to 1, one per natural neighbour,
   // into `out` (cleared first). Returns false, with `out` empty, when p is outside the
@@ -43,14 +48,25 @@ class SibsonCoordinates {
   bool compute(const Point& p, std::vector<NeighbourWeight>& out);
   // The same when triangle t of delaunay() is known to contain p (closed); no walk.
   bool compute_in(const Point& p, std::uint32_t t, std::vector<NeighbourWeight>& out);
+  // The same for a p known to lie in the closed hull: the cavity search starts from the last
+  // start when its circle still contains p, which skips point location.
+  bool compute_in_hull(const Point& p, std::vector<NeighbourWeight>& out);
+
+  // The triangle where the next compute() starts its walk (the last one located).
+  std::uint32_t hint() const { return hint_; }
+  void set_hint(std::uint32_t t) { hint_ = t; }
 
   // The Delaunay triangulation used (points as given, triangles with orient2d > 0).
   const Mesh& delaunay() const { return mesh_; }
   const Topology& delaunay_topology() const { return topo_; }
 
  private:
+  void prepare();  // circumcentres, incircle terms and scratch of the triangulation
   // A triangle whose closed interior contains p, or no_neighbour when p is outside the hull.
   std::uint32_t locate(const Point& p);
+  // The weights from the cavity grown from t0, whose circle strictly contains p.
+  bool cavity_coordinates(const Point& p, std::uint32_t t0, std::vector<NeighbourWeight>& out);
+  bool on_hull_edge(const Point& p, std::uint32_t a, std::uint32_t b, std::vector<NeighbourWeight>& out) const;
   // incircle(triangle t, p) > 0, decided exactly.
   bool in_circle(std::uint32_t t, const Point& p) const;
 
@@ -70,8 +86,7 @@ class SibsonCoordinates {
   struct PolygonEnds {
     Point first, last;  // g of the boundary edges into and out of a cavity boundary vertex
   };
-  std::vector<std::uint32_t> stamp_;  // per triangle: query number when tested
-  std::vector<std::uint8_t> in_cavity_;
+  std::vector<std::uint64_t> mark_;  // per triangle: 2 * query number + (in the cavity) when tested
   std::uint32_t query_ = 0;
   std::vector<std::uint32_t> stack_, cavity_;
   std::vector<std::uint32_t> vertex_stamp_, vertex_slot_;  // per vertex: query, index in out
@@ -83,6 +98,18 @@ class SibsonCoordinates {
 // Per triangle and row it finds the span with a few exact orient2d tests at its ends instead
 // of one test per pixel of the bounding box.
 std::vector<std::uint32_t> owning_triangles(const Mesh& mesh, const Topology& topo, const PixelMapping& map);
+
+// Whether every vertex is in a triangle and every interior edge is locally Delaunay (the
+// apex across it is not strictly inside the triangle's circumcircle; exact). With a convex
+// domain this makes the mesh a Delaunay triangulation of its vertices.
+bool is_locally_delaunay(const Mesh& mesh, const Topology& topo);
+
+// Whether the mesh's domain is the whole rectangle [0, xmax] x [0, ymax]: its four corners are
+// vertices, no vertex lies outside it (so it is the hull), and the triangles, which do not
+// overlap in a valid mesh, cover its area (the sum is exact for coordinates on a binary grid
+// such as pixel positions; for other coordinates, an area short of the rectangle's by less than
+// rounding would pass).
+bool covers_rectangle(const Mesh& mesh, double xmax, double ymax);
 
 // ChannelRenderer: every mesh-domain pixel (the domain lies inside the vertices' hull).
 void render_natural(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options,

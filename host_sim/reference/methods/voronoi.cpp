@@ -225,16 +225,30 @@ void meyer_coordinates(std::span<const Point> polygon, const Point& p, std::vect
   }
   if (scale > 0)
     for (double& a : area) a /= scale;  // keeps the products in range
+  // prefix[i] = A_0 ... A_i-1, suffix[i] = A_i ... A_n-1.
+  thread_local std::vector<double> prefix, suffix;
+  prefix.resize(n + 1);
+  suffix.resize(n + 1);
+  prefix[0] = 1;
+  suffix[n] = 1;
+  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] * area[k];
+  for (std::size_t k = n; k-- > 0;) suffix[k] = suffix[k + 1] * area[k];
   double sum = 0;
   for (std::size_t j = 0; j < n; ++j) {
     const Point& q0 = polygon[(j + n - 1) % n];
     const Point& q1 = polygon[j];
     const Point& q2 = polygon[(j + 1) % n];
-    double x = cross(q1.x - q0.x, q1.y - q0.y, q2.x - q1.x, q2.y - q1.y);
-    for (std::size_t k = 0; k < n; ++k)
-      if (k != j && k != (j + n - 1) % n) x *= area[k];
-    w[j] = x;
-    sum += x;
+    const double c = cross(q1.x - q0.x, q1.y - q0.y, q2.x - q1.x, q2.y - q1.y);
+    // Product of all A_k but A_j-1 and A_j.
+    double others;
+    if (j > 0) {
+      others = prefix[j - 1] * suffix[j + 1];
+    } else {
+      others = 1;
+      for (std::size_t k = 1; k + 1 < n; ++k) others *= area[k];
+    }
+    w[j] = c * others;
+    sum += w[j];
   }
   if (sum != 0 && std::isfinite(sum)) {
     for (double& x : w) x /= sum;
@@ -257,14 +271,16 @@ void meyer_coordinates(std::span<const Point> polygon, const Point& p, std::vect
 void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
   const PixelMapping map(domain_width, domain_height, out.width, out.height);
   const Topology topo = build_topology(mesh);
-  const std::vector<std::uint32_t> domain = owning_triangles(mesh, topo, map);
+  const double xmax = domain_width - 1, ymax = domain_height - 1;
+  // The domain's pixels: all of them when the mesh covers the rectangle, otherwise those the
+  // mesh's coverage rule assigns (with their triangle, for the bilinear pre-fill).
+  std::vector<std::uint32_t> domain;
+  if (!covers_rectangle(mesh, xmax, ymax)) domain = owning_triangles(mesh, topo, map);
   const int nc = mesh.value_count;
   const VoronoiDiagram voronoi(mesh.points);
   const Mesh& dt = voronoi.delaunay();
-  const std::vector<std::uint32_t> located = owning_triangles(dt, voronoi.delaunay_topology(), map);
 
   // Zienkiewicz values at the circumcentres inside the image rectangle and the mesh domain.
-  const double xmax = domain_width - 1, ymax = domain_height - 1;
   std::vector<std::vector<Gradient>> gradients;
   for (int c = 0; c < nc; ++c) gradients.push_back(vertex_gradients(mesh, topo, c));
   const TriangleGrid grid(mesh, xmax, ymax);
@@ -354,21 +370,18 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
   clipped_start[sites] = std::uint32_t(clipped.size());
 
   std::vector<double> w;
-  for (int j = 0; j < out.height; ++j)
+  std::uint32_t site = 0, row_site = 0;  // nearest sites of the last pixel and of the row start
+  for (int j = 0; j < out.height; ++j) {
+    site = row_site;
     for (int i = 0; i < out.width; ++i) {
       const std::size_t k = std::size_t(j) * out.width + i;
-      if (domain[k] == no_neighbour) continue;
+      if (!domain.empty() && domain[k] == no_neighbour) continue;
       const Point p = map.sample(i, j);
-      std::uint32_t site = no_neighbour;
-      if (located[k] != no_neighbour) {
-        double best = std::numeric_limits<double>::infinity();
-        for (const std::uint32_t v : dt.triangles[located[k]].v) {
-          const double dx = dt.points[v].x - p.x, dy = dt.points[v].y - p.y;
-          if (v < sites && dx * dx + dy * dy < best) best = dx * dx + dy * dy, site = v;
-        }
-      }
-      if (site != no_neighbour) site = voronoi.nearest_site(p, site);
-      if (site != no_neighbour && clipped_start[site] < clipped_start[site + 1]) {
+      if (domain.empty() && !(p.x >= 0 && p.x <= xmax && p.y >= 0 && p.y <= ymax)) continue;
+      // The nearest site: a short greedy walk from the previous pixel's.
+      site = voronoi.nearest_site(p, site);
+      if (i == 0) row_site = site;
+      if (clipped_start[site] < clipped_start[site + 1]) {
         const std::uint32_t b = clipped_start[site], e = clipped_start[site + 1];
         clipped_points.clear();
         for (std::uint32_t x = b; x < e; ++x) clipped_points.push_back(clipped[x].q);
@@ -380,12 +393,15 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
         }
         continue;
       }
-      // Bilinear pre-fill.
-      const auto& v = mesh.triangles[domain[k]].v;
-      const auto l = barycentric(mesh, domain[k], p);
+      // Bilinear pre-fill, in the mesh triangle holding p.
+      const std::uint32_t t = domain.empty() ? grid.find(p) : domain[k];
+      if (t == no_neighbour) continue;
+      const auto& v = mesh.triangles[t].v;
+      const auto l = barycentric(mesh, t, p);
       for (int c = 0; c < nc; ++c)
         out.at(i, j, c) = l[0] * mesh.value(v[0], c) + l[1] * mesh.value(v[1], c) + l[2] * mesh.value(v[2], c);
     }
+  }
 }
 
 }  // namespace tristream
