@@ -19,6 +19,8 @@ from runner import Cache, EXIT_USAGE, Tools, atomic_write_bytes, atomic_write_te
 
 # Bump when the analysis stored with a quality run changes, so cached runs are recomputed.
 ANALYSIS_VERSION = 1
+# Methods whose per-pixel error is analysed by triangle size contrast (the patch-artifact finding).
+ANALYSED_METHODS = ("bilinear", "bezier", "coons")
 ENCODE_TIMEOUT = 3600
 RENDER_TIMEOUT = 3600
 
@@ -202,10 +204,11 @@ class Executor:
         return desc
 
     def process(self, enc: Enc, runs: List[Run]):
-        """Encodes enc and performs its quality runs, ticking the progress bar once per item."""
+        """Encodes enc and performs its quality runs, ticking the progress bar once per item.
+        Runs missing from the cache are rendered by one trisim call per (variant, engine)."""
         e = self.encode(enc)
         self.progress.update(1)
-        geometry = None
+        pending = {}
         for run in runs:
             if e["status"] != "ok":
                 self.run_results[run] = {"status": "failed" if e["status"] == "failed" else "missing",
@@ -219,59 +222,82 @@ class Executor:
             if cached is not None and (not run.keep_render or cached["status"] != "ok" or render_path.exists()):
                 self.run_results[run] = cached
                 self.progress.update(1)
-                continue
-            if self.cache.offline:
+            elif self.cache.offline:
                 self.run_results[run] = {"status": "missing", "error": "not in the cache"}
                 self.progress.update(1)
-                continue
-            if run.analyse and geometry is None:
+            else:
+                pending.setdefault((run.variant, run.engine), []).append((run, key, render_path))
+        geometry = None
+        for (variant, engine), batch in pending.items():
+            if geometry is None and any(run.analyse for run, _, _ in batch):
                 geometry = TriangleGeometry(e["tri"])
-            result = self._quality_run(run, e, original, render_path, geometry if run.analyse else None)
-            result["key"] = key
-            self.cache.store("runs", key, result)
-            self.run_results[run] = result
-            self.progress.update(1)
+            self._quality_batch(e, Path(e["image_file"]), variant, engine, batch, geometry)
 
-    def _quality_run(self, run: Run, e: dict, original: Path, render_path: Path, geometry):
+    def _compare(self, e, original, methods, variant, engine, save_dir):
+        args = [self.tools.trisim, "compare", e["tri"], "--method", *methods, "--engine", engine,
+                "--original", original, "--json", "--save", save_dir]
+        if variant:
+            args += ["--variant", variant]
+        return run_tool(args, timeout=RENDER_TIMEOUT * len(methods))
+
+    def _quality_batch(self, e, original, variant, engine, batch, geometry):
         tmp = tempfile.mkdtemp(prefix="tristream-exp-")
         try:
-            args = [self.tools.trisim, "compare", e["tri"], "--method", run.method, "--engine", run.engine,
-                    "--original", original, "--json", "--save", tmp]
-            if run.variant:
-                args += ["--variant", run.variant]
             load = os.getloadavg()[0]
-            code, out, err, cpu = run_tool(args, timeout=RENDER_TIMEOUT)
-            result = {"load1": load, "cpu_s": cpu}
-            if code != 0:
-                status = "unsupported" if code == EXIT_USAGE else "failed"
-                result.update(status=status, error=f"trisim compare exit {code}: {first_line(err)}")
-                return result
-            try:
-                j = json.loads(out.strip().splitlines()[-1])
-            except (ValueError, IndexError) as exc:
-                result.update(status="failed", error=f"trisim compare printed no JSON ({exc})")
-                return result
-            result.update(status="ok", **{k: j.get(k) for k in ("mse", "psnr", "ssim", "ms", "width", "height",
-                                                                 "vertices", "triangles", "ssim_window")})
-            render = Path(tmp) / f"{run.method}.png"
-            code, out, err, _ = run_tool([self.tools.trisim, "metrics", render, original, "--ssim-window", "8x8",
-                                          "--json"], timeout=RENDER_TIMEOUT)
-            if code == 0:
-                result["ssim_8x8"] = json.loads(out.strip().splitlines()[-1])["ssim"]
-            else:
-                result["ssim_8x8"] = None
-                result["note"] = f"trisim metrics 8x8 exit {code}: {first_line(err)}"
-            if geometry is not None:
-                result["analysis"] = geometry.error_by_contrast(load_image(render), load_image(original))
-            if run.keep_render:
-                render_path.parent.mkdir(parents=True, exist_ok=True)
-                tmp_copy = render_path.with_name("." + render_path.name + ".tmp")
-                shutil.copyfile(render, tmp_copy)
-                os.replace(tmp_copy, render_path)
-                result["render"] = str(render_path)
-            return result
+            code, out, err, cpu = self._compare(e, original, [run.method for run, _, _ in batch], variant, engine,
+                                                tmp)
+            lines = {}
+            for line in out.splitlines():
+                try:
+                    j = json.loads(line)
+                    lines[j["method"]] = j
+                except (ValueError, KeyError, TypeError):
+                    pass
+            for run, key, render_path in batch:
+                j = lines.get(run.method)
+                # CPU seconds of the whole process, shared equally by the methods of a batch.
+                sub_cpu = cpu / len(batch) if cpu is not None else None
+                m_code, m_err = code, err
+                if j is None and len(batch) > 1:
+                    # The batch failed before this method: run it alone for its own status and message.
+                    m_code, out2, m_err, sub_cpu = self._compare(e, original, [run.method], variant, engine, tmp)
+                    if m_code == 0:
+                        try:
+                            j = json.loads(out2.strip().splitlines()[-1])
+                        except (ValueError, IndexError):
+                            m_err = "no JSON line in the output"
+                result = {"load1": load, "cpu_s": sub_cpu, "batch": len(batch), "key": key}
+                if j is None:
+                    result.update(status="unsupported" if m_code == EXIT_USAGE else "failed",
+                                  error=f"trisim compare exit {m_code}: {first_line(m_err)}")
+                else:
+                    result.update(status="ok", **{k: j.get(k) for k in ("mse", "psnr", "ssim", "ms", "width",
+                                                                         "height", "vertices", "triangles",
+                                                                         "ssim_window")})
+                    self._after_render(run, result, Path(tmp) / f"{run.method}.png", original, render_path,
+                                       geometry if run.analyse else None)
+                self.cache.store("runs", key, result)
+                self.run_results[run] = result
+                self.progress.update(1)
         finally:
             shutil.rmtree(tmp, ignore_errors=True)
+
+    def _after_render(self, run, result, render, original, render_path, geometry):
+        code, out, err, _ = run_tool([self.tools.trisim, "metrics", render, original, "--ssim-window", "8x8",
+                                      "--json"], timeout=RENDER_TIMEOUT)
+        if code == 0:
+            result["ssim_8x8"] = json.loads(out.strip().splitlines()[-1])["ssim"]
+        else:
+            result["ssim_8x8"] = None
+            result["note"] = f"trisim metrics 8x8 exit {code}: {first_line(err)}"
+        if geometry is not None:
+            result["analysis"] = geometry.error_by_contrast(load_image(render), load_image(original))
+        if run.keep_render:
+            render_path.parent.mkdir(parents=True, exist_ok=True)
+            tmp_copy = render_path.with_name("." + render_path.name + ".tmp")
+            shutil.copyfile(render, tmp_copy)
+            os.replace(tmp_copy, render_path)
+            result["render"] = str(render_path)
 
     def render_of(self, run: Run) -> Optional[Path]:
         r = self.run_results.get(run)

@@ -156,14 +156,19 @@ def abs_error(render: np.ndarray, original: np.ndarray) -> np.ndarray:
 
 
 def renders_figure(path: Path, original: np.ndarray, renders: dict, title: str):
-    """Rows: methods; columns: the render and its absolute error (mean over channels), full image."""
+    """Rows: the original, then each method; columns: the image and its absolute error (mean over
+    channels), full size; one colour scale for every heat map."""
     h, w = original.shape[:2]
-    rows = len(renders)
-    cell_w = 4.2
+    rows = len(renders) + 1
+    cell_w = 4.0
     cell_h = cell_w * h / w
-    fig, axes = plt.subplots(rows, 2, figsize=(2 * cell_w + 0.8, rows * (cell_h + 0.35)), squeeze=False)
+    fig, axes = plt.subplots(rows, 2, figsize=(2 * cell_w + 0.4, rows * (cell_h + 0.3) + 0.9), squeeze=False,
+                             layout="constrained")
+    _show(axes[0, 0], original)
+    axes[0, 0].set_title("original", fontsize=8)
+    axes[0, 1].axis("off")
     last = None
-    for (label, (render, stats)), (ax_r, ax_e) in zip(renders.items(), axes):
+    for (label, (render, stats)), (ax_r, ax_e) in zip(renders.items(), axes[1:]):
         _show(ax_r, render)
         ax_r.set_title(f"{label}: {stats}", fontsize=8)
         last = ax_e.imshow(abs_error(render, original), cmap="inferno", vmin=0, vmax=ERROR_VMAX,
@@ -172,7 +177,8 @@ def renders_figure(path: Path, original: np.ndarray, renders: dict, title: str):
         ax_e.set_yticks([])
         ax_e.set_title(f"{label}: |render - original|", fontsize=8)
     if last is not None:
-        fig.colorbar(last, ax=axes[:, 1].tolist(), shrink=0.5, label=f"absolute error (clipped at {ERROR_VMAX})")
+        fig.colorbar(last, ax=axes[0, 1], location="bottom", fraction=0.5, aspect=12,
+                     label=f"absolute error (clipped at {ERROR_VMAX})")
     fig.suptitle(title, fontsize=10)
     return save(fig, path)
 

@@ -19,6 +19,7 @@ from collections import defaultdict
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
+sys.dont_write_bytecode = True  # keep the source tree free of __pycache__
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
@@ -98,7 +99,7 @@ def git_commit(repo):
 
 def build_work(plan, tools):
     """The encodings, their quality runs and the timing runs of a plan."""
-    from execute import Run, TimeRun
+    from execute import ANALYSED_METHODS, Run, TimeRun
     from plan import Enc, scaled
 
     work = defaultdict(list)     # Enc -> [Run]
@@ -109,9 +110,10 @@ def build_work(plan, tools):
         runs = []
         for method in tools.methods:
             for engine in tools.engines:
-                runs.append(Run(enc, method, "", engine, keep, analyse and engine == "reference"))
+                runs.append(Run(enc, method, "", engine, keep,
+                                analyse and engine == "reference" and method in ANALYSED_METHODS))
             if thesis_variants and method in THESIS_VARIANTS:
-                runs.append(Run(enc, method, "thesis", "reference", False, analyse))
+                runs.append(Run(enc, method, "thesis", "reference", False, analyse and method in ANALYSED_METHODS))
         work[enc].extend(runs)
 
     from plan import THESIS_VARIANTS
