@@ -196,12 +196,12 @@ bool SibsonCoordinates::cavity_coordinates(const Point& p, std::uint32_t t0, std
     if (vertex_stamp_[v] != query_) {
       vertex_stamp_[v] = query_;
       vertex_slot_[v] = std::uint32_t(out.size());
+      if (out.size() == polygon_.size()) polygon_.resize(2 * polygon_.size() + 16);
+      polygon_[out.size()] = {};
       out.push_back({v, 0.0});
-      polygon_.push_back({});
     }
     return vertex_slot_[v];
   };
-  polygon_.clear();
   for (const std::uint32_t t : cavity_) {
     const auto& v = mesh_.triangles[t].v;
     const Point ct = {centre_[t].x - p.x, centre_[t].y - p.y};

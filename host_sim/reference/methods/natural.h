@@ -73,7 +73,7 @@ class SibsonCoordinates {
   // The lifted incircle determinant of triangle (a, b, c) expanded along p's row, relative
   // to a: F(p) = alpha dx + beta dy + gamma (dx^2 + dy^2), dx = p.x - a.x, dy = p.y - a.y,
   // positive iff p is strictly inside; *_abs are the matching permanents for the error bound.
-  struct CircleTest {
+  struct alignas(64) CircleTest {
     double ax, ay, alpha, beta, gamma, alpha_abs, beta_abs, gamma_abs;
   };
 
