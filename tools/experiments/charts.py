@@ -30,8 +30,12 @@ def colour_of(name):
 
 
 def save(fig, path: Path) -> Path:
+    """PNG, or JPEG (quality 90) for photographic pictures named *.jpg to keep the page small."""
     buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=100, bbox_inches="tight")
+    if Path(path).suffix == ".jpg":
+        fig.savefig(buf, format="jpeg", dpi=100, bbox_inches="tight", pil_kwargs={"quality": 90})
+    else:
+        fig.savefig(buf, format="png", dpi=100, bbox_inches="tight")
     plt.close(fig)
     atomic_write_bytes(path, buf.getvalue())
     return path

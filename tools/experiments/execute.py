@@ -283,9 +283,14 @@ class Executor:
             shutil.rmtree(tmp, ignore_errors=True)
 
     def _after_render(self, run, result, render, original, render_path, geometry):
-        code, out, err, _ = run_tool([self.tools.trisim, "metrics", render, original, "--ssim-window", "8x8",
-                                      "--json"], timeout=RENDER_TIMEOUT)
-        if code == 0:
+        if run.enc.study != "grey":
+            code, out, err = None, "", ""  # the 8x8 window is the thesis's greyscale convention only
+        else:
+            code, out, err, _ = run_tool([self.tools.trisim, "metrics", render, original, "--ssim-window", "8x8",
+                                          "--json"], timeout=RENDER_TIMEOUT)
+        if code is None:
+            result["ssim_8x8"] = None
+        elif code == 0:
             result["ssim_8x8"] = json.loads(out.strip().splitlines()[-1])["ssim"]
         else:
             result["ssim_8x8"] = None

@@ -20,7 +20,10 @@ TIME_COUNTS = [2000, 4000, 5000, 7000, 10000, 12000, 15000]
 # Methods whose 'thesis' variant (the thesis's step sampling) is run besides the default.
 THESIS_VARIANTS = ("bezier", "coons")
 # Kodak images of the full set's greyscale part (every fourth, plus the demo's kodim23).
-KODAK_GREY = ("kodim01", "kodim05", "kodim09", "kodim13", "kodim17", "kodim21", "kodim23")
+KODAK_GREY = ("kodim23",)
+# Colour images of the full set: the thesis's (Yacht = sailboat, Baboon = mandrill, Peppers, Airplane,
+# Fruits); Lena and Pool are not available.
+COLOUR_IMAGES = ("sailboat", "mandrill", "peppers", "airplane", "fruits")
 
 
 def scaled(n_nominal: int, width: int, height: int) -> int:
@@ -145,18 +148,20 @@ def make_plan(name: str, repo: Path, images_dir: Path) -> Plan:
     if kodak_grey:
         plan.notes.append(f"Kodak images used as greyscale: {len(kodak_grey)} of {len(shared['kodak'])} "
                           f"({', '.join(s.name for s in kodak_grey)}), to keep the full set within about an hour "
-                          f"on two shared cores.")
+                          f"on two shared cores; the other Kodak images can be added to KODAK_GREY in plan.py.")
     if not plan.grey_sources:
         plan.grey_sources = [demo]
         plan.notes.append("The full set fell back on data/demo/kodim23.png for greyscale.")
     plan.grey_counts = GREY_COUNTS
-    plan.colour_sources = shared["colour"] or [demo]
-    plan.colour_totals = COLOUR_TOTALS
+    plan.colour_sources = [s for s in shared["colour"] if s.name in COLOUR_IMAGES] or [demo]
+    plan.colour_totals = COLOUR_TOTALS[:3]
+    plan.notes.append(f"Colour: the thesis's images that are available ({', '.join(COLOUR_IMAGES)}) at totals "
+                      f"{', '.join(f'{n:,}' for n in plan.colour_totals)} (thesis scale).")
     plan.cotri_thesis_totals = [15000]
     plan.split_sources = [s for s in plan.colour_sources if s.name in ("sailboat", "peppers", "mandrill")] \
         or [demo]
     plan.splits = YCBCR_SPLITS
-    timing = [s for s in shared["grey"] if s.name in ("boat", "barbara", "goldhill")]
+    timing = [s for s in shared["grey"] if s.name in ("boat", "goldhill")]
     plan.time_sources = timing or [source("kodim23-crop512", demo.path, "demo", crop=(128, 0, 512, 512))]
     plan.time_counts = TIME_COUNTS
     plan.time_repeats = 2

@@ -122,7 +122,8 @@ class Html:
     def img(self, path: Path, caption: str, width=None):
         data = base64.b64encode(Path(path).read_bytes()).decode()
         style = f' style="max-width:{width}px"' if width else ""
-        self.add(f'<figure><img src="data:image/png;base64,{data}" alt="{html.escape(caption)}"{style}>'
+        mime = "image/jpeg" if Path(path).suffix == ".jpg" else "image/png"
+        self.add(f'<figure><img src="data:{mime};base64,{data}" alt="{html.escape(caption)}"{style}>'
                  f"<figcaption>{html.escape(caption)} <span class=file>({html.escape(Path(path).name)})</span>"
                  f"</figcaption></figure>")
 
@@ -224,7 +225,10 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
         "are composed from two separate encodings (the Y layer of one, the Cb and Cr layers of the other).",
         "Metrics: MSE and PSNR over all pixels and channels; SSIM as Wang et al. 2004 (11x11 Gaussian window, "
         "sigma 1.5, K1 0.01, K2 0.03, population covariance, mean of the channels) unless labelled 8x8, the "
-        "thesis's box window, which every run also reports (column ssim_8x8).",
+        "thesis's box window, which every greyscale run also reports (column ssim_8x8).",
+        "The triangulations are made for linear interpolation: greedy insertion ranks triangles by the error of "
+        "the linear interpolant, so bilinear is the method its vertex choice serves; every other method is "
+        "measured on those same vertices.",
         "Time: trisim's own render time (the <code>ms</code> field: rendering only, excluding reading and "
         "metrics), wall clock, the minimum over repeats per image, then the mean over images; CPU seconds of the "
         "whole trisim process are given beside it. The thesis timed 512x512 images on a 1.86 GHz Core2Duo E6300 "
@@ -354,7 +358,7 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
     doc.h(2, "Files", "files")
     files = ["results.csv", "greyscale.csv", "colour.csv", "time.csv", "time_runs.csv"]
     doc.add("<ul>" + "".join(f'<li><a href="{f}">{f}</a></li>' for f in files)
-            + "<li>charts/*.png, pictures/*.png: the figures above</li>"
+            + "<li>charts/*.png, pictures/*.jpg and *.png: the figures above</li>"
             "<li>cache/: triangulations and results, reused by the next run unless --force</li></ul>")
     doc.add("</body></html>")
     atomic_write_text(out_dir / "index.html", "\n".join(doc.parts))
@@ -549,18 +553,18 @@ def pictures_section(doc, rows, plan, pic_dir):
         stem = f"{img}_{lab}_{nominal}"
         h, w = original.shape[:2]
         doc.h(3, f"{img}, {lab}, {nominal:,} vertices (thesis scale; {tri.vertex_count():,} here, {w}x{h})")
-        path = pictures.triangulation_figure(pic_dir / f"{stem}_triangulation.png", tri, original,
+        path = pictures.triangulation_figure(pic_dir / f"{stem}_triangulation.jpg", tri, original,
                                              f"{img}: triangulation ({lab})")
         doc.img(path, "The triangulation over the image" + (" (each layer in its own colour)"
                                                              if len(tri.layers) > 1 else "") + ".")
-        path = pictures.voronoi_figure(pic_dir / f"{stem}_voronoi.png", tri, original, f"{img}: Voronoi diagram")
+        path = pictures.voronoi_figure(pic_dir / f"{stem}_voronoi.jpg", tri, original, f"{img}: Voronoi diagram")
         doc.img(path, "The Voronoi diagram of the vertices.")
         renders = {}
         for m in order_labels({r["method"] for r in sel}):
             r = next(x for x in sel if x["method"] == m)
             stats = f"PSNR {fmt(r['psnr'], 2)} dB, SSIM {fmt(r['ssim'])}"
             renders[m] = (load_image(r["_render"]), stats)
-        path = pictures.renders_figure(pic_dir / f"{stem}_renders.png", original, renders,
+        path = pictures.renders_figure(pic_dir / f"{stem}_renders.jpg", original, renders,
                                        f"{img} ({lab}, {tri.vertex_count():,} vertices): renders and absolute errors")
         doc.img(path, "Each method's render and its absolute error.")
         window = pictures.detail_window(tri, w, h, 96)
