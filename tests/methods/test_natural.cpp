@@ -257,3 +257,34 @@ TEST_CASE("natural: a Delaunay mesh is used as is, with the same result as a reb
   render_natural(flipped, 50, 40, {}, b);   // builds the Delaunay triangulation
   for (std::size_t k = 0; k < a.v.size(); ++k) CHECK(std::abs(a.v[k] - b.v[k]) < 1e-9);
 }
+
+TEST_CASE("natural: scaled output and a single-triangle mesh") {
+  // 61x47 domain rendered at 121x93 (corner to corner): linear data still exact.
+  Mesh mesh = tristream::testing::random_lattice_mesh(61, 47, 80, 5, 0, 1);
+  for (std::size_t v = 0; v < mesh.points.size(); ++v) mesh.values[v] = 10 + 0.5 * mesh.points[v].x + 2 * mesh.points[v].y;
+  Field out(121, 93, 1);
+  render_natural(mesh, 61, 47, {}, out);
+  const PixelMapping map(61, 47, 121, 93);
+  for (int j = 0; j < 93; ++j)
+    for (int i = 0; i < 121; ++i) {
+      const Point p = map.sample(i, j);
+      INFO("pixel " << i << ", " << j);
+      REQUIRE_FALSE(std::isnan(out.at(i, j, 0)));
+      CHECK(std::abs(out.at(i, j, 0) - (10 + 0.5 * p.x + 2 * p.y)) < 1e-9);
+    }
+  // One triangle: natural-neighbour coordinates inside it are its barycentric coordinates.
+  Mesh one;
+  one.points = {{0, 0}, {9, 0}, {0, 6}};
+  one.values = {0, 90, 60};
+  one.triangles = {{{0, 1, 2}}};
+  one.normalize_winding();
+  Field small(10, 7, 1);
+  render_natural(one, 10, 7, {}, small);
+  for (int j = 0; j < 7; ++j)
+    for (int i = 0; i < 10; ++i) {
+      const bool inside = 6 * i + 9 * j <= 54;
+      INFO("pixel " << i << ", " << j);
+      CHECK(std::isnan(small.at(i, j, 0)) == !inside);
+      if (inside) CHECK(small.at(i, j, 0) == Approx(10.0 * i + 10.0 * j).margin(1e-9));
+    }
+}

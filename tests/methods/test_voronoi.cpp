@@ -289,3 +289,25 @@ TEST_CASE("voronoi: only pixels of the mesh's domain are written") {
       CHECK(std::isnan(out.at(i, j, 0)) == (i > 5 && j > 5));
     }
 }
+
+TEST_CASE("voronoi: scaled output, a single triangle and a mesh short of the image still render") {
+  const Mesh mesh = tristream::testing::random_lattice_mesh(40, 30, 50, 9, 10, 3);
+  Field out(79, 59, 3);
+  render_voronoi(mesh, 40, 30, {}, out);
+  for (double v : out.v) CHECK_FALSE(std::isnan(v));
+  Mesh one;
+  one.points = {{0, 0}, {9, 0}, {0, 6}};
+  one.values = {0, 90, 60};
+  one.triangles = {{{0, 1, 2}}};
+  one.normalize_winding();
+  Field small(10, 7, 1);
+  render_voronoi(one, 10, 7, {}, small);
+  for (int j = 0; j < 7; ++j)
+    for (int i = 0; i < 10; ++i) {
+      INFO("pixel " << i << ", " << j);
+      // Three cells, each holding a corner of the image: all bilinear pre-fill.
+      const bool inside = 6 * i + 9 * j <= 54;
+      CHECK(std::isnan(small.at(i, j, 0)) == !inside);
+      if (inside) CHECK(small.at(i, j, 0) == Approx(10.0 * i + 10.0 * j).margin(1e-9));
+    }
+}
