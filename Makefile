@@ -38,11 +38,20 @@ fuzz:
 	cmake --build build-fuzz -j$(JOBS)
 	bash tools/run-fuzzers.sh build-fuzz/bin $(FUZZ_TIME)
 
+# firmware_core for Cortex-M4 (size report, fails if an allocator is linked), then the golden-image
+# test as a 32-bit ARM binary under qemu-arm (pixels must equal the x86-64 goldens).
+cross:
+	@bash tools/install-deps.sh build cross
+	bash firmware_core/cross/build.sh build-cross
+	bash firmware_core/cross/run-golden-qemu.sh build-cross
+
 clean:
 	rm -rf build build-sanitize build-fuzz build-cross out
 
 experiments: build
+	@bash tools/install-deps.sh experiments
 	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set full
 
 experiments-quick: build
+	@bash tools/install-deps.sh experiments
 	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set quick

@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian packages a task needs, and only those that are missing.
-# Usage: tools/install-deps.sh [build|fuzz|cross|bench|all]...   (default: build)
+# Usage: tools/install-deps.sh [build|fuzz|cross|bench|experiments|all]...   (default: build)
 set -euo pipefail
 
 declare -A groups=(
   [build]="cmake make g++ pkg-config catch2 libstb-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev"
   [fuzz]="clang-14 libclang-rt-14-dev"
-  [cross]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi qemu-user binutils-arm-none-eabi"
+  [cross]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-user file"
   [bench]="valgrind"
+  [experiments]="python3 python3-numpy python3-scipy python3-matplotlib"
 )
 
 wanted=()
@@ -17,7 +18,7 @@ for group in "${@:-build}"; do
   elif [ -n "${groups[$group]:-}" ]; then
     wanted+=(${groups[$group]})
   else
-    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench or all)" >&2
+    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench, experiments or all)" >&2
     exit 64
   fi
 done
