@@ -1,5 +1,7 @@
 #include "tristream/render.h"
 
+#include <string.h>
+
 #include "tristream/detail/arith.h"
 #include "tristream/detail/bytes.h"
 #include "tristream/detail/edge.h"
@@ -231,17 +233,17 @@ struct Corner {
 // Rasterizes one triangle inside `clip`, calling shader.begin once before the first span.
 template <typename Shader>
 void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
-  const int64_t area2 = (int64_t(tv.x[1]) - tv.x[0]) * (int64_t(tv.y[2]) - tv.y[0]) -
-                        (int64_t(tv.y[1]) - tv.y[0]) * (int64_t(tv.x[2]) - tv.x[0]);
-  if (area2 <= 0) return;  // collapsed by down-scaling
-  const int32_t left = position_fx::from_raw(min3(tv.x[0], tv.x[1], tv.x[2])).ceil_to_int();
-  const int32_t right = position_fx::from_raw(max3(tv.x[0], tv.x[1], tv.x[2])).floor_to_int();
-  if (right < clip.x0 || left >= clip.x1) return;
   int32_t y0 = position_fx::from_raw(min3(tv.y[0], tv.y[1], tv.y[2])).ceil_to_int();
   int32_t y1 = position_fx::from_raw(max3(tv.y[0], tv.y[1], tv.y[2])).floor_to_int();
   if (y0 < clip.y0) y0 = clip.y0;
   if (y1 > clip.y1 - 1) y1 = clip.y1 - 1;
   if (y0 > y1) return;
+  const int32_t left = position_fx::from_raw(min3(tv.x[0], tv.x[1], tv.x[2])).ceil_to_int();
+  const int32_t right = position_fx::from_raw(max3(tv.x[0], tv.x[1], tv.x[2])).floor_to_int();
+  if (right < clip.x0 || left >= clip.x1) return;
+  const int64_t area2 = (int64_t(tv.x[1]) - tv.x[0]) * (int64_t(tv.y[2]) - tv.y[0]) -
+                        (int64_t(tv.y[1]) - tv.y[0]) * (int64_t(tv.x[2]) - tv.x[0]);
+  if (area2 <= 0) return;  // collapsed by down-scaling
   Edge edges[3];
   for (int k = 0; k < 3; ++k) {
     const int n = (k + 1) % 3;
@@ -354,9 +356,22 @@ size_t scratch_bytes(const Blob& blob, const Resolved& r, PixelFormat f) {
   return size_t(r.tile_w) * r.tile_h * 3 * sizeof(int16_t);
 }
 
+// Whether the triangle's columns [ceil(min x), floor(max x)] miss [rect.x0, rect.x1): a cheap
+// first test on the raw positions (mapping is monotone, so mapped bounds are bounds too).
+inline bool misses_columns(const BlobLayer& layer, uint32_t t, const Mapping& map, const Rect& rect) {
+  const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
+  const int32_t x0 = load_u16(layer.positions + 4 * size_t(load_u16(p)));
+  const int32_t x1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)));
+  const int32_t x2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)));
+  const int32_t left = position_fx::from_raw(map.x(min3(x0, x1, x2))).ceil_to_int();
+  const int32_t right = position_fx::from_raw(map.x(max3(x0, x1, x2))).floor_to_int();
+  return right < rect.x0 || left >= rect.x1;
+}
+
 template <typename Shader>
 void draw_layer(const ActiveList& list, const Mapping& map, const Rect& rect, Shader& shader) {
   for (uint32_t i = 0; i < list.count; ++i) {
+    if (misses_columns(*list.layer, list.items[i], map, rect)) continue;
     TriangleView tv;
     load_triangle(*list.layer, list.items[i], map, &tv);
     rasterize(tv, rect, shader);
@@ -378,8 +393,14 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, const Activ
 
 template <PixelFormat F>
 void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const RenderParams& p, bool grey) {
+  // Without dithering every row is the same: write the first, copy it to the others.
+  const bool same_rows = !(p.dither && (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be));
   for (int32_t y = rect.y0; y < rect.y1; ++y) {
     uint8_t* row = base + (y - rect.y0) * stride;
+    if (same_rows && y > rect.y0) {
+      memcpy(row, base, size_t(rect.width()) * bytes_per_pixel(F));
+      continue;
+    }
     for (int32_t x = rect.x0; x < rect.x1; ++x) {
       uint8_t* px = row + (x - rect.x0) * bytes_per_pixel(F);
       if constexpr (F == PixelFormat::coverage8) {
