@@ -6,7 +6,6 @@
 
 #include "model/topology.h"
 #include "reference/coverage.h"
-#include "reference/methods/bilinear.h"
 #include "reference/methods/patch_raster.h"
 
 namespace tristream {
@@ -76,6 +75,8 @@ BezierPatch::BezierPatch(const PatchControl& control) {
                      2 * (q(p002) + q(p110) - q(p011) - q(p101)),
                      q(p020) + q(p002) - 2 * q(p011)};
   }
+  pos_[0] = XY{x_.k, y_.k}, pos_[1] = XY{x_.ks, y_.ks}, pos_[2] = XY{x_.kt, y_.kt};
+  pos_[3] = XY{x_.kss, y_.kss}, pos_[4] = XY{x_.kst, y_.kst}, pos_[5] = XY{x_.ktt, y_.ktt};
   const auto& p = control.pixel;
   auto second = [&](int s, int m, int e) {
     return 2 * std::hypot(p[s].x - 2 * p[m].x + p[e].x, p[s].y - 2 * p[m].y + p[e].y);
@@ -90,7 +91,7 @@ void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const 
   const Topology topo = build_topology(mesh);
   const PixelMapping map(domain_width, domain_height, out.width, out.height);
   Field prefill(out.width, out.height, out.channels);
-  render_bilinear(mesh, domain_width, domain_height, options, prefill);
+  detail::bilinear_prefill(mesh, topo, domain_width, domain_height, options, prefill);
   detail::PatchCanvas canvas(prefill);
 
   PatchControl control;

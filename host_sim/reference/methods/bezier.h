@@ -30,8 +30,16 @@ class BezierPatch {
   // Position and its partial derivatives with respect to a and b (c = 1 - a - b).
   void position(double a, double b, double& x, double& y, double& x_a, double& x_b, double& y_a,
                 double& y_b) const {
-    x = x_(a, b), y = y_(a, b);
-    x_a = x_.ds(a, b), x_b = x_.dt(a, b), y_a = y_.ds(a, b), y_b = y_.dt(a, b);
+    const XY& k = pos_[0];
+    const XY& ks = pos_[1];
+    const XY& kt = pos_[2];
+    const XY& kss = pos_[3];
+    const XY& kst = pos_[4];
+    const XY& ktt = pos_[5];
+    const XY p = k + a * (ks + a * kss + b * kst) + b * (kt + b * ktt);
+    const XY pa = ks + 2 * a * kss + b * kst;
+    const XY pb = kt + a * kst + 2 * b * ktt;
+    x = p[0], y = p[1], x_a = pa[0], x_b = pb[0], y_a = pa[1], y_b = pb[1];
   }
   Point position(double a, double b) const { return {x_(a, b), y_(a, b)}; }
   // control.channels values at (a, b).
@@ -46,7 +54,9 @@ class BezierPatch {
   int subdivisions() const;
 
  private:
+  using XY = detail::XY;
   detail::Quadratic2 x_, y_;                // position in (a, b)
+  XY pos_[6];                               // x_ and y_ coefficients as pairs
   std::vector<detail::Quadratic2> value_;  // one per value channel
   double second_derivative_ = 0;               // largest of the three above
 };

@@ -5,7 +5,6 @@
 
 #include "model/topology.h"
 #include "reference/coverage.h"
-#include "reference/methods/bilinear.h"
 #include "reference/methods/patch_raster.h"
 
 namespace tristream {
@@ -101,6 +100,9 @@ CoonsPatch::CoonsPatch(const PatchControl& control) {
     q.b2 = Parabola::through(q.C, x(m_bc), q.B);
     q.expand();
   }
+  const double Component::*coefficient[8] = {&Component::k,   &Component::ku,  &Component::kv,   &Component::kuv,
+                                              &Component::kuu, &Component::kvv, &Component::kuuv, &Component::kuvv};
+  for (int i = 0; i < 8; ++i) pos_[i] = XY{x_.*coefficient[i], y_.*coefficient[i]};
 }
 
 void CoonsPatch::Component::expand() {
@@ -116,18 +118,15 @@ void CoonsPatch::Component::expand() {
 }
 
 std::array<int, 2> CoonsPatch::subdivisions() const {
-  const Component& X = x_;
-  const Component& Y = y_;
-  auto curvature = [](const Parabola& px, const Parabola& py) { return 2 * std::hypot(px.a, py.a); };
-  // max over t in [0, 1] of |q'(t) - p'(t)|: linear in t.
-  auto slope_gap = [](const Parabola& px, const Parabola& py, const Parabola& qx, const Parabola& qy) {
-    return std::max(std::hypot(qx.b - px.b, qy.b - py.b),
-                    std::hypot(qx.derivative(1) - px.derivative(1), qy.derivative(1) - py.derivative(1)));
-  };
-  const double kuu = std::max(curvature(X.b1, Y.b1), curvature(X.b2, Y.b2));
-  const double kvv = std::max(curvature(X.a1, Y.a1), curvature(X.a2, Y.a2));
-  const double kuv = slope_gap(X.a1, Y.a1, X.a2, Y.a2) + slope_gap(X.b1, Y.b1, X.b2, Y.b2) +
-                     std::hypot(X.M - X.A - X.B + X.C, Y.M - Y.A - Y.B + Y.C);
+  // P_uu = 2 kuu + 2 v kuuv, P_vv = 2 kvv + 2 u kuvv and P_uv = kuv + 2 u kuuv + 2 v kuvv are
+  // affine, so their largest norms over the square are at its corners.
+  double kuu = 0, kvv = 0, kuv = 0;
+  for (double u : {0.0, 1.0})
+    for (double v : {0.0, 1.0}) {
+      kuu = std::max(kuu, std::hypot(2 * (x_.kuu + v * x_.kuuv), 2 * (y_.kuu + v * y_.kuuv)));
+      kvv = std::max(kvv, std::hypot(2 * (x_.kvv + u * x_.kuvv), 2 * (y_.kvv + u * y_.kuvv)));
+      kuv = std::max(kuv, std::hypot(x_.kuv + 2 * u * x_.kuuv + 2 * v * x_.kuvv, y_.kuv + 2 * u * y_.kuuv + 2 * v * y_.kuvv));
+    }
   return {detail::subdivisions_for(kuu, 2 * (kuu + kuv)), detail::subdivisions_for(kvv, 2 * (kvv + kuv))};
 }
 
@@ -136,7 +135,7 @@ void render_coons(const Mesh& mesh, int domain_width, int domain_height, const R
   const Topology topo = build_topology(mesh);
   const PixelMapping map(domain_width, domain_height, out.width, out.height);
   Field prefill(out.width, out.height, out.channels);
-  render_bilinear(mesh, domain_width, domain_height, options, prefill);
+  detail::bilinear_prefill(mesh, topo, domain_width, domain_height, options, prefill);
   detail::PatchCanvas canvas(prefill);
 
   PatchControl control;

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "reference/methods/patch_control.h"
+#include "reference/methods/patch_raster.h"
 #include "reference/render.h"
 
 namespace tristream {
@@ -53,8 +54,12 @@ class CoonsPatch {
   // Position (output pixels) and its partial derivatives with respect to u and v.
   void position(double u, double v, double& x, double& y, double& x_u, double& x_v, double& y_u,
                 double& y_v) const {
-    x_.evaluate(u, v, x, x_u, x_v);
-    y_.evaluate(u, v, y, y_u, y_v);
+    const XY* k = pos_;  // k, ku, kv, kuv, kuu, kvv, kuuv, kuvv
+    const double uu = u * u, vv = v * v, uv = u * v;
+    const XY p = k[0] + u * k[1] + v * k[2] + uv * k[3] + uu * k[4] + vv * k[5] + uu * v * k[6] + u * vv * k[7];
+    const XY pu = k[1] + v * k[3] + 2 * u * k[4] + 2 * uv * k[6] + vv * k[7];
+    const XY pv = k[2] + u * k[3] + 2 * v * k[5] + uu * k[6] + 2 * uv * k[7];
+    x = p[0], y = p[1], x_u = pu[0], x_v = pv[0], y_u = pu[1], y_v = pv[1];
   }
   Point position(double u, double v) const { return {x_.at(u, v), y_.at(u, v)}; }
   // control.channels values at (u, v).
@@ -63,12 +68,11 @@ class CoonsPatch {
   }
   // The parameter domain [0, 1]^2 (up to 1e-12).
   static bool in_domain(double u, double v) { return u >= -1e-12 && v >= -1e-12 && u <= 1 + 1e-12 && v <= 1 + 1e-12; }
-  // Subdivisions (nu, nv) for the exact variant (patch_raster.h). Bounds over the square:
-  // |P_uu| <= Kuu = 2 max(|b1.a|, |b2.a|) (also the boundary curves' along u), |P_vv| <= Kvv
-  // likewise with a1, a2, |P_uv| <= Kuv = max |a2' - a1'| + max |b2' - b1'| + |M - A - B + C|
-  // (derivatives are linear, so their maxima are at the ends). A micro-triangle edge d (steps
-  // hu = 1/nu, hv = 1/nv) has |d' H d| <= (Kuu + Kuv) hu^2 + (Kvv + Kuv) hv^2, so each side
-  // takes twice its share as the interior bound.
+  // Subdivisions (nu, nv) for the exact variant (patch_raster.h). Over the square |P_uu| <= Kuu
+  // (also the curvature of the boundary curves along u), |P_vv| <= Kvv, |P_uv| <= Kuv, each the
+  // largest at a corner (they are affine). A micro-triangle edge d (steps hu = 1/nu,
+  // hv = 1/nv) has |d' H d| <= (Kuu + Kuv) hu^2 + (Kvv + Kuv) hv^2, so each side takes twice
+  // its share as the interior bound.
   std::array<int, 2> subdivisions() const;
 
  private:
@@ -92,7 +96,9 @@ class CoonsPatch {
   };
   int longest_ = 0;
   std::array<int, 4> corner_{};
+  using XY = detail::XY;
   Component x_, y_;                // position
+  XY pos_[8];                      // x_ and y_ monomial coefficients as pairs
   std::vector<Component> value_;  // one per value channel
 };
 

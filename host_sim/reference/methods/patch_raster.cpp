@@ -1,5 +1,8 @@
 #include "reference/methods/patch_raster.h"
 
+#include "model/topology.h"
+#include "reference/methods/bilinear.h"
+
 namespace tristream::detail {
 
 PatchCanvas::PatchCanvas(const Field& prefill)
@@ -29,6 +32,40 @@ void PatchCanvas::resolve_exact(Field& out) const {
     if (!inside_[p]) continue;
     for (int c = 0; c < nc; ++c)
       out.v[p * nc + c] = count_[p] > 0 ? sum_[p * nc + c] / double(count_[p]) : prefill_.v[p * nc + c];
+  }
+}
+
+void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, int domain_height,
+                      const RenderOptions& options, Field& out) {
+  bool exact = out.width == domain_width && out.height == domain_height;
+  for (std::size_t v = 0; v < mesh.vertex_count() && exact; ++v) {
+    const double x = mesh.points[v].x * kSubpixelScale, y = mesh.points[v].y * kSubpixelScale;
+    exact = std::fabs(mesh.points[v].x) <= kMaxPatchCoordinate && std::fabs(mesh.points[v].y) <= kMaxPatchCoordinate &&
+            x == std::floor(x) && y == std::floor(y);
+  }
+  if (!exact) {
+    render_bilinear(mesh, domain_width, domain_height, options, out);
+    return;
+  }
+  const int nc = mesh.value_count;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& v = mesh.triangles[t].v;
+    // Parameters (s, t) = barycentric coordinates of v[0] and v[1].
+    MicroVertex a, b, c;
+    snap(mesh.points[v[0]].x, mesh.points[v[0]].y, 1, 0, a);
+    snap(mesh.points[v[1]].x, mesh.points[v[1]].y, 0, 1, b);
+    snap(mesh.points[v[2]].x, mesh.points[v[2]].y, 0, 0, c);
+    unsigned inclusive = 0;
+    for (int e = 0; e < 3; ++e)
+      if (topo.is_boundary_edge(t, e)) inclusive |= 1u << e;
+    rasterize_micro_triangle(
+        a, b, c, out.width, out.height,
+        [&](int i, int j, double l0, double l1) {
+          for (int ch = 0; ch < nc; ++ch)
+            out.at(i, j, ch) =
+                l0 * mesh.value(v[0], ch) + l1 * mesh.value(v[1], ch) + (1 - l0 - l1) * mesh.value(v[2], ch);
+        },
+        inclusive);
   }
 }
 

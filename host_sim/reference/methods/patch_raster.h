@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "model/topology.h"
 #include "reference/render.h"
 
 namespace tristream::detail {
@@ -111,6 +112,10 @@ struct Quadratic2 {
   double dt(double s, double t) const { return kt + s * kst + 2 * t * ktt; }
 };
 
+// A position (x, y) as one SIMD pair (GCC/Clang vector extension), so that both coordinates
+// of a patch are evaluated together in the per-pixel Newton iteration.
+using XY = double __attribute__((vector_size(16)));
+
 // A tessellation node: snapped output position and the patch parameters there.
 struct MicroVertex {
   std::int64_t x = 0;
@@ -141,17 +146,21 @@ inline std::int64_t edge_bias(const MicroVertex& p, const MicroVertex& q) {
 
 // Calls visit(i, j, s, t) for every pixel (i, j) of the width x height image whose sample
 // point the micro-triangle (a, b, c) covers, either winding; (s, t) are the parameters
-// interpolated linearly. Degenerate triangles cover nothing.
+// interpolated linearly. Degenerate triangles cover nothing. Bit e of `inclusive_edges`
+// makes edge e (a-b, b-c, c-a) own all its points (a domain boundary edge).
 template <class Visit>
 void rasterize_micro_triangle(const MicroVertex& a, const MicroVertex& b, const MicroVertex& c, int width, int height,
-                              Visit&& visit) {
+                              Visit&& visit, unsigned inclusive_edges = 0) {
   const MicroVertex* v0 = &a;
   const MicroVertex* v1 = &b;
   const MicroVertex* v2 = &c;
+  // Edges opposite v0, v1, v2 as edge indices of (a, b, c).
+  int opposite0 = 1, opposite1 = 2, opposite2 = 0;
   std::int64_t area = edge_function(a, b, c.x, c.y);
   if (area == 0) return;
   if (area < 0) {
     std::swap(v1, v2);
+    std::swap(opposite1, opposite2);
     area = -area;
   }
   // Pixel sample points are the integers: column i at fixed-point i << kSubpixelBits.
@@ -163,7 +172,9 @@ void rasterize_micro_triangle(const MicroVertex& a, const MicroVertex& b, const 
   const std::int64_t j0 = std::max<std::int64_t>(0, (min_y + one - 1) >> kSubpixelBits);
   const std::int64_t j1 = std::min<std::int64_t>(height - 1, max_y >> kSubpixelBits);
   if (i0 > i1 || j0 > j1) return;
-  const std::int64_t bias0 = edge_bias(*v1, *v2), bias1 = edge_bias(*v2, *v0), bias2 = edge_bias(*v0, *v1);
+  const std::int64_t bias0 = (inclusive_edges >> opposite0 & 1) ? 0 : edge_bias(*v1, *v2);
+  const std::int64_t bias1 = (inclusive_edges >> opposite1 & 1) ? 0 : edge_bias(*v2, *v0);
+  const std::int64_t bias2 = (inclusive_edges >> opposite2 & 1) ? 0 : edge_bias(*v0, *v1);
   // Edge functions at the first pixel of the box, stepped by whole pixels: w(p + (1, 0)) =
   // w(p) - dy * one, w(p + (0, 1)) = w(p) + dx * one, for edge (p -> q), dx = q.x - p.x.
   const std::int64_t px0 = i0 << kSubpixelBits, py0 = j0 << kSubpixelBits;
@@ -183,6 +194,15 @@ void rasterize_micro_triangle(const MicroVertex& a, const MicroVertex& b, const 
     }
   }
 }
+
+// The bilinear field of `mesh` at the output size of `out`, as render_bilinear gives it (same
+// coverage: domain boundary inclusive, top-left ties; same values up to rounding): the
+// patches' pre-fill and domain. Fast path with exact integer edge tests when the output size
+// equals the domain's and every vertex lies on the 1/256-pixel grid (pixel positions do),
+// where they decide exactly as the exact predicates of reference/coverage.h; otherwise it
+// calls render_bilinear.
+void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, int domain_height,
+                      const RenderOptions& options, Field& out);
 
 // Solves patch.position(s, t) = (x, y) by Newton's method from a close start (the
 // micro-triangle's linear guess) and returns true with the solution in (s, t). It stops
