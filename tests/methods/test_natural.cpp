@@ -288,3 +288,24 @@ TEST_CASE("natural: scaled output and a single-triangle mesh") {
       if (inside) CHECK(small.at(i, j, 0) == Approx(10.0 * i + 10.0 * j).margin(1e-9));
     }
 }
+
+TEST_CASE("natural: the row sweep gives every pixel the coordinates of a per-point computation") {
+  for (auto [w, h] : {std::pair{45, 33}, std::pair{89, 65}, std::pair{30, 20}}) {
+    const Mesh mesh = tristream::testing::random_lattice_mesh(45, 33, 110, 77, 0, 1);
+    SibsonCoordinates swept(mesh.points), single(mesh.points);
+    const PixelMapping map(45, 33, w, h);
+    std::vector<int> visits(std::size_t(w) * h, 0);
+    std::vector<NeighbourWeight> expected;
+    swept.for_each_sample(map, 44, 32, [&](int i, int j, const std::vector<NeighbourWeight>& got) {
+      INFO("output " << w << "x" << h << ", pixel " << i << ", " << j);
+      ++visits[std::size_t(j) * w + i];
+      REQUIRE(single.compute(map.sample(i, j), expected));
+      std::map<std::uint32_t, double> a, b;
+      for (const auto& nw : got) a[nw.vertex] += nw.weight;
+      for (const auto& nw : expected) b[nw.vertex] += nw.weight;
+      for (const auto& [v, x] : a) CHECK(std::abs(x - b[v]) < 1e-12);
+      for (const auto& [v, x] : b) CHECK(std::abs(x - a[v]) < 1e-12);
+    });
+    CHECK(std::count(visits.begin(), visits.end(), 1) == w * h);
+  }
+}

@@ -158,14 +158,17 @@ bool SibsonCoordinates::compute_in(const Point& p, std::uint32_t t0, std::vector
   return cavity_coordinates(p, t0, out);
 }
 
-bool SibsonCoordinates::cavity_coordinates(const Point& p, std::uint32_t t0, std::vector<NeighbourWeight>& out) {
-  out.clear();
-  // The cavity: triangles whose circumcircle strictly contains p, a connected set around t0.
+void SibsonCoordinates::next_query() {
   if (++query_ == 0) {
     std::fill(mark_.begin(), mark_.end(), 0);
     std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), 0);
     query_ = 1;
   }
+}
+
+bool SibsonCoordinates::cavity_coordinates(const Point& p, std::uint32_t t0, std::vector<NeighbourWeight>& out) {
+  // The cavity: triangles whose circumcircle strictly contains p, a connected set around t0.
+  next_query();
   cavity_.clear();
   stack_.assign(1, t0);
   mark_[t0] = 2 * std::uint64_t(query_) + 1;
@@ -183,15 +186,21 @@ bool SibsonCoordinates::cavity_coordinates(const Point& p, std::uint32_t t0, std
     }
   }
   const std::uint64_t in_mark = 2 * std::uint64_t(query_) + 1;
-  auto inside = [&](std::uint32_t n) { return n != no_neighbour && mark_[n] == in_mark; };
+  return stolen_areas(p, cavity_, [&](std::uint32_t n) { return n != no_neighbour && mark_[n] == in_mark; }, out);
+}
 
+template <class Inside>
+bool SibsonCoordinates::stolen_areas(const Point& p, std::span<const std::uint32_t> cavity, Inside inside,
+                                     std::vector<NeighbourWeight>& out) {
+  out.clear();
   // The stolen polygon of a cavity boundary vertex w, between boundary edges u -> w and
   // w -> x (cavity on their left), is [g(u, w), c(T1), ..., c(Tm), g(w, x)]: c(T) the
   // circumcentres of the cavity triangles around w, g the circumcentre of p with a boundary
   // edge. Its shoelace sum is accumulated edge by edge, with coordinates relative to p:
   // crossing cavity edge a -> b from T to the cavity triangle N adds c(T) x c(N) to a's
   // polygon; boundary edge a -> b of T adds c(T) x g to a's and g x c(T) to b's, and
-  // closes a's polygon with g x (a's first point) and opens b's with g.
+  // closes a's polygon with g x (a's first point) and opens b's with g. (Every vertex of a
+  // cavity triangle is on the cavity boundary.) The caller has called next_query().
   auto slot_of = [&](std::uint32_t v) __attribute__((always_inline)) {
     if (vertex_stamp_[v] != query_) {
       vertex_stamp_[v] = query_;
@@ -202,7 +211,7 @@ bool SibsonCoordinates::cavity_coordinates(const Point& p, std::uint32_t t0, std
     }
     return vertex_slot_[v];
   };
-  for (const std::uint32_t t : cavity_) {
+  for (const std::uint32_t t : cavity) {
     const auto& v = mesh_.triangles[t].v;
     const Point ct = {centre_[t].x - p.x, centre_[t].y - p.y};
     for (int e = 0; e < 3; ++e) {
@@ -245,6 +254,142 @@ bool SibsonCoordinates::cavity_coordinates(const Point& p, std::uint32_t t0, std
   const double inv = 1.0 / total;
   for (NeighbourWeight& nw : out) nw.weight *= inv;
   return true;
+}
+
+void SibsonCoordinates::for_each_sample(const PixelMapping& map, double xmax, double ymax, const SampleVisit& visit) {
+  const std::size_t nt = mesh_.triangles.size();
+  const int width = map.out_width, height = map.out_height;
+  // Rows whose sample line can meet each triangle's circle (with a row of margin), bucketed.
+  std::vector<double> radius2(nt);
+  std::vector<std::uint32_t> row_start(std::size_t(height) + 1, 0), row_items;
+  auto rows_of = [&](std::uint32_t t, int& j0, int& j1) {
+    const double r = std::sqrt(radius2[t]);
+    const double lo = (centre_[t].y - r) / map.sy, hi = (centre_[t].y + r) / map.sy;
+    j0 = lo < 1 ? 0 : lo > height ? height : int(lo) - 1;
+    j1 = hi < -1 ? -1 : hi > height - 2 ? height - 1 : int(hi) + 1;
+  };
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    const Point& a = mesh_.points[mesh_.triangles[t].v[0]];
+    radius2[t] = (a.x - centre_[t].x) * (a.x - centre_[t].x) + (a.y - centre_[t].y) * (a.y - centre_[t].y);
+    int j0, j1;
+    rows_of(t, j0, j1);
+    for (int j = j0; j <= j1; ++j) ++row_start[j + 1];
+  }
+  for (int j = 0; j < height; ++j) row_start[j + 1] += row_start[j];
+  row_items.resize(row_start[height]);
+  {
+    std::vector<std::uint32_t> fill(row_start.begin(), row_start.end() - 1);
+    for (std::uint32_t t = 0; t < nt; ++t) {
+      int j0, j1;
+      rows_of(t, j0, j1);
+      for (int j = j0; j <= j1; ++j) row_items[fill[j]++] = t;
+    }
+  }
+
+  // Per row: each circle's run of columns strictly inside it, from the chord's estimate
+  // settled by exact tests at its ends (the run is an interval: a disk meets a line in a
+  // segment). Entering and leaving columns become events; the sweep keeps the active set,
+  // which for a point strictly inside the hull is its Bowyer-Watson cavity.
+  std::vector<std::uint32_t> enter_start(std::size_t(width) + 2), leave_start(std::size_t(width) + 2);
+  std::vector<std::uint32_t> enter_items, leave_items;
+  std::vector<std::pair<int, int>> run;  // per row item: [first, last] column, first > last if none
+  std::vector<std::uint32_t> active, position(nt, 0);
+  std::vector<std::uint8_t> is_active(nt, 0);
+  std::vector<NeighbourWeight> weights;
+  for (int j = 0; j < height; ++j) {
+    const double y = map.sample(0, j).y;
+    const std::uint32_t b0 = row_start[j], b1 = row_start[j + 1];
+    run.assign(b1 - b0, {0, -1});
+    std::fill(enter_start.begin(), enter_start.end(), 0);
+    std::fill(leave_start.begin(), leave_start.end(), 0);
+    for (std::uint32_t k = b0; k < b1; ++k) {
+      const std::uint32_t t = row_items[k];
+      const auto& tv = mesh_.triangles[t].v;
+      auto in = [&](int i) {
+        const Point p = map.sample(i, j);
+        // A vertex of t is on its circle: skip the exact test the filter would need there.
+        for (const std::uint32_t v : tv)
+          if (mesh_.points[v].x == p.x && mesh_.points[v].y == p.y) return false;
+        return in_circle(t, p);
+      };
+      const double dy = y - centre_[t].y;
+      const double h = std::sqrt(std::max(0.0, radius2[t] - dy * dy));
+      const double cx = centre_[t].x / map.sx, hx = h / map.sx;
+      // Columns are clamped to the image (the estimates lie far inside int range there).
+      auto clamp_col = [&](double x) { return x < -1 ? -1.0 : x > width ? double(width) : x; };
+      const double lo = clamp_col(cx - hx), hi = clamp_col(cx + hx);
+      int first = int(std::floor(lo)) + 1, last = int(std::ceil(hi)) - 1;  // strictly inside
+      first = std::max(first, 0);
+      last = std::min(last, width - 1);
+      if (first > last) {
+        // The estimate says no column: the nearest columns to the centre settle it.
+        const int c0 = int(std::floor(clamp_col(cx)));
+        first = width, last = -1;
+        for (int c = std::max(c0, 0); c <= std::min(c0 + 1, width - 1); ++c)
+          if (in(c)) first = std::min(first, c), last = std::max(last, c);
+        if (first > last) continue;
+      } else {
+        if (!in(first) || !in(last)) {
+          // Shrink to exact ends (only possible by rounding, at most a column or two).
+          while (first <= last && !in(first)) ++first;
+          while (last >= first && !in(last)) --last;
+          if (first > last) continue;
+        }
+      }
+      while (first > 0 && in(first - 1)) --first;
+      while (last < width - 1 && in(last + 1)) ++last;
+      run[k - b0] = {first, last};
+      ++enter_start[first + 1];
+      ++leave_start[last + 2];
+    }
+    for (int i = 0; i <= width; ++i) {
+      enter_start[i + 1] += enter_start[i];
+      leave_start[i + 1] += leave_start[i];
+    }
+    enter_items.resize(enter_start[width + 1]);
+    leave_items.resize(leave_start[width + 1]);
+    {
+      std::vector<std::uint32_t>& ef = stack_;  // scratch: fill positions
+      ef.assign(enter_start.begin(), enter_start.end());
+      std::vector<std::uint32_t> lf(leave_start.begin(), leave_start.end());
+      for (std::uint32_t k = b0; k < b1; ++k) {
+        const auto [first, last] = run[k - b0];
+        if (first > last) continue;
+        enter_items[ef[first]++] = row_items[k];
+        leave_items[lf[last + 1]++] = row_items[k];
+      }
+    }
+    for (int i = 0; i < width; ++i) {
+      for (std::uint32_t k = leave_start[i]; k < leave_start[i + 1]; ++k) {
+        const std::uint32_t t = leave_items[k];
+        const std::uint32_t moved = active.back();
+        active[position[t]] = moved;
+        position[moved] = position[t];
+        active.pop_back();
+        is_active[t] = 0;
+      }
+      for (std::uint32_t k = enter_start[i]; k < enter_start[i + 1]; ++k) {
+        const std::uint32_t t = enter_items[k];
+        position[t] = std::uint32_t(active.size());
+        active.push_back(t);
+        is_active[t] = 1;
+      }
+      const Point p = map.sample(i, j);
+      bool ok;
+      if (!(p.x >= 0 && p.x <= xmax && p.y >= 0 && p.y <= ymax)) {
+        ok = compute(p, weights);  // the caller's rectangle is the hull; outside it by rounding
+      } else if (active.empty()) {
+        ok = compute(p, weights);  // in no circle: p is a vertex
+      } else {
+        next_query();
+        ok = stolen_areas(p, active, [&](std::uint32_t n) { return n != no_neighbour && is_active[n]; }, weights);
+        hint_ = active[0];
+      }
+      if (ok) visit(i, j, weights);
+    }
+    for (const std::uint32_t t : active) is_active[t] = 0;  // runs end within the row
+    active.clear();
+  }
 }
 
 std::vector<std::uint32_t> owning_triangles(const Mesh& mesh, const Topology& topo, const PixelMapping& map) {
@@ -389,27 +534,25 @@ void render_natural(const Mesh& mesh, int domain_width, int domain_height, const
   std::vector<std::uint32_t> domain;
   if (!full) domain = owning_triangles(mesh, topo, map);
   const int nc = mesh.value_count;
+  auto write = [&](int i, int j, const std::vector<NeighbourWeight>& weights) {
+    for (int c = 0; c < nc; ++c) {
+      double sum = 0;
+      for (const NeighbourWeight& nw : weights) sum += nw.weight * mesh.value(nw.vertex, c);
+      out.at(i, j, c) = sum;
+    }
+  };
+  if (full) {
+    sibson.for_each_sample(map, xmax, ymax, write);
+    return;
+  }
   std::vector<NeighbourWeight> weights;
   std::uint32_t row_start = 0;  // where the next row's first search starts: this row's start
   for (int j = 0; j < out.height; ++j) {
     sibson.set_hint(row_start);
     for (int i = 0; i < out.width; ++i) {
       if (i == 1) row_start = sibson.hint();
-      const std::size_t k = std::size_t(j) * out.width + i;
-      const Point p = map.sample(i, j);
-      bool ok;
-      if (domain.empty()) {
-        const bool in_rectangle = p.x >= 0 && p.x <= xmax && p.y >= 0 && p.y <= ymax;
-        ok = in_rectangle ? sibson.compute_in_hull(p, weights) : sibson.compute(p, weights);
-      } else {
-        ok = domain[k] != no_neighbour && sibson.compute_in_hull(p, weights);
-      }
-      if (!ok) continue;
-      for (int c = 0; c < nc; ++c) {
-        double sum = 0;
-        for (const NeighbourWeight& nw : weights) sum += nw.weight * mesh.value(nw.vertex, c);
-        out.at(i, j, c) = sum;
-      }
+      if (domain[std::size_t(j) * out.width + i] == no_neighbour) continue;
+      if (sibson.compute_in_hull(map.sample(i, j), weights)) write(i, j, weights);
     }
   }
 }

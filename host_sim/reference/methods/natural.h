@@ -19,6 +19,7 @@
 // alone; a point on a hull edge gets the linear interpolation of the edge's two ends (the
 // limit of Sibson's coordinates there, where p's cell becomes unbounded).
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -52,6 +53,14 @@ class SibsonCoordinates {
   // start when its circle still contains p, which skips point location.
   bool compute_in_hull(const Point& p, std::vector<NeighbourWeight>& out);
 
+  // Calls visit(i, j, weights) for every output pixel whose sample point lies in the hull,
+  // in rows. The caller guarantees that the hull is the rectangle [0, xmax] x [0, ymax]
+  // (covers_rectangle()). Instead of a search per pixel it sweeps each row: every circumcircle
+  // meets the row in one run of columns, found with a few exact tests at its ends, and the
+  // circles active at a column are the point's cavity.
+  using SampleVisit = std::function<void(int i, int j, const std::vector<NeighbourWeight>& weights)>;
+  void for_each_sample(const PixelMapping& map, double xmax, double ymax, const SampleVisit& visit);
+
   // The triangle where the next compute() starts its walk (the last one located).
   std::uint32_t hint() const { return hint_; }
   void set_hint(std::uint32_t t) { hint_ = t; }
@@ -66,6 +75,11 @@ class SibsonCoordinates {
   std::uint32_t locate(const Point& p);
   // The weights from the cavity grown from t0, whose circle strictly contains p.
   bool cavity_coordinates(const Point& p, std::uint32_t t0, std::vector<NeighbourWeight>& out);
+  // The weights from the stolen areas, given the cavity and membership in it.
+  template <class Inside>
+  bool stolen_areas(const Point& p, std::span<const std::uint32_t> cavity, Inside inside,
+                    std::vector<NeighbourWeight>& out);
+  void next_query();  // a fresh stamp for mark_ and vertex_stamp_
   bool on_hull_edge(const Point& p, std::uint32_t a, std::uint32_t b, std::vector<NeighbourWeight>& out) const;
   // incircle(triangle t, p) > 0, decided exactly.
   bool in_circle(std::uint32_t t, const Point& p) const;
