@@ -9,11 +9,12 @@
 // of p's cell. The stolen piece of v's cell is the polygon [g(u, v), c(T1), ..., c(Tm),
 // g(v, w)]: c(T) the circumcentres of the cavity triangles around v, g the circumcentres of
 // p with the cavity boundary edges (u, v) and (v, w).
-// Nothing is rebuilt per pixel: the renderer visits pixels in rows; the cavity search starts
-// from the previous pixel's start triangle while its circle still contains p (else a walk
-// from there locates p), and grows with incircle tests that are exact (a floating-point
-// filter with precomputed per-triangle terms, then geometry/predicates.h when it cannot
-// decide).
+// Nothing is rebuilt per pixel. When the mesh covers the image rectangle the renderer sweeps
+// each row: every circumcircle meets the row in one run of columns (its ends settled by exact
+// incircle tests), and the circles active at a column are that point's cavity. Otherwise each
+// domain pixel's cavity is grown from the previous pixel's start triangle while its circle
+// still contains the point (else a walk from there locates it). Incircle decisions are exact:
+// a floating-point filter with precomputed per-triangle terms, then geometry/predicates.h.
 //
 // Exact for every point of the closed convex hull: a point on a vertex gets that vertex
 // alone; a point on a hull edge gets the linear interpolation of the edge's two ends (the
