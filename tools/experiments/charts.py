@@ -17,6 +17,7 @@ PALETTE = {
     "clough-tocher": "#17becf",
 }
 EXTRA = ["#e377c2", "#7f7f7f", "#bcbd22", "#aec7e8", "#ffbb78"]
+WRITTEN = set()  # every figure written by this run (the report removes older ones)
 METRIC_LABEL = {"mse": "MSE", "psnr": "PSNR [dB]", "ssim": "SSIM (Gaussian 11x11)", "ssim_8x8": "SSIM (8x8 box)"}
 
 
@@ -38,6 +39,7 @@ def save(fig, path: Path) -> Path:
         fig.savefig(buf, format="png", dpi=100, bbox_inches="tight")
     plt.close(fig)
     atomic_write_bytes(path, buf.getvalue())
+    WRITTEN.add(Path(path).resolve())
     return path
 
 

@@ -132,6 +132,22 @@ def detail_window(tri: trifile.TriFile, width: int, height: int, size: int):
     return (int(vx) + margin, int(vy) + margin, size, size)
 
 
+def excess_error_window(original: np.ndarray, renders: dict, size: int, margin: int = 8):
+    """The size x size window where the patch methods (bezier, coons) exceed bilinear's absolute
+    error the most on average: where their artifacts are. None without those renders."""
+    if "bilinear" not in renders or not any(m in renders for m in ("bezier", "coons")):
+        return None
+    h, w = original.shape[:2]
+    size = min(size, w - 2 * margin, h - 2 * margin)
+    base = abs_error(renders["bilinear"][0], original)
+    excess = sum(abs_error(renders[m][0], original) - base for m in ("bezier", "coons") if m in renders)
+    mean = uniform_filter(excess, size, mode="constant")
+    half = size // 2
+    valid = mean[half + margin:h - size + half - margin + 1, half + margin:w - size + half - margin + 1]
+    vy, vx = np.unravel_index(np.argmax(valid), valid.shape)
+    return (int(vx) + margin, int(vy) + margin, size, size)
+
+
 def neighbour_contrast(tris: np.ndarray, area: np.ndarray) -> np.ndarray:
     """Per triangle, the largest area ratio (>= 1) with a triangle sharing an edge; 1 without one."""
     edges = np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]], tris[:, [2, 0]]])

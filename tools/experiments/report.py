@@ -396,6 +396,11 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
             "<li>cache/: triangulations and results, reused by the next run unless --force</li></ul>")
     doc.add("</body></html>")
     atomic_write_text(out_dir / "index.html", "\n".join(doc.parts))
+    for folder in (chart_dir, pic_dir):
+        if folder.is_dir():
+            for f in folder.iterdir():
+                if f.suffix in (".png", ".jpg") and f.resolve() not in charts.WRITTEN:
+                    f.unlink()  # a figure of an earlier run that this run did not draw
 
 
 METHOD_ORDER = ["bilinear", "zienkiewicz", "bezier", "coons", "voronoi", "natural", "clough-tocher"]
@@ -573,8 +578,9 @@ def pictures_section(doc, rows, plan, pic_dir):
     doc.h(2, "Pictures", "pictures")
     doc.p("The triangulation over the image, the Voronoi diagram of its vertices (scipy.spatial.Voronoi), each "
           "method's render (reference engine) and its absolute error (mean over channels; one colour scale, "
-          f"clipped at {pictures.ERROR_VMAX}). The detail is the window where triangle sizes vary most, where "
-          "the thesis saw patch artifacts.")
+          f"clipped at {pictures.ERROR_VMAX}). Two details are chosen from the data: where the patch methods "
+          "lose most against bilinear, and where triangles of very different sizes meet (the thesis's explanation "
+          "of the patch artifacts).")
     for img, lab, nominal in plan.picture_cases:
         sel = [r for r in rows if r["image"] == img and r["colour"] == lab and r["nominal_vertices"] == nominal
                and r["study"] in ("grey", "colour") and r["engine"] == "reference" and not r["variant"]
@@ -601,7 +607,15 @@ def pictures_section(doc, rows, plan, pic_dir):
         path = pictures.renders_figure(pic_dir / f"{stem}_renders.jpg", original, renders,
                                        f"{img} ({lab}, {tri.vertex_count():,} vertices): renders and absolute errors")
         doc.img(path, "Each method's render and its absolute error.")
-        window = pictures.detail_window(tri, w, h, 96)
-        path = pictures.detail_figure(pic_dir / f"{stem}_detail.png", original, tri, renders, window,
-                                      f"{img}: detail at x={window[0]}, y={window[1]} ({window[2]}x{window[3]})")
-        doc.img(path, "Detail (zoomed): original, triangulation, each method, and the absolute errors.")
+        windows = [("artifacts", pictures.excess_error_window(original, renders, 112),
+                    "the window where Bezier and Coons exceed bilinear's absolute error the most"),
+                   ("sizes", pictures.detail_window(tri, w, h, 112),
+                    "the window where neighbouring triangles differ most in area (border triangles left out)")]
+        for name, window, why in windows:
+            if window is None:
+                continue
+            path = pictures.detail_figure(pic_dir / f"{stem}_detail_{name}.png", original, tri, renders, window,
+                                          f"{img}: detail at x={window[0]}, y={window[1]} "
+                                          f"({window[2]}x{window[3]})")
+            doc.img(path, f"Detail (zoomed), {why}: original, triangulation, each method, and the absolute "
+                          f"errors.")
