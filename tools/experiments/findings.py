@@ -201,9 +201,39 @@ def grey_findings(grey_rows):
     return out
 
 
+def ranking_finding(rows, metric, name, scope, thesis_text):
+    present = sorted({r["method"] for r in rows if not r["variant"]})
+    ranks = mean_ranks(rows, metric, [m for m in THESIS_RANKING if m in present])
+    if len(ranks) < 2:
+        return None
+    ours = sorted(ranks, key=ranks.get)
+    expected = [m for m in THESIS_RANKING if m in ranks]
+    pairs = agree = 0
+    reversed_pairs = []
+    for i in range(len(expected)):
+        for j in range(i + 1, len(expected)):
+            pairs += 1
+            if ranks[expected[i]] <= ranks[expected[j]]:
+                agree += 1
+            else:
+                reversed_pairs.append(f"{expected[j]} ahead of {expected[i]}")
+    missing = [m for m in THESIS_RANKING if m not in ranks]
+    text = (f"Mean rank by {name} over the {scope}: " + ", ".join(f"{m} {ranks[m]:.2f}" for m in ours)
+            + f". {agree} of {pairs} pairs in the thesis's order"
+            + (f"; reversed: {', '.join(reversed_pairs)}" if reversed_pairs else "")
+            + (f". Not built, so not ranked: {', '.join(missing)}" if missing else "") + ".")
+    return {"topic": f"Ranking of the methods, {scope.split(' (')[0]} ({name})", "thesis": thesis_text,
+            "here": text, "verdict": verdict(agree / pairs if pairs else None)}
+
+
 def colour_findings(colour_rows):
     out = []
     rows = [r for r in ok(colour_rows) if not r["variant"] and r["study"] == "colour"]
+    f = ranking_finding(rows, "psnr", "PSNR", "colour cases (image x total x triangulation)",
+                        "On colour images Zienkiewicz and bilinear are still the best, followed closely by natural "
+                        "neighbour (6.1.2, figure 6.12).")
+    if f:
+        out.append(f)
     idx = {(r["image"], r["nominal_vertices"], r["mode"], r["space"], r["cotri"], r["method"]): r for r in rows}
     for metric, name in (("psnr", "PSNR"), ("ssim", "SSIM")):
         sep_wins = total = 0
