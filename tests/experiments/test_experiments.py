@@ -83,6 +83,17 @@ class HelpersTest(unittest.TestCase):
         area = np.array([1.0, 4.0, 2.0])
         self.assertTrue(np.allclose(neighbour_contrast(tris, area), [4.0, 4.0, 1.0]))
 
+    def test_excess_error_window_finds_the_patch_artifact(self):
+        from pictures import excess_error_window
+        original = np.full((100, 120), 100, np.uint8)
+        bilinear = original.copy()
+        coons = original.copy()
+        coons[60:70, 80:90] = 200  # an artifact of the patch method only
+        x, y, w, h = excess_error_window(original, {"bilinear": (bilinear, ""), "coons": (coons, "")}, 20)
+        self.assertEqual((w, h), (20, 20))
+        self.assertTrue(x <= 80 and x + w >= 90 and y <= 60 and y + h >= 70, (x, y))
+        self.assertIsNone(excess_error_window(original, {"bilinear": (bilinear, "")}, 20))
+
     def test_luma_rounds_half_away_from_zero(self):
         rgb = np.array([[[255, 255, 255], [0, 0, 0], [1, 2, 0]]], dtype=np.uint8)
         # 0.299 + 1.174 = 1.473 -> 1
@@ -143,6 +154,12 @@ class ToolsTest(unittest.TestCase):
             out = subprocess.run([str(BIN / "trisim"), "metrics", str(p), str(demo), "--json"],
                                  capture_output=True, text=True, check=True).stdout
             self.assertIn('"mse":0.0', out.replace(" ", ""))
+
+    def test_driver_usage_error_exits_64(self):
+        p = subprocess.run(["/usr/bin/python3", str(REPO / "tools/experiments/run_experiments.py"), str(BIN),
+                            tempfile.gettempdir() + "/exp-never", "--set", "huge"], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 64)
+        self.assertIn("--set", p.stderr)
 
     def test_driver_rejects_a_missing_bin_dir(self):
         p = subprocess.run(["/usr/bin/python3", str(REPO / "tools/experiments/run_experiments.py"),

@@ -31,8 +31,14 @@ def fail(code, message):
     sys.exit(code)
 
 
+class Parser(argparse.ArgumentParser):
+    def error(self, message):
+        self.print_usage(sys.stderr)
+        fail(EXIT_USAGE, message)
+
+
 def parse_args(argv):
-    p = argparse.ArgumentParser(prog="run_experiments.py", description=__doc__.split("\n\n")[0])
+    p = Parser(prog="run_experiments.py", description=__doc__.split("\n\n")[0])
     p.add_argument("bin_dir", help="directory with trisim and triencode (e.g. build/bin)")
     p.add_argument("out_dir", help="report directory (e.g. out/report)")
     p.add_argument("--set", dest="set_name", choices=["quick", "full"], default="quick",
