@@ -259,6 +259,15 @@ bool SibsonCoordinates::stolen_areas(const Point& p, std::span<const std::uint32
 void SibsonCoordinates::for_each_sample(const PixelMapping& map, double xmax, double ymax, const SampleVisit& visit) {
   const std::size_t nt = mesh_.triangles.size();
   const int width = map.out_width, height = map.out_height;
+  std::vector<NeighbourWeight> weights;
+  bool finite = true;
+  for (const Point& c : centre_) finite = finite && std::isfinite(c.x) && std::isfinite(c.y);
+  if (!finite) {  // a sliver whose circumcentre overflowed: the per-pixel search needs no circle
+    for (int j = 0; j < height; ++j)
+      for (int i = 0; i < width; ++i)
+        if (compute(map.sample(i, j), weights)) visit(i, j, weights);
+    return;
+  }
   // Rows whose sample line can meet each triangle's circle (with a row of margin), bucketed.
   std::vector<double> radius2(nt);
   std::vector<std::uint32_t> row_start(std::size_t(height) + 1, 0), row_items;
@@ -295,7 +304,6 @@ void SibsonCoordinates::for_each_sample(const PixelMapping& map, double xmax, do
   std::vector<std::pair<int, int>> run;  // per row item: [first, last] column, first > last if none
   std::vector<std::uint32_t> active, position(nt, 0);
   std::vector<std::uint8_t> is_active(nt, 0);
-  std::vector<NeighbourWeight> weights;
   for (int j = 0; j < height; ++j) {
     const double y = map.sample(0, j).y;
     const std::uint32_t b0 = row_start[j], b1 = row_start[j + 1];
