@@ -199,6 +199,13 @@ def main(argv):
             executor.time_run(t)
             bar.update(1)
     elapsed = time.time() - started
+    from runner import file_sha256
+    changed = [str(t) for t, sha in ((tools.trisim, tools.trisim_sha), (tools.triencode, tools.triencode_sha))
+               if file_sha256(t) != sha]
+    if changed:
+        plan.notes.append(f"{', '.join(changed)} changed during the run (rebuilt?): results were keyed by the "
+                          f"binaries found at the start; run again to recompute them with the new ones.")
+        print(f"run_experiments: warning: {', '.join(changed)} changed during the run", file=sys.stderr)
     context = {
         "set": plan.name, "machine": machine_description(), "commit": git_commit(repo),
         "trisim_sha": tools.trisim_sha[:16], "triencode_sha": tools.triencode_sha[:16],
