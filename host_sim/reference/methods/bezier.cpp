@@ -42,7 +42,7 @@ void rasterize_exact(const BezierPatch& patch, int channels, detail::PatchCanvas
   std::vector<double> value(channels);
   auto visit = [&](int x, int y, double a, double b) {
     if (!canvas.in_domain(x, y)) return;
-    if (!detail::refine_parameters(patch, x, y, a, b)) return;
+    if (!patch.solve(x, y, a, b)) return;
     if (!patch.in_domain(a, b)) return;  // outside the patch, inside a boundary chord
     patch.values(a, b, value.data());
     canvas.add(x, y, value.data());
@@ -82,6 +82,33 @@ BezierPatch::BezierPatch(const PatchControl& control) {
     return 2 * std::hypot(p[s].x - 2 * p[m].x + p[e].x, p[s].y - 2 * p[m].y + p[e].y);
   };
   second_derivative_ = std::max({second(p200, p101, p002), second(p020, p011, p002), second(p200, p110, p020)});
+}
+
+bool BezierPatch::solve(double x, double y, double& a, double& b) const {
+  const XY& kaa = pos_[3];
+  const XY& kab = pos_[4];
+  const XY& kbb = pos_[5];
+  double px, py, xa, xb, ya, yb;
+  position(a, b, px, py, xa, xb, ya, yb);
+  XY r{x - px, y - py};
+  XY ja{xa, ya}, jb{xb, yb};  // columns of the Jacobian
+  double ca = a, cb = b;
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    const double det = ja[0] * jb[1] - jb[0] * ja[1];
+    if (!(std::fabs(det) > 1e-300)) return false;
+    const double da = (jb[1] * r[0] - jb[0] * r[1]) / det;
+    const double db = (ja[0] * r[1] - ja[1] * r[0]) / det;
+    ca += da, cb += db;
+    if (!(std::fabs(ca - a) + std::fabs(cb - b) < 0.25)) return false;
+    r = -(kaa * (da * da) + kab * (da * db) + kbb * (db * db));
+    if (std::fabs(r[0]) + std::fabs(r[1]) < 1e-7) {
+      a = ca, b = cb;
+      return true;
+    }
+    ja += 2 * da * kaa + db * kab;
+    jb += da * kab + 2 * db * kbb;
+  }
+  return false;
 }
 
 int BezierPatch::subdivisions() const { return detail::subdivisions_for(second_derivative_, second_derivative_); }

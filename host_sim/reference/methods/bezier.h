@@ -46,6 +46,13 @@ class BezierPatch {
   void values(double a, double b, double* out) const {
     for (std::size_t c = 0; c < value_.size(); ++c) out[c] = value_[c](a, b);
   }
+  // Solves position(a, b) = (x, y) by Newton's method from (a, b) near the solution. The map
+  // is quadratic, so after a step d the residual is exactly -(k_aa d_a^2 + k_ab d_a d_b +
+  // k_bb d_b^2) and the Jacobian grows by the Hessian times d: one evaluation, then cheap
+  // steps until the residual is below 1e-9 pixels. Returns false, leaving (a, b) alone, when
+  // the Jacobian is singular, the iteration moves 0.25 away or does not settle in 8 steps
+  // (beside a fold, see patch_raster.h).
+  bool solve(double x, double y, double& a, double& b) const;
   // The parameter domain a, b, c >= 0 (up to 1e-12).
   static bool in_domain(double a, double b) { return a >= -1e-12 && b >= -1e-12 && 1 - a - b >= -1e-12; }
   // Subdivisions n per side for the exact variant (patch_raster.h): the second derivatives
