@@ -10,6 +10,7 @@
 #include "encoder/least_squares.h"
 #include "encoder/pixel_scan.h"
 #include "encoder/planes.h"
+#include "encoder/relocate.h"
 #include "geometry/delaunay.h"
 #include "model/color.h"
 
@@ -60,8 +61,11 @@ void run_greedy(GreedyInserter& g, const Planes& target, const EncodeOptions& o,
   }
 }
 
-Mesh finish(Mesh mesh, const Planes& target, VertexFit fit) {
-  if (fit == VertexFit::lsq) encoder::fit_least_squares(mesh, target);
+Mesh finish(Mesh mesh, const Planes& target, VertexFit fit, int relocate_passes) {
+  if (fit == VertexFit::lsq) {
+    encoder::fit_least_squares(mesh, target, relocate_passes <= 0);
+    if (relocate_passes > 0) encoder::relocate_vertices(mesh, target, relocate_passes);
+  }
   for (double& v : mesh.values) v = to_byte(v);
   return mesh;
 }
@@ -157,6 +161,9 @@ EncodeResult encode(const Image& image, const EncodeOptions& o) {
   const std::size_t limit = o.vertices ? o.vertices : pixels;
   encoder::GreedyOptions go;
   go.rank_by_total_error = o.rank_by_total_error;
+  go.candidates = o.candidates;
+  go.rank_by_reduction = o.rank_by_reduction;
+  go.local_fit = o.local_fit;
 
   if (grey || o.color == ColorMode::co) {
     Mesh mesh;
@@ -167,14 +174,14 @@ EncodeResult encode(const Image& image, const EncodeOptions& o) {
       run_greedy(g, target, o, limit, 0.0, 1.0);
       mesh = g.mesh();
     }
-    tri.layers.push_back(finish(std::move(mesh), target, o.fit));
+    tri.layers.push_back(finish(std::move(mesh), target, o.fit, o.relocate_passes));
   } else {
     const char* names[2][3] = {{"r", "g", "b"}, {"y", "cb", "cr"}};
     for (int c = 0; c < 3; ++c) {
       const Planes t = encoder::channel_of(target, c), gd = encoder::channel_of(guide, c);
       GreedyInserter g(t, gd, go, pixel_values(t));
       run_greedy(g, t, o, limit, c / 3.0, 1 / 3.0);
-      Mesh mesh = finish(g.mesh(), t, o.fit);
+      Mesh mesh = finish(g.mesh(), t, o.fit, o.relocate_passes);
       mesh.name = names[tri.space == ColorSpace::ycbcr][c];
       tri.layers.push_back(std::move(mesh));
     }
@@ -264,7 +271,7 @@ Triangulation regular_grid(const Image& image, std::size_t vertices, ColorSpace 
       for (int c = 0; c < target.channels; ++c) mesh.values.push_back(to_byte(target.at(x, y, c)));
     }
   mesh.triangles = delaunay_triangulation(mesh.points);
-  tri.layers.push_back(finish(std::move(mesh), target, fit));
+  tri.layers.push_back(finish(std::move(mesh), target, fit, 0));
   return tri;
 }
 

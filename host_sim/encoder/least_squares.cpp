@@ -64,7 +64,7 @@ double linear_squared_error(const Mesh& mesh, const Planes& target) {
   return sse;
 }
 
-LeastSquaresReport fit_least_squares(Mesh& mesh, const Planes& target) {
+LeastSquaresReport fit_least_squares(Mesh& mesh, const Planes& target, bool round_values) {
   const auto scans = prepare(mesh, target);
   const std::size_t n = mesh.vertex_count();
   const int ch = target.channels;
@@ -153,7 +153,8 @@ LeastSquaresReport fit_least_squares(Mesh& mesh, const Planes& target) {
     }
     report.iterations = it;
     report.residual = std::max(report.residual, bnorm == 0 ? 0.0 : std::sqrt(rnorm) / bnorm);
-    for (std::size_t v = 0; v < n; ++v) mesh.values[v * ch + c] = std::clamp(std::round(x[v]), 0.0, 255.0);
+    for (std::size_t v = 0; v < n; ++v)
+      mesh.values[v * ch + c] = std::clamp(round_values ? std::round(x[v]) : x[v], 0.0, 255.0);
   }
   return report;
 }

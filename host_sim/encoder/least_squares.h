@@ -12,12 +12,12 @@ struct LeastSquaresReport {
 };
 
 // Replaces mesh.values by the least-squares fit to `target` (same channel count), each
-// clamped to [0, 255] and rounded to an integer (8-bit values). Vertices must be pixel
+// clamped to [0, 255] and, with `round_values`, rounded to an integer (8-bit values). Vertices must be pixel
 // positions and the triangles must tile the rectangle [0, W-1] x [0, H-1] of `target`.
 // Solves the normal equations (a sparse sampled mass matrix, positive definite because every
 // vertex is itself a pixel) by Jacobi-preconditioned conjugate gradients, starting from the
 // current values.
-LeastSquaresReport fit_least_squares(Mesh& mesh, const Planes& target);
+LeastSquaresReport fit_least_squares(Mesh& mesh, const Planes& target, bool round_values = true);
 
 // Sum over every pixel and channel of the squared error of the linear interpolant of `mesh`
 // against `target` (no rounding, no clamping).

@@ -1,5 +1,6 @@
 // Encoder speed: `bench_encoder` prints the time to encode a 512x512 photograph (grey and
-// colour) to 2,621 and 10,000 vertices; the target is 10,000 vertices under 1 s.
+// colour) to 2,621 and 10,000 vertices, with and without the relocation post-pass; the
+// issue's target is 10,000 vertices under 1 s.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -13,7 +14,8 @@ namespace {
 
 const std::string kImages = "/work/shared/images/";
 
-void encode_image(benchmark::State& state, const std::string& file, tristream::VertexFit fit) {
+void encode_image(benchmark::State& state, const std::string& file, tristream::VertexFit fit,
+                  int relocate_passes = tristream::EncodeOptions{}.relocate_passes) {
   const std::string path = kImages + file;
   if (!std::filesystem::exists(path)) {
     state.SkipWithError(("SKIPPED: " + path + " is absent").c_str());
@@ -23,6 +25,7 @@ void encode_image(benchmark::State& state, const std::string& file, tristream::V
   tristream::EncodeOptions o;
   o.vertices = std::size_t(state.range(0));
   o.fit = fit;
+  o.relocate_passes = relocate_passes;
   double psnr = 0;
   for (auto _ : state) psnr = tristream::encode(img, o).psnr;
   state.counters["psnr_db"] = psnr;
@@ -32,10 +35,19 @@ void grey_pixel(benchmark::State& s) { encode_image(s, "grey/peppers_grey.png", 
 void grey_lsq(benchmark::State& s) { encode_image(s, "grey/peppers_grey.png", tristream::VertexFit::lsq); }
 void colour_pixel(benchmark::State& s) { encode_image(s, "colour/peppers.png", tristream::VertexFit::pixel); }
 void colour_lsq(benchmark::State& s) { encode_image(s, "colour/peppers.png", tristream::VertexFit::lsq); }
+// Without the relocation post-pass (the encoder before it).
+void grey_lsq_no_relocation(benchmark::State& s) {
+  encode_image(s, "grey/peppers_grey.png", tristream::VertexFit::lsq, 0);
+}
+void colour_lsq_no_relocation(benchmark::State& s) {
+  encode_image(s, "colour/peppers.png", tristream::VertexFit::lsq, 0);
+}
 BENCHMARK(grey_pixel)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(grey_lsq)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(colour_pixel)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(colour_lsq)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(grey_lsq_no_relocation)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(colour_lsq_no_relocation)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

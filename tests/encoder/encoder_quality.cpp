@@ -4,7 +4,17 @@
 // regular grid of the same vertex count, at 0.5, 1, 2 and 5 % of the pixels.
 //
 //   encoder_quality [images...]   (default: the three images in /work/shared/images)
+//
+// With --sweep it compares encoder settings instead: bilinear PSNR (the 8-bit linear
+// interpolant against the encoded image) of each setting on every image (default: every image
+// of /work/shared/images/grey and /colour, colour ones as RGB co-triangulations) at each
+// density, then per setting the mean and the smallest gain over the first setting.
+//
+//   encoder_quality --sweep [--settings a,b,...] [--percent p,q,...] [images...]
+#include <algorithm>
 #include <chrono>
+#include <functional>
+#include <sstream>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -42,9 +52,140 @@ Row encoded(const Image& img, const std::string& label, EncodeOptions o) {
   return {label, std::move(r.triangulation), r.seconds};
 }
 
+struct Setting {
+  const char* name;
+  std::function<void(EncodeOptions&)> apply;
+};
+
+// The settings --sweep compares; the first is the reference of the gains.
+const std::vector<Setting>& settings() {
+  static const std::vector<Setting> all = {
+      {"default", [](EncodeOptions&) {}},
+      {"before", [](EncodeOptions& o) { o.relocate_passes = 0; }},
+      {"cand4", [](EncodeOptions& o) { o.candidates = 4; }},
+      {"cand8", [](EncodeOptions& o) { o.candidates = 8; }},
+      {"reduction", [](EncodeOptions& o) { o.rank_by_reduction = true; }},
+      {"reduction_cand4", [](EncodeOptions& o) { o.rank_by_reduction = true, o.candidates = 4; }},
+      {"localfit", [](EncodeOptions& o) { o.local_fit = true; }},
+      {"localfit_cand4", [](EncodeOptions& o) { o.local_fit = true, o.candidates = 4; }},
+      {"reloc1", [](EncodeOptions& o) { o.relocate_passes = 1; }},
+      {"reloc2", [](EncodeOptions& o) { o.relocate_passes = 2; }},
+      {"reloc3", [](EncodeOptions& o) { o.relocate_passes = 3; }},
+      {"reloc4", [](EncodeOptions& o) { o.relocate_passes = 4; }},
+      {"reloc6", [](EncodeOptions& o) { o.relocate_passes = 6; }},
+      {"reloc8", [](EncodeOptions& o) { o.relocate_passes = 8; }},
+      {"reloc4_reduction_cand4", [](EncodeOptions& o) { o.relocate_passes = 4, o.rank_by_reduction = true, o.candidates = 4; }},
+      {"reloc4_sigma0", [](EncodeOptions& o) { o.relocate_passes = 4, o.smoothing_sigma = 0; }},
+      {"reloc4_sigma1", [](EncodeOptions& o) { o.relocate_passes = 4, o.smoothing_sigma = 1; }},
+      {"sigma0", [](EncodeOptions& o) { o.smoothing_sigma = 0; }},
+      {"sigma0.75", [](EncodeOptions& o) { o.smoothing_sigma = 0.75; }},
+      {"sigma1", [](EncodeOptions& o) { o.smoothing_sigma = 1; }},
+  };
+  return all;
+}
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+int sweep(std::vector<std::string> args) {
+  std::vector<const Setting*> chosen;
+  std::vector<double> percents = {0.5, 1, 2, 5};
+  std::vector<std::string> paths;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--settings" && i + 1 < args.size()) {
+      for (const std::string& name : split(args[++i])) {
+        auto it = std::find_if(settings().begin(), settings().end(), [&](const Setting& s) { return name == s.name; });
+        if (it == settings().end()) {
+          std::fprintf(stderr, "encoder_quality: unknown setting %s\n", name.c_str());
+          return 64;
+        }
+        chosen.push_back(&*it);
+      }
+    } else if (args[i] == "--percent" && i + 1 < args.size()) {
+      percents.clear();
+      for (const std::string& p : split(args[++i])) percents.push_back(std::stod(p));
+    } else {
+      paths.push_back(args[i]);
+    }
+  }
+  if (chosen.empty())
+    for (const Setting& s : settings()) chosen.push_back(&s);
+  if (paths.empty()) {
+    for (const char* dir : {"/work/shared/images/grey", "/work/shared/images/colour"}) {
+      if (!std::filesystem::is_directory(dir)) {
+        std::fprintf(stderr, "encoder_quality: SKIPPED %s (absent)\n", dir);
+        continue;
+      }
+      std::vector<std::string> found;
+      for (const auto& e : std::filesystem::directory_iterator(dir))
+        if (e.path().extension() == ".png") found.push_back(e.path().string());
+      std::sort(found.begin(), found.end());
+      paths.insert(paths.end(), found.begin(), found.end());
+    }
+  }
+  std::printf("| image | %% pixels |");
+  for (const Setting* s : chosen) std::printf(" %s |", s->name);
+  std::printf("\n|---|---|");
+  for (std::size_t i = 0; i < chosen.size(); ++i) std::printf("---|");
+  std::printf("\n");
+  // gains[setting][percent]: gain over the first setting per image.
+  std::vector<std::vector<std::vector<double>>> gains(chosen.size(), std::vector<std::vector<double>>(percents.size()));
+  std::vector<double> seconds(chosen.size(), 0);
+  for (const std::string& path : paths) {
+    if (!std::filesystem::exists(path)) {
+      std::fprintf(stderr, "encoder_quality: SKIPPED %s (absent)\n", path.c_str());
+      continue;
+    }
+    const Image img = read_image(path);
+    const std::string name = std::filesystem::path(path).filename().string();
+    const std::size_t pixels = std::size_t(img.width) * img.height;
+    for (std::size_t k = 0; k < percents.size(); ++k) {
+      std::printf("| %s | %.1f |", name.c_str(), percents[k]);
+      double first = 0;
+      for (std::size_t s = 0; s < chosen.size(); ++s) {
+        EncodeOptions o;
+        o.vertices = std::size_t(pixels * percents[k] / 100 + 0.5);
+        chosen[s]->apply(o);
+        const EncodeResult r = encode(img, o);
+        if (s == 0) first = r.psnr;
+        gains[s][k].push_back(r.psnr - first);
+        seconds[s] += r.seconds;
+        std::printf(" %.2f |", r.psnr);
+        std::fflush(stdout);
+      }
+      std::printf("\n");
+    }
+  }
+  std::printf("\nGain over %s in dB, mean (smallest) over the images; encode time summed:\n\n| setting |", chosen[0]->name);
+  for (double p : percents) std::printf(" %.1f %% |", p);
+  std::printf(" all | seconds |\n|---|");
+  for (std::size_t k = 0; k <= percents.size(); ++k) std::printf("---|");
+  std::printf("---|\n");
+  for (std::size_t s = 0; s < chosen.size(); ++s) {
+    std::printf("| %s |", chosen[s]->name);
+    double total = 0, low = 1e9;
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < percents.size(); ++k) {
+      const auto& g = gains[s][k];
+      double sum = 0, min = 1e9;
+      for (double v : g) sum += v, min = std::min(min, v);
+      total += sum, count += g.size(), low = std::min(low, min);
+      std::printf(" %+.2f (%+.2f) |", g.empty() ? 0 : sum / double(g.size()), g.empty() ? 0 : min);
+    }
+    std::printf(" %+.2f (%+.2f) | %.1f |\n", count ? total / double(count) : 0, count ? low : 0, seconds[s]);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--sweep") return sweep(std::vector<std::string>(argv + 2, argv + argc));
   std::vector<std::string> paths(argv + 1, argv + argc);
   if (paths.empty())
     for (const char* p : {"grey/boat.png", "grey/peppers_grey.png", "colour/peppers.png", "kodak/kodim23.png"})

@@ -14,6 +14,7 @@
 #include "encoder/least_squares.h"
 #include "encoder/pixel_scan.h"
 #include "encoder/planes.h"
+#include "encoder/relocate.h"
 #include "geometry/delaunay.h"
 #include "geometry/predicates.h"
 #include "io/image_io.h"
@@ -203,6 +204,7 @@ TEST_CASE("least squares reproduces a linear image and lowers the error", "[enco
   const encoder::Planes t3 = encoder::to_planes(img, ColorSpace::rgb);
   o = with_vertices(300);
   o.smoothing_sigma = 1;  // same positions for both fits
+  o.relocate_passes = 0;
   o.fit = VertexFit::pixel;
   const Mesh pixel = encode(img, o).triangulation.layers[0];
   o.fit = VertexFit::lsq;
@@ -213,6 +215,44 @@ TEST_CASE("least squares reproduces a linear image and lowers the error", "[enco
     REQUIRE(fitted.points[v].y == pixel.points[v].y);
   }
   REQUIRE(encoder::linear_squared_error(fitted, t3) < 0.9 * encoder::linear_squared_error(pixel, t3));
+}
+
+TEST_CASE("relocation keeps a Delaunay tiling of distinct pixels and lowers the error", "[encoder]") {
+  for (int channels : {1, 3}) {
+    const Image img = synthetic(96, 80, channels, 23);
+    const encoder::Planes target = encoder::to_planes(img, channels == 1 ? ColorSpace::grey : ColorSpace::rgb);
+    EncodeOptions o = with_vertices(300);
+    o.relocate_passes = 0;
+    const Mesh before = encode(img, o).triangulation.layers[0];
+    Mesh m = before;
+    const encoder::RelocateReport report = encoder::relocate_vertices(m, target, 4);
+    REQUIRE(report.passes >= 1);
+    REQUIRE(report.moves > 0);
+    REQUIRE(report.sse_before == Approx(encoder::linear_squared_error(before, target)).epsilon(1e-9));
+    REQUIRE(report.sse_after == Approx(encoder::linear_squared_error(m, target)).epsilon(1e-9));
+    REQUIRE(report.sse_after < 0.97 * report.sse_before);
+    REQUIRE(m.vertex_count() == before.vertex_count());
+    std::size_t moved = 0;
+    std::set<std::pair<double, double>> distinct;
+    for (std::size_t v = 0; v < m.vertex_count(); ++v) {
+      const Point& p = m.points[v];
+      REQUIRE(p.x == std::floor(p.x));
+      REQUIRE(p.y == std::floor(p.y));
+      distinct.insert({p.x, p.y});
+      moved += p.x != before.points[v].x || p.y != before.points[v].y;
+      // Border vertices stay on their side.
+      if (before.points[v].x == 0 || before.points[v].x == 95) REQUIRE(p.x == before.points[v].x);
+      if (before.points[v].y == 0 || before.points[v].y == 79) REQUIRE(p.y == before.points[v].y);
+    }
+    REQUIRE(moved > 0);
+    REQUIRE(distinct.size() == m.vertex_count());
+    for (auto corner : {std::pair{0.0, 0.0}, {95.0, 0.0}, {0.0, 79.0}, {95.0, 79.0}}) REQUIRE(distinct.count(corner) == 1);
+    for (const Triangle& t : m.triangles) {
+      REQUIRE(orient2d(m.points[t.v[0]], m.points[t.v[1]], m.points[t.v[2]]) > 0);
+      for (const Point& p : m.points) REQUIRE(incircle(m.points[t.v[0]], m.points[t.v[1]], m.points[t.v[2]], p) <= 0);
+    }
+    for (int c : visits(m, img.width, img.height)) REQUIRE(c == 1);
+  }
 }
 
 TEST_CASE("the two improvements beat plain Garland-Heckbert on a noisy picture", "[encoder]") {

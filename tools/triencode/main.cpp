@@ -45,12 +45,14 @@ int main(int argc, char** argv) {
   CLI::App app{"Encode an image (PNG, JPEG, BMP, PGM/PPM) as a triangulation (.tri) by greedy insertion:\n"
                "start from the four corners, repeatedly insert the pixel of largest error under the\n"
                "linear interpolant (Garland & Heckbert 1995; triangles ranked by total squared error,\n"
-               "candidates chosen on a Gaussian-smoothed copy)."};
+               "candidates chosen on a Gaussian-smoothed copy), then move vertices to neighbouring pixels\n"
+               "where that lowers the error of the least-squares fit."};
   std::string input, output;
   std::size_t vertices = 0;
   double max_rms = 0;
   std::string color = "co", space = "rgb", cotri = "greedy", fit = "lsq", rank = "total";
   double sigma = -1;
+  int relocate = EncodeOptions{}.relocate_passes;
   bool grey = false, quiet = false, json = false;
   app.add_option("image", input, "Input image")->required();
   app.add_option("-o,--output", output, "Output triangulation file (.tri)")->required();
@@ -82,6 +84,11 @@ int main(int argc, char** argv) {
                  "Gaussian sigma of the copy candidates are chosen on (0: the image itself; default 0.5 with "
                  "--fit lsq, 1 with --fit pixel)")
       ->check(CLI::Range(0.0, 10.0));
+  app.add_option("--relocate", relocate,
+                 "With --fit lsq: passes moving vertices to neighbouring pixels where that lowers the error, "
+                 "keeping the mesh Delaunay (0: none)")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
   app.add_flag("-q,--quiet", quiet, "No progress bar");
   app.add_flag("--json", json, "Print the summary as one JSON object");
 
@@ -99,6 +106,7 @@ int main(int argc, char** argv) {
     o.fit = fit == "pixel" ? VertexFit::pixel : VertexFit::lsq;
     o.rank_by_total_error = rank == "total";
     o.smoothing_sigma = sigma;
+    o.relocate_passes = relocate;
     ProgressBar bar;
     if (!quiet && isatty(STDERR_FILENO)) o.progress = [&bar](double f) { bar(f); };
 
