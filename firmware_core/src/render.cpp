@@ -13,11 +13,6 @@ namespace tristream::core {
 namespace detail {
 namespace {
 
-#if TS_ACTIVE_INDEX_BYTES == 2
-using ActiveIndex = uint16_t;
-#else
-using ActiveIndex = uint32_t;
-#endif
 constexpr size_t workspace_alignment = 8;
 constexpr int16_t scratch_empty = INT16_MIN;
 
@@ -301,30 +296,54 @@ void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
   }
 }
 
-// The active-triangle list of one layer over caller memory.
-struct ActiveList {
+// The active triangles of one layer: a bitmap over the window [base, cursor) of the triangle
+// stream (sorted by top row), in caller memory, addressed as a ring (triangle t at bit
+// t mod capacity, unique while the window is no longer than the capacity). base only passes
+// triangles that ended above the current band, so the window is the stretch from the oldest
+// live triangle to the newest started one: at most the layer's triangle count, and one bit per
+// triangle instead of an index per live triangle.
+struct ActiveSet {
   const BlobLayer* layer = nullptr;
-  ActiveIndex* items = nullptr;
-  uint32_t capacity = 0;
-  uint32_t count = 0;
-  uint32_t cursor = 0;  // next triangle (in top-row order) not yet considered
+  uint32_t* words = nullptr;
+  uint32_t capacity = 0;  // bits, a multiple of 32
+  uint32_t base = 0;
+  uint32_t cursor = 0;
 
-  // Drops triangles ending above row y0 and adds those starting at or before row y1 (inclusive).
+  // Bit positions: pos(t) = t mod capacity, stepped with next() to avoid a division per test.
+  uint32_t pos(uint32_t t) const { return t % capacity; }
+  uint32_t next(uint32_t p) const { return p + 1 == capacity ? 0 : p + 1; }
+  bool test_at(uint32_t p) const { return (words[p / 32] >> (p % 32)) & 1u; }
+  void set_at(uint32_t p) { words[p / 32] |= 1u << (p % 32); }
+  void clear_at(uint32_t p) { words[p / 32] &= ~(1u << (p % 32)); }
+
+  void reset() {
+    for (uint32_t i = 0; i < capacity / 32; ++i) words[i] = 0;
+    base = cursor = 0;
+  }
+  // Drops triangles ending above row y0, adds those starting at or before row y1 (inclusive).
+  // False when the window would exceed the capacity.
   bool advance(const Mapping& map, int32_t y0, int32_t y1) {
-    uint32_t kept = 0;
-    for (uint32_t i = 0; i < count; ++i) {
-      int32_t top, bottom;
-      row_extent(*layer, items[i], map, &top, &bottom);
-      if (bottom >= y0) items[kept++] = items[i];
+    if (base < cursor) {
+      uint32_t p = pos(base);
+      for (uint32_t t = base; t < cursor; ++t, p = next(p)) {
+        if (!test_at(p)) continue;
+        int32_t top, bottom;
+        row_extent(*layer, t, map, &top, &bottom);
+        if (bottom < y0) clear_at(p);
+      }
+      p = pos(base);
+      while (base < cursor && !test_at(p)) ++base, p = next(p);
     }
-    count = kept;
     while (cursor < layer->triangle_count) {
       int32_t top, bottom;
       row_extent(*layer, cursor, map, &top, &bottom);
       if (top > y1) break;
-      if (bottom >= y0 && top <= bottom) {
-        if (count == capacity) return false;
-        items[count++] = ActiveIndex(cursor);
+      const bool live = bottom >= y0 && top <= bottom;
+      if (live) {
+        if (cursor - base >= capacity) return false;
+        set_at(pos(cursor));
+      } else if (base == cursor) {
+        ++base;
       }
       ++cursor;
     }
@@ -332,22 +351,29 @@ struct ActiveList {
   }
 };
 
-// Longest active list of a layer over the bands of the viewport.
-uint32_t max_active(const BlobLayer& layer, const Resolved& r) {
-  uint32_t best = 0;
+// Longest window of a layer's active set over the bands of the viewport (see ActiveSet).
+uint32_t max_window(const BlobLayer& layer, const Resolved& r) {
+  uint32_t best = 0, base = 0, cursor = 0;
   for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
     const int32_t y1 = (by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1) - 1;
-    uint32_t n = 0;
-    for (uint32_t t = 0; t < layer.triangle_count; ++t) {
-      int32_t top, bottom;
-      row_extent(layer, t, r.map, &top, &bottom);
+    int32_t top, bottom;
+    while (cursor < layer.triangle_count) {
+      row_extent(layer, cursor, r.map, &top, &bottom);
       if (top > y1) break;
-      if (bottom >= by && top <= bottom) ++n;
+      ++cursor;
     }
-    best = n > best ? n : best;
+    while (base < cursor) {
+      row_extent(layer, base, r.map, &top, &bottom);
+      if (bottom >= by && top <= bottom) break;
+      ++base;
+    }
+    best = cursor - base > best ? cursor - base : best;
   }
   return best;
 }
+
+// Bytes of a bitmap of `bits` bits in whole 32-bit words.
+inline size_t bitmap_bytes(uint32_t bits) { return size_t((bits + 31) / 32) * 4; }
 
 bool layered(const Blob& blob) { return blob.layer_count > 1; }
 
@@ -369,17 +395,19 @@ inline bool misses_columns(const BlobLayer& layer, uint32_t t, const Mapping& ma
 }
 
 template <typename Shader>
-void draw_layer(const ActiveList& list, const Mapping& map, const Rect& rect, Shader& shader) {
-  for (uint32_t i = 0; i < list.count; ++i) {
-    if (misses_columns(*list.layer, list.items[i], map, rect)) continue;
+void draw_layer(const ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
+  if (set.base == set.cursor) return;
+  uint32_t p = set.pos(set.base);
+  for (uint32_t t = set.base; t < set.cursor; ++t, p = set.next(p)) {
+    if (!set.test_at(p) || misses_columns(*set.layer, t, map, rect)) continue;
     TriangleView tv;
-    load_triangle(*list.layer, list.items[i], map, &tv);
+    load_triangle(*set.layer, t, map, &tv);
     rasterize(tv, rect, shader);
   }
 }
 
 template <int Channels, typename Writer>
-void draw_with(const Blob& blob, int layer_index, int first_channel, const ActiveList& list, const Mapping& map,
+void draw_with(const Blob& blob, int layer_index, int first_channel, const ActiveSet& list, const Mapping& map,
                const Rect& rect, const Writer& writer, int step) {
   const BlobLayer* layer = &blob.layers[layer_index];
   if (blob.method == Method::bilinear) {
@@ -438,7 +466,7 @@ void convert_scratch(const int16_t* scratch, uint8_t* base, int32_t stride, cons
 }
 
 template <PixelFormat F>
-void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, ActiveList* lists, const Rect& rect,
+void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, ActiveSet* sets, const Rect& rect,
                  uint8_t* base, int32_t stride, int16_t* scratch) {
   const bool grey = blob.space == ColorSpace::grey;
   fill_background<F>(base, stride, rect, p, grey);
@@ -446,16 +474,16 @@ void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, Ac
   if (F == PixelFormat::coverage8 || !layered(blob)) {
     if (F == PixelFormat::coverage8 && layered(blob)) {
       const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
-      for (int l = 0; l < blob.layer_count; ++l) draw_with<1>(blob, l, 0, lists[l], map, rect, w, bpp);
+      for (int l = 0; l < blob.layer_count; ++l) draw_with<1>(blob, l, 0, sets[l], map, rect, w, bpp);
     } else if (grey) {
       const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
-      draw_with<1>(blob, 0, 0, lists[0], map, rect, w, bpp);
+      draw_with<1>(blob, 0, 0, sets[0], map, rect, w, bpp);
     } else if (blob.space == ColorSpace::ycbcr) {
       const DirectWriter<F, 3, true> w{base, stride, rect, p.dither};
-      draw_with<3>(blob, 0, 0, lists[0], map, rect, w, bpp);
+      draw_with<3>(blob, 0, 0, sets[0], map, rect, w, bpp);
     } else {
       const DirectWriter<F, 3, false> w{base, stride, rect, p.dither};
-      draw_with<3>(blob, 0, 0, lists[0], map, rect, w, bpp);
+      draw_with<3>(blob, 0, 0, sets[0], map, rect, w, bpp);
     }
     return;
   }
@@ -463,12 +491,12 @@ void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, Ac
   for (int32_t i = 0; i < n; ++i) scratch[i] = scratch_empty;
   for (int l = 0; l < blob.layer_count; ++l) {
     const ScratchWriter w{scratch, rect.width(), rect, l};
-    draw_with<1>(blob, l, 0, lists[l], map, rect, w, 3);
+    draw_with<1>(blob, l, 0, sets[l], map, rect, w, 3);
   }
   convert_scratch<F>(scratch, base, stride, rect, p, blob.space == ColorSpace::ycbcr);
 }
 
-using TileRenderer = void (*)(const Blob&, const RenderParams&, const Mapping&, ActiveList*, const Rect&, uint8_t*,
+using TileRenderer = void (*)(const Blob&, const RenderParams&, const Mapping&, ActiveSet*, const Rect&, uint8_t*,
                               int32_t, int16_t*);
 
 TileRenderer tile_renderer(PixelFormat f) {
@@ -502,11 +530,11 @@ Status workspace_size(const Blob& blob, const RenderParams& params, size_t* byte
   if (s != Status::ok) return s;
   uint32_t longest = 0;
   for (int l = 0; l < blob.layer_count; ++l) {
-    const uint32_t n = detail::max_active(blob.layers[l], r);
+    const uint32_t n = detail::max_window(blob.layers[l], r);
     longest = n > longest ? n : longest;
   }
   *bytes = detail::workspace_alignment + detail::scratch_bytes(blob, r, r.format) +
-           size_t(blob.layer_count) * longest * sizeof(detail::ActiveIndex);
+           size_t(blob.layer_count) * detail::bitmap_bytes(longest);
   return Status::ok;
 }
 
@@ -520,7 +548,7 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
   const int32_t stride = r.tile_w * bpp;
   if (tile_buffer_bytes < size_t(stride) * r.tile_h) return Status::buffer_too_small;
 
-  // Workspace: [alignment padding][channel scratch][active lists, one equal share per layer].
+  // Workspace: [alignment padding][channel scratch][active-set bitmaps, one equal share per layer].
   uint8_t* ws = static_cast<uint8_t*>(workspace);
   const size_t pad = ws ? (detail::workspace_alignment - uintptr_t(ws) % detail::workspace_alignment) %
                               detail::workspace_alignment
@@ -528,20 +556,20 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
   const size_t scratch = detail::scratch_bytes(blob, r, r.format);
   if (workspace_bytes < pad + scratch) return Status::buffer_too_small;
   int16_t* scratch_ptr = scratch ? reinterpret_cast<int16_t*>(ws + pad) : nullptr;
-  const size_t list_bytes = workspace_bytes - pad - scratch;
-  const uint32_t share = uint32_t(list_bytes / sizeof(detail::ActiveIndex) / blob.layer_count);
-  detail::ActiveList lists[3];
+  const size_t set_bytes = (workspace_bytes - pad - scratch) / blob.layer_count / 4 * 4;
+  detail::ActiveSet sets[3];
   for (int l = 0; l < blob.layer_count; ++l) {
-    lists[l].layer = &blob.layers[l];
-    lists[l].items = share ? reinterpret_cast<detail::ActiveIndex*>(ws + pad + scratch) + size_t(l) * share : nullptr;
-    lists[l].capacity = share;
+    sets[l].layer = &blob.layers[l];
+    sets[l].words = reinterpret_cast<uint32_t*>(ws + pad + scratch + size_t(l) * set_bytes);
+    sets[l].capacity = uint32_t(set_bytes * 8 > 0xFFFFFFE0u ? 0xFFFFFFE0u : set_bytes * 8);
+    if (sets[l].capacity) sets[l].reset();
   }
   const detail::TileRenderer draw = detail::tile_renderer(r.format);
   uint8_t* base = static_cast<uint8_t*>(tile_buffer);
   for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
     const int32_t by1 = by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1;
     for (int l = 0; l < blob.layer_count; ++l)
-      if (!lists[l].advance(r.map, by, by1 - 1)) return Status::buffer_too_small;
+      if (!sets[l].advance(r.map, by, by1 - 1)) return Status::buffer_too_small;
     for (int32_t bx = r.view.x0; bx < r.view.x1; bx += r.tile_w) {
       const int32_t bx1 = bx + r.tile_w < r.view.x1 ? bx + r.tile_w : r.view.x1;
       Tile tile;
@@ -549,7 +577,7 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
       tile.stride = stride;
       tile.rect = Rect{bx, by, bx1, by1};
       tile.format = r.format;
-      draw(blob, params, r.map, lists, tile.rect, base, stride, scratch_ptr);
+      draw(blob, params, r.map, sets, tile.rect, base, stride, scratch_ptr);
       sink(context, &tile);
     }
   }

@@ -35,7 +35,7 @@ inline constexpr uint32_t blob_header_size = 64;
 inline constexpr uint32_t blob_layer_entry_size = 32;
 inline constexpr uint32_t blob_triangle_size = 8;
 inline constexpr uint32_t blob_max_vertices = 65535;
-inline constexpr uint32_t blob_max_triangles = TS_ACTIVE_INDEX_BYTES == 2 ? 65535 : 0x7FFFFFFF;
+inline constexpr uint32_t blob_max_triangles = 1u << 20;  // a 65535-vertex mesh has fewer than 2^17
 
 enum class ColorSpace : uint8_t { grey = 0, rgb = 1, ycbcr = 2 };
 enum class Method : uint8_t { bilinear = 0, zienkiewicz = 1 };

@@ -26,12 +26,6 @@
 #define TS_MAX_GRADIENT 32767
 #endif
 
-// Bytes of one entry of the active-triangle list (2: at most 65535 triangles per layer, 4: more).
-// The blob's vertex indices are 16-bit in format version 1, so 2 is the natural choice.
-#ifndef TS_ACTIVE_INDEX_BYTES
-#define TS_ACTIVE_INDEX_BYTES 2
-#endif
-
 // 1: render_blob re-validates the blob on every call (cheap checks only: header and table).
 // Full validation is always done by open_blob.
 #ifndef TS_CHECK_HEADER_ON_RENDER
@@ -45,11 +39,9 @@ inline constexpr int subpixel_bits = TS_SUBPIXEL_BITS;
 inline constexpr int max_dimension = TS_MAX_DIMENSION;
 inline constexpr int gradient_frac_bits = TS_GRADIENT_FRAC_BITS;
 inline constexpr int32_t max_gradient = TS_MAX_GRADIENT;
-inline constexpr int active_index_bytes = TS_ACTIVE_INDEX_BYTES;
 
 static_assert(subpixel_bits >= 0 && subpixel_bits <= 8, "sub-pixel bits out of the supported range");
 static_assert(max_dimension >= 2 && max_dimension <= 4096, "max dimension out of the supported range");
-static_assert(active_index_bytes == 2 || active_index_bytes == 4, "active index must be 2 or 4 bytes");
 static_assert(gradient_frac_bits >= 0 && gradient_frac_bits <= 16, "gradient fraction bits out of range");
 static_assert(int64_t(max_gradient) << gradient_frac_bits < (int64_t(1) << 31), "gradients must fit int32");
 

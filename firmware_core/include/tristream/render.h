@@ -30,9 +30,10 @@ struct RenderParams {
 // Bytes of the tile buffer: tile width * tile height * bytes per pixel (tile size after defaults).
 Status tile_buffer_size(const Blob& blob, const RenderParams& params, size_t* bytes);
 
-// Bytes of workspace `render` needs with these parameters: the active-triangle lists of every
-// layer (their longest length over all bands) plus, for layered blobs, a channel scratch of
-// 6 bytes per tile pixel. Scans the triangles once per band.
+// Bytes of workspace `render` needs with these parameters: per layer, a bitmap of its active
+// triangles (one bit per triangle of the longest window from the oldest live to the newest
+// started triangle over all bands), plus, for layered blobs, a channel scratch of 6 bytes per
+// tile pixel. One pass over the triangles.
 Status workspace_size(const Blob& blob, const RenderParams& params, size_t* bytes);
 
 // Renders the viewport tile by tile into `tile_buffer` and passes each tile to `sink`.
