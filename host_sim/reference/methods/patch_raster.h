@@ -3,30 +3,34 @@
 // neighbours, a parametric surface (x, y, values)(s, t) and average every surface that lands
 // on a pixel, in sum and count buffers (thesis §3.3, §4.2). Two ways to land on pixels:
 //
-// - thesis: step s and t by a fixed step, round each sample's position to the nearest pixel,
-//   add it there; the bilinear pre-fill counts as one more sample in every pixel.
+// - thesis: step s and t by a fixed step, round each sample's position to the nearest pixel
+//   (pixel (i, j) samples the point (i, j), so its cell is centred there; the thesis's integer
+//   truncation assumed pixels at their corners), add it there unless it is off the image or
+//   outside the domain; the bilinear pre-fill counts as one more sample in every pixel.
 // - exact (the default): tessellate the patch's parameter domain uniformly, rasterize the
 //   micro-triangles with exact integer edge tests and a top-left tie rule (each pixel is
 //   covered once per layer of the surface; a fold gives more layers), and evaluate the
 //   surface at the pixel itself: the micro-triangle gives the parameters by linear
 //   interpolation, Newton's method on the patch's position makes them exact. So a pixel's
-//   value is that of the surface point above its sample point; a pixel whose parameters
-//   fall outside the patch's parameter domain, or which Newton cannot place (beside a fold
-//   of the patch, where the tessellation's fold line is off), is not counted. So the tessellation only decides
-//   coverage of pixels between a boundary curve and its chord, which stays within
-//   kBoundaryTolerance of the curve; its interior stays within kGuessTolerance of the patch
-//   (Newton's start). Both follow from bounds on the position's second derivatives, so a nearly affine
-//   patch is one or two micro-triangles. Work: about one Newton solve (two or three position
-//   evaluations) per covered pixel and patch, plus the micro-triangles. A pixel no patch
-//   covers keeps the bilinear value.
+//   value is that of the surface point above its sample point. A pixel whose parameters fall
+//   outside the patch's parameter domain, or which Newton cannot place (beside a fold of the
+//   patch, where the tessellation's fold line is off), is not counted; so the tessellation
+//   only decides the coverage of pixels between a boundary curve and its chord, which stays
+//   within kBoundaryTolerance of the curve. Its interior stays within about kGuessTolerance
+//   of the patch (Newton's start). Both follow from bounds on the position's second
+//   derivatives, so a nearly affine patch is one or two micro-triangles. Work per covered
+//   pixel and patch: one Newton solve (bezier: one position evaluation and closed-form
+//   steps; coons: two or three evaluations); per patch: the micro-triangles, a few per
+//   pixel at most. A domain pixel no patch covers keeps the bilinear value.
 //
+// The bilinear field (pre-fill and domain) comes from bilinear_prefill below.
 // Pixels outside the triangulation's domain (NaN in the bilinear field) are never written.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <utility>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "common/errors.h"
