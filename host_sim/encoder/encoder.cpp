@@ -161,9 +161,6 @@ EncodeResult encode(const Image& image, const EncodeOptions& o) {
   const std::size_t limit = o.vertices ? o.vertices : pixels;
   encoder::GreedyOptions go;
   go.rank_by_total_error = o.rank_by_total_error;
-  go.candidates = o.candidates;
-  go.rank_by_reduction = o.rank_by_reduction;
-  go.local_fit = o.local_fit;
 
   if (grey || o.color == ColorMode::co) {
     Mesh mesh;

@@ -44,11 +44,6 @@ struct EncodeOptions {
   // with VertexFit::pixel and 0.5 with VertexFit::lsq (the best measured for each: the
   // refit absorbs noise at the vertices, and a lighter blur keeps detail).
   double smoothing_sigma = -1;
-  // Candidate choice and priority (encoder::GreedyOptions): pixels of largest guide error
-  // considered per triangle, the one of largest estimated error reduction kept.
-  int candidates = 1;
-  bool rank_by_reduction = false;  // priority = estimated reduction (overrides the above)
-  bool local_fit = false;          // inserted vertices take the local least-squares value
   // With VertexFit::lsq: passes of vertex relocation after the insertion (encoder/relocate.h).
   int relocate_passes = 4;
   // Called now and then with the fraction done, in [0, 1].

@@ -1,6 +1,5 @@
 #include "encoder/greedy.h"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -31,8 +30,6 @@ Plane plane_through(const IntPoint& a, const IntPoint& b, const IntPoint& c, dou
   const double d = bax * cay - bay * cax;
   return {((fb - fa) * cay - (fc - fa) * bay) / d, ((fc - fa) * bax - (fb - fa) * cax) / d};
 }
-
-constexpr int max_candidates = 8;
 
 }  // namespace
 
@@ -90,12 +87,8 @@ void GreedyInserter::scan(std::uint32_t slot) {
   const float* guide = guide_.v.data();
   const int channels = channels_;
   const double* weight = weight_.data();
-  // The `k` pixels of largest guide error, best first.
-  const int k = std::clamp(options_.candidates, 1, max_candidates);
-  double best[max_candidates];
-  std::int32_t bx[max_candidates], by[max_candidates];
-  int found = 0;
-  double sse = 0;
+  double sse = 0, best = -1;
+  std::int32_t bx = -1, by = -1;
   scan_triangle(p, [&](int x, int y) {
     const std::size_t pixel = std::size_t(y) * width + x;
     const double dx = x - p[0].x, dy = y - p[0].y;
@@ -108,78 +101,18 @@ void GreedyInserter::scan(std::uint32_t slot) {
       guide_err += weight[c] * g * g;
     }
     sse += err;
-    if (is_vertex_[pixel] || (found == k && guide_err <= best[k - 1])) return;
-    int i = found < k ? found++ : k - 1;
-    for (; i > 0 && best[i - 1] < guide_err; --i) best[i] = best[i - 1], bx[i] = bx[i - 1], by[i] = by[i - 1];
-    best[i] = guide_err, bx[i] = x, by[i] = y;
+    if (guide_err > best && !is_vertex_[pixel]) {
+      best = guide_err;
+      bx = x;
+      by = y;
+    }
   });
   info.sse = sse;
   total_sse_ += sse;
-  if (found == 0) return;
-  int chosen = 0;
-  double priority = options_.rank_by_total_error ? sse : best[0];
-  if (found > 1 || options_.rank_by_reduction || options_.local_fit) {
-    double reduction[max_candidates], delta[max_candidates][4];
-    estimate(p, fa, gx, gy, found, bx, by, reduction, delta);
-    for (int i = 1; i < found; ++i)
-      if (reduction[i] > reduction[chosen]) chosen = i;
-    if (options_.rank_by_reduction) priority = reduction[chosen];
-    for (int c = 0; c < channels; ++c) info.delta[c] = delta[chosen][c];
-  }
-  info.cx = bx[chosen];
-  info.cy = by[chosen];
-  queue_.push({priority, slot, info.version});
-}
-
-// Splitting the triangle at candidate q changes the interpolant by delta * phi, phi the hat
-// function of q in the split: phi(p) = min over i of l_i(p) / l_i(q) (l = barycentric
-// coordinates, i with l_i(q) > 0). With e the current error, the squared error falls by
-// (sum e phi)^2 / sum phi^2 for the best delta = -sum e phi / sum phi^2.
-void GreedyInserter::estimate(const std::array<IntPoint, 3>& p, const double* fa, const double* gx,
-                              const double* gy, int count, const std::int32_t* cx, const std::int32_t* cy,
-                              double* reduction, double (*delta)[4]) const {
-  // l_i(x, y) = (ax_i x + ay_i y + a0_i) / area2, from the edge opposite vertex i.
-  double ax[3], ay[3], a0[3];
-  const double area2 = double(std::int64_t(p[1].x - p[0].x) * (p[2].y - p[0].y) -
-                              std::int64_t(p[1].y - p[0].y) * (p[2].x - p[0].x));
-  for (int i = 0; i < 3; ++i) {
-    const IntPoint& b = p[(i + 1) % 3];
-    const IntPoint& c = p[(i + 2) % 3];
-    ax[i] = -(c.y - b.y) / area2;
-    ay[i] = (c.x - b.x) / area2;
-    a0[i] = (double(c.y - b.y) * b.x - double(c.x - b.x) * b.y) / area2;
-  }
-  double inv[max_candidates][3];
-  for (int j = 0; j < count; ++j)
-    for (int i = 0; i < 3; ++i) {
-      const double l = ax[i] * cx[j] + ay[i] * cy[j] + a0[i];
-      inv[j][i] = l > 1e-12 ? 1 / l : 0;  // 0: the candidate is on the edge opposite i
-    }
-  double sum_ephi[max_candidates][4] = {}, sum_phi2[max_candidates] = {};
-  const int width = target_.width, channels = channels_;
-  const float* target = target_.v.data();
-  scan_triangle(p, [&](int x, int y) {
-    const std::size_t pixel = std::size_t(y) * width + x;
-    const double dx = x - p[0].x, dy = y - p[0].y;
-    double e[4];
-    for (int c = 0; c < channels; ++c) e[c] = fa[c] + gx[c] * dx + gy[c] * dy - target[pixel * channels + c];
-    double l[3];
-    for (int i = 0; i < 3; ++i) l[i] = std::max(0.0, ax[i] * x + ay[i] * y + a0[i]);
-    for (int j = 0; j < count; ++j) {
-      double phi = 1;
-      for (int i = 0; i < 3; ++i)
-        if (inv[j][i] > 0) phi = std::min(phi, l[i] * inv[j][i]);
-      sum_phi2[j] += phi * phi;
-      for (int c = 0; c < channels; ++c) sum_ephi[j][c] += e[c] * phi;
-    }
-  });
-  for (int j = 0; j < count; ++j) {
-    reduction[j] = 0;
-    for (int c = 0; c < channels; ++c) {
-      delta[j][c] = sum_phi2[j] > 0 ? -sum_ephi[j][c] / sum_phi2[j] : 0;
-      reduction[j] += sum_phi2[j] > 0 ? weight_[c] * sum_ephi[j][c] * sum_ephi[j][c] / sum_phi2[j] : 0;
-    }
-  }
+  if (bx < 0) return;
+  info.cx = bx;
+  info.cy = by;
+  queue_.push({options_.rank_by_total_error ? sse : best, slot, info.version});
 }
 
 void GreedyInserter::rescan_all() {
@@ -213,10 +146,6 @@ bool GreedyInserter::step() {
   const std::uint32_t v = delaunay_.insert({double(x), double(y)}, slot);
   if (v != before) throw std::logic_error("greedy insertion: candidate pixel is already a vertex");
   add_vertex_values(x, y, here.data());
-  if (options_.local_fit) {
-    double* added = values_.data() + values_.size() - channels_;
-    for (int c = 0; c < channels_; ++c) added[c] = std::clamp(here[c] + info_[slot].delta[c], 0.0, 255.0);
-  }
 
   info_.resize(delaunay_.slot_count());
   for (std::uint32_t t : delaunay_.destroyed()) {

@@ -2,7 +2,6 @@
 // Greedy insertion (Garland and Heckbert 1995, algorithm III): an incremental Delaunay
 // triangulation of pixel positions; each triangle keeps one candidate pixel in a priority
 // queue; an insertion rescans only the triangles it created.
-#include <array>
 #include <cstdint>
 #include <functional>
 #include <queue>
@@ -22,15 +21,6 @@ struct GreedyOptions {
   bool rank_by_total_error = true;
   // Per-channel weights of the squared errors (empty = all 1).
   std::vector<double> channel_weight;
-  // How many pixels of largest guide error per triangle are candidates (1 to 8). With more
-  // than one, or with rank_by_reduction, each candidate's error reduction is estimated (the
-  // triangle split in three at the candidate, the candidate's value chosen by least squares
-  // over the triangle's pixels) and the best one is kept.
-  int candidates = 1;
-  // Priority = that estimated reduction (overrides rank_by_total_error).
-  bool rank_by_reduction = false;
-  // An inserted vertex takes the estimated least-squares value instead of the value rule's.
-  bool local_fit = false;
 };
 
 class GreedyInserter {
@@ -73,11 +63,7 @@ class GreedyInserter {
     std::uint32_t version = 0;
     double sse = 0;  // 0 for ghosts and dead slots
     std::int32_t cx = -1, cy = -1;  // candidate pixel, cx < 0 when none
-    std::array<double, 4> delta{};  // least-squares change of the value at the candidate
   };
-  // Estimated error reduction of the candidates of a triangle (see GreedyOptions).
-  void estimate(const std::array<IntPoint, 3>& p, const double* fa, const double* gx, const double* gy, int count,
-                const std::int32_t* cx, const std::int32_t* cy, double* reduction, double (*delta)[4]) const;
 
   void scan(std::uint32_t slot);
   void rescan_all();
