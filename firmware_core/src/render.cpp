@@ -379,7 +379,9 @@ bool layered(const Blob& blob) { return blob.layer_count > 1; }
 
 size_t scratch_bytes(const Blob& blob, const Resolved& r, PixelFormat f) {
   if (!layered(blob) || f == PixelFormat::coverage8) return 0;
-  return size_t(r.tile_w) * r.tile_h * 3 * sizeof(int16_t);
+  // Rounded up to the alignment so that the bitmaps after it are word aligned.
+  const size_t bytes = size_t(r.tile_w) * r.tile_h * 3 * sizeof(int16_t);
+  return (bytes + workspace_alignment - 1) / workspace_alignment * workspace_alignment;
 }
 
 // Whether the triangle's columns [ceil(min x), floor(max x)] miss [rect.x0, rect.x1): a cheap
