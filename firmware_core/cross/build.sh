@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Cross-compiles firmware_core for Cortex-M4 (arm-none-eabi-g++ -Os -fno-exceptions -fno-rtti),
-# links a firmware-shaped demo, prints text/data/bss, and fails if malloc, free or operator
-# new/delete were linked. Usage: firmware_core/cross/build.sh [build-dir]
+# links a firmware-shaped demo, prints text/data/bss, and fails if any heap allocator of the C
+# or C++ runtime was linked (the C allocation functions, reentrant or not, and the C++
+# allocation operators, mangled _Znwj/_Znaj/_ZdlPv/_ZdaPv). Usage: build.sh [build-dir]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:-$root/build-cross}
@@ -12,9 +13,10 @@ elf=$build/firmware/firmware_demo.elf
 echo "== firmware_core for Cortex-M4 (-Os), library and demo image:"
 arm-none-eabi-size -t "$build/firmware/ts_core/libts_core.a" | tail -1 | awk '{print "libts_core.a: text " $1 " data " $2 " bss " $3}'
 arm-none-eabi-size "$elf"
-forbidden=$(arm-none-eabi-nm "$elf" | awk '{print $NF}' | grep -E '^(malloc|free|calloc|realloc|_malloc_r|_free_r|_Znwj|_Znaj|_ZdlPv|_ZdaPv|_ZdlPvj)$' || true)
+forbidden=$(arm-none-eabi-nm "$elf" | awk '{print $NF}' |
+  grep -E '^_?(m|c|re)alloc(_r)?$|^_?free(_r)?$|^_Zn[wa]j|^_Zd[la]Pv' || true)
 if [ -n "$forbidden" ]; then
   echo "error: the firmware image links an allocator: $forbidden" >&2
   exit 1
 fi
-echo "no malloc, free or operator new/delete linked"
+echo "no heap allocator linked"
