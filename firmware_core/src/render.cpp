@@ -316,6 +316,27 @@ struct ActiveSet {
   void set_at(uint32_t p) { words[p / 32] |= 1u << (p % 32); }
   void clear_at(uint32_t p) { words[p / 32] &= ~(1u << (p % 32)); }
 
+  // Calls f(t) for every live triangle t of the window, in order, a word of bits at a time.
+  template <typename F>
+  void for_each_live(F&& f) const {
+    uint32_t t = base, p = base < cursor ? pos(base) : 0;
+    while (t < cursor) {
+      uint32_t w = words[p / 32] >> (p % 32);
+      uint32_t span = 32 - p % 32;
+      if (span > cursor - t) {
+        span = cursor - t;
+        w &= (1u << span) - 1;  // span < 32 here
+      }
+      while (w) {
+        f(t + uint32_t(__builtin_ctz(w)));
+        w &= w - 1;
+      }
+      t += span;
+      p += span;
+      if (p == capacity) p = 0;
+    }
+  }
+
   void reset() {
     for (uint32_t i = 0; i < capacity / 32; ++i) words[i] = 0;
     base = cursor = 0;
@@ -324,14 +345,12 @@ struct ActiveSet {
   // False when the window would exceed the capacity.
   bool advance(const Mapping& map, int32_t y0, int32_t y1) {
     if (base < cursor) {
-      uint32_t p = pos(base);
-      for (uint32_t t = base; t < cursor; ++t, p = next(p)) {
-        if (!test_at(p)) continue;
+      for_each_live([&](uint32_t t) {
         int32_t top, bottom;
         row_extent(*layer, t, map, &top, &bottom);
-        if (bottom < y0) clear_at(p);
-      }
-      p = pos(base);
+        if (bottom < y0) clear_at(pos(t));
+      });
+      uint32_t p = pos(base);
       while (base < cursor && !test_at(p)) ++base, p = next(p);
     }
     while (cursor < layer->triangle_count) {
@@ -398,14 +417,12 @@ inline bool misses_columns(const BlobLayer& layer, uint32_t t, const Mapping& ma
 
 template <typename Shader>
 void draw_layer(const ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
-  if (set.base == set.cursor) return;
-  uint32_t p = set.pos(set.base);
-  for (uint32_t t = set.base; t < set.cursor; ++t, p = set.next(p)) {
-    if (!set.test_at(p) || misses_columns(*set.layer, t, map, rect)) continue;
+  set.for_each_live([&](uint32_t t) {
+    if (misses_columns(*set.layer, t, map, rect)) return;
     TriangleView tv;
     load_triangle(*set.layer, t, map, &tv);
     rasterize(tv, rect, shader);
-  }
+  });
 }
 
 template <int Channels, typename Writer>
