@@ -87,6 +87,28 @@ TEST_CASE("triencode --json", "[triencode]") {
   REQUIRE(r.out.find("\"vertices\"") != std::string::npos);
 }
 
+TEST_CASE("triencode --relocate: 0 keeps the inserted positions, the default lowers the error", "[triencode]") {
+  const std::string a = (dir() / "r0.tri").string(), b = (dir() / "r4.tri").string();
+  const Run none = run(in() + " -n 200 --grey --relocate 0 --json -o " + a);
+  const Run dflt = run(in() + " -n 200 --grey --json -o " + b);
+  REQUIRE(none.code == 0);
+  REQUIRE(dflt.code == 0);
+  auto psnr = [](const std::string& json) {
+    const auto at = json.find("\"psnr_linear\":");
+    REQUIRE(at != std::string::npos);
+    return std::stod(json.substr(at + 14));
+  };
+  REQUIRE(psnr(dflt.out) > psnr(none.out));
+  const Triangulation t0 = read_tri_file(a), t4 = read_tri_file(b);
+  REQUIRE(t0.layers.at(0).vertex_count() == 200);
+  REQUIRE(t4.layers.at(0).vertex_count() == 200);
+  std::size_t moved = 0;
+  for (std::size_t v = 0; v < 200; ++v)
+    moved += t0.layers[0].points[v].x != t4.layers[0].points[v].x || t0.layers[0].points[v].y != t4.layers[0].points[v].y;
+  REQUIRE(moved > 0);
+  REQUIRE(run(in() + " -n 200 --relocate -1 -o " + a).code == 64);
+}
+
 TEST_CASE("triencode bad input: clear errors and exit codes", "[triencode]") {
   const std::string out = " -o " + (dir() / "bad.tri").string();
   SECTION("unreadable image: 66") {
@@ -128,4 +150,5 @@ TEST_CASE("triencode --help", "[triencode]") {
   REQUIRE(r.code == 0);
   REQUIRE(r.out.find("--vertices") != std::string::npos);
   REQUIRE(r.out.find("--fit") != std::string::npos);
+  REQUIRE(r.out.find("--relocate") != std::string::npos);
 }
