@@ -179,10 +179,12 @@ struct ZienkiewiczShader {
   ZienkiewiczChannel ch[Channels];
   const Edge* edges = nullptr;
   int64_t area2 = 1;
+  BarycentricStepper steps;
 
   void begin(const TriangleView& tv, const Edge* e, int64_t a2) {
     edges = e;
     area2 = a2;
+    steps.setup(e, a2);
     int32_t dx[3], dy[3], vals[3][Channels], grads[Channels][6];
     for (int k = 0; k < 3; ++k) {
       const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
@@ -202,10 +204,10 @@ struct ZienkiewiczShader {
     }
   }
   void span(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
-    BarycentricRow row;
-    row.setup(edges, area2, xs, y);
-    uint32_t a = row.a + row.dadx * uint32_t(x0 - xs);
-    uint32_t b = row.b + row.dbdx * uint32_t(x0 - xs);
+    uint32_t a, b;
+    BarycentricStepper::at(edges, area2, xs, y, &a, &b);
+    a += steps.dadx * uint32_t(x0 - xs);
+    b += steps.dbdx * uint32_t(x0 - xs);
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
     auto* p = writer.at(x0, y);
     for (int32_t x = x0; x <= x1; ++x) {
@@ -214,8 +216,8 @@ struct ZienkiewiczShader {
       for (int c = 0; c < Channels; ++c) q8[c] = ch[c].eval(a15, b15);
       writer.put(p, x, y, q8);
       p += bpp;
-      a += row.dadx;
-      b += row.dbdx;
+      a += steps.dadx;
+      b += steps.dbdx;
     }
   }
 };
@@ -433,7 +435,7 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, const Activ
     BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
     draw_layer(list, map, rect, s);
   } else {
-    ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, nullptr, 1};
+    ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, nullptr, 1, {}};
     draw_layer(list, map, rect, s);
   }
 }

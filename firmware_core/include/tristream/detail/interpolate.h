@@ -87,16 +87,19 @@ struct ZienkiewiczChannel {
 };
 
 // Barycentric weights a (vertex 0) and b (vertex 1) in q2_30 along a row, modulo 2^32.
-struct BarycentricRow {
-  uint32_t a = 0, b = 0, dadx = 0, dbdx = 0;
+struct BarycentricStepper {
+  uint32_t dadx = 0, dbdx = 0;  // per triangle
 
-  // Weights at pixel (x, y) and their x steps.
-  void setup(const Edge* e, int64_t area2, int32_t x, int32_t y) {
+  void setup(const Edge* e, int64_t area2) {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
-    a = uint32_t(round_div(e[1].exact_at(x, y) * one, area2));
-    b = uint32_t(round_div(e[2].exact_at(x, y) * one, area2));
     dadx = uint32_t(round_div(e[1].a * one, area2));
     dbdx = uint32_t(round_div(e[2].a * one, area2));
+  }
+  // Weights at pixel (x, y), the first covered pixel of its row (so independent of tiling).
+  static void at(const Edge* e, int64_t area2, int32_t x, int32_t y, uint32_t* a, uint32_t* b) {
+    constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
+    *a = uint32_t(round_div(e[1].exact_at(x, y) * one, area2));
+    *b = uint32_t(round_div(e[2].exact_at(x, y) * one, area2));
   }
 };
 
