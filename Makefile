@@ -50,8 +50,8 @@ clean:
 
 experiments: build
 	@bash tools/install-deps.sh experiments
-	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set full
+	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set full --jobs 2
 
 experiments-quick: build
 	@bash tools/install-deps.sh experiments
-	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set quick
+	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set quick --jobs 2

@@ -74,6 +74,9 @@ class Executor:
         self.enc_results: Dict[Enc, dict] = {}
         self.run_results: Dict[Run, dict] = {}
         self.time_results: Dict[TimeRun, dict] = {}
+        # (method, variant, engine) combinations trisim refused (exit 64) in this run, with its message:
+        # later runs of the same combination are skipped instead of asking again.
+        self.unsupported: Dict[tuple, str] = {}
 
     def _lock(self, key):
         with self.locks_lock:
@@ -225,6 +228,10 @@ class Executor:
             elif self.cache.offline:
                 self.run_results[run] = {"status": "missing", "error": "not in the cache"}
                 self.progress.update(1)
+            elif (run.method, run.variant, run.engine) in self.unsupported:
+                self.run_results[run] = {"status": "unsupported",
+                                         "error": self.unsupported[(run.method, run.variant, run.engine)]}
+                self.progress.update(1)
             else:
                 pending.setdefault((run.variant, run.engine), []).append((run, key, render_path))
         geometry = None
@@ -270,10 +277,14 @@ class Executor:
                 if j is None:
                     result.update(status="unsupported" if m_code == EXIT_USAGE else "failed",
                                   error=f"trisim compare exit {m_code}: {first_line(m_err)}")
+                    if m_code == EXIT_USAGE:
+                        self.unsupported[(run.method, run.variant, run.engine)] = result["error"]
                 else:
                     result.update(status="ok", **{k: j.get(k) for k in ("mse", "psnr", "ssim", "ms", "width",
                                                                          "height", "vertices", "triangles",
-                                                                         "ssim_window")})
+                                                                         "ssim_window", "psnr_vs_reference",
+                                                                         "max_abs_diff_vs_reference")
+                                                   if k in j})
                     self._after_render(run, result, Path(tmp) / f"{run.method}.png", original, render_path,
                                        geometry if run.analyse else None)
                 self.cache.store("runs", key, result)
@@ -316,6 +327,10 @@ class Executor:
         if e["status"] != "ok":
             self.time_results[t] = {"status": e["status"], "error": "encoding: " + str(e.get("error"))}
             return
+        if (t.method, t.variant, t.engine) in self.unsupported:
+            self.time_results[t] = {"status": "unsupported", "error": self.unsupported[(t.method, t.variant,
+                                                                                         t.engine)]}
+            return
         original = Path(e["image_file"])
         key = key_of(self._run_desc(t, e, original, "time", t.rep))
         cached = self.cache.load("time", key)
@@ -336,6 +351,8 @@ class Executor:
         else:
             result.update(status="unsupported" if code == EXIT_USAGE else "failed",
                           error=f"trisim compare exit {code}: {first_line(err)}")
+            if code == EXIT_USAGE:
+                self.unsupported[(t.method, t.variant, t.engine)] = result["error"]
         self.cache.store("time", key, result)
         self.time_results[t] = result
 

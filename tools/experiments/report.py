@@ -33,7 +33,8 @@ THESIS_TIMES = {
 
 FIELDS = ["study", "image", "group", "width", "height", "colour", "mode", "space", "cotri", "nominal_vertices",
           "vertices", "triangles", "method", "variant", "engine", "status", "mse", "psnr", "ssim", "ssim_window",
-          "ssim_8x8", "ms", "cpu_s", "load1", "mae_high", "mae_low", "error"]
+          "ssim_8x8", "ms", "cpu_s", "load1", "mae_high", "mae_low", "psnr_vs_reference",
+          "max_abs_diff_vs_reference", "error"]
 TIME_FIELDS = ["image", "width", "height", "nominal_vertices", "vertices", "triangles", "method", "variant",
                "engine", "rep", "status", "ms", "cpu_s", "load1", "error"]
 SEP_CO_COLOURS = {"separate": "#1f77b4", "co-triangulation": "#d62728"}
@@ -62,6 +63,8 @@ def quality_rows(work, executor):
                 "ssim_window": r.get("ssim_window"), "ssim_8x8": r.get("ssim_8x8"), "ms": r.get("ms"),
                 "cpu_s": r.get("cpu_s"), "load1": r.get("load1"), "mae_high": a.get("mae_high"),
                 "mae_low": a.get("mae_low"), "error": r.get("error", ""),
+                "psnr_vs_reference": r.get("psnr_vs_reference"),
+                "max_abs_diff_vs_reference": r.get("max_abs_diff_vs_reference"),
                 "_render": r.get("render"), "_tri": e.get("tri"), "_original": e.get("image_file"),
             })
     return rows
@@ -181,9 +184,10 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
         for n, (wall, cpu, images) in sorted(d.items()):
             th = THESIS_TIMES.get(base, {}).get(n) if "[" not in lab else None
             trows_out.append({"method": lab, "nominal_vertices": n, "seconds": wall, "cpu_seconds": cpu,
-                              "images": images, "thesis_seconds": th, "thesis_over_here": th / wall if th else None})
+                              "images": images, "thesis_seconds": th, "thesis_over_here": th / wall if th else None,
+                              "thesis_over_cpu": th / cpu if th and cpu else None})
     write_csv(out_dir / "time.csv", trows_out, ["method", "nominal_vertices", "seconds", "cpu_seconds", "images",
-                                                 "thesis_seconds", "thesis_over_here"])
+                                                 "thesis_seconds", "thesis_over_here", "thesis_over_cpu"])
 
     missing = defaultdict(int)
     for r in rows:
@@ -208,6 +212,13 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
           f"Repository commit {html.escape(ctx['commit'])}; trisim sha256 {ctx['trisim_sha']}…, triencode sha256 "
           f"{ctx['triencode_sha']}…. Command: <code>{html.escape(ctx['command'])}</code>; {ctx['jobs']} job(s).",
           raw=True)
+    cb = ctx.get("computed_by")
+    if ctx["report_only"]:
+        doc.p("This page was written from cached results only (--report-only)"
+              + (f"; the last run that computed this set started {html.escape(cb['started'])}, computed for "
+                 f"{cb['elapsed_s']:.0f} s with {cb['jobs']} job(s), load average {cb['load_start'][0]:.2f} at the "
+                 f"start and {cb['load_end'][0]:.2f} at the end (command: <code>{html.escape(cb['command'])}</code>)."
+                 if cb else "; the run that computed them left no record."), raw=True)
     doc.add("<p>Contents: <a href=#conventions>conventions</a> · <a href=#findings>findings</a> · "
             "<a href=#grey>greyscale</a> · <a href=#colour>colour</a> · <a href=#time>time</a> · "
             "<a href=#pictures>pictures</a> · <a href=#notes>notes and failures</a> · <a href=#files>files</a></p>")
@@ -434,13 +445,25 @@ def engines_section(doc, ok_grey, plan, chart_dir):
             d = float(r["psnr"]) - float(base["psnr"])
             series[f"{r['method']} [{eng}]"][r["nominal_vertices"]].append(d)
             rows.append((eng, r["method"], r["nominal_vertices"], d, float(r["ssim"]) - float(base["ssim"])))
+    direct = defaultdict(lambda: defaultdict(list))
+    for r in ok_grey:
+        if r["engine"] != "reference" and r.get("max_abs_diff_vs_reference") is not None:
+            direct[f"{r['method']} [{r['engine']}]"][r["nominal_vertices"]].append(
+                (float(r["max_abs_diff_vs_reference"]),
+                 float(r["psnr_vs_reference"]) if r.get("psnr_vs_reference") is not None else float("inf")))
     table = []
     for lab, d in series.items():
         for n, vals in sorted(d.items()):
+            dv = direct.get(lab, {}).get(n, [])
             table.append([html.escape(lab), f"{n:,}", f"{np.mean(vals):+.4f}", f"{np.min(vals):+.4f}",
-                          f"{np.max(vals):+.4f}", str(len(vals))])
-    doc.p("PSNR of each engine minus the reference engine's on the same triangulation (dB):")
-    doc.table(["method [engine]", "vertices", "mean", "min", "max", "images"], table)
+                          f"{np.max(vals):+.4f}",
+                          f"{max(x[0] for x in dv):.0f}" if dv else "–",
+                          f"{min(x[1] for x in dv):.2f}" if dv else "–", str(len(vals))])
+    doc.p("Each engine against the reference engine on the same triangulations (greyscale): PSNR against the "
+          "original minus the reference's (dB), and, as trisim reports them, the largest absolute pixel difference "
+          "from the reference render and the lowest PSNR of the engine's render against the reference render:")
+    doc.table(["method [engine]", "vertices", "mean ΔPSNR", "min ΔPSNR", "max ΔPSNR", "max |core - reference|",
+               "min PSNR vs reference", "images"], table)
 
 
 def colour_section(doc, ok, plan, chart_dir):
@@ -563,9 +586,17 @@ def time_section(doc, ttable, trows, plan, chart_dir):
     doc.table(["vertices"] + labs, trs)
     cpu_rows = []
     for n in sorted({n for d in ttable.values() for n in d}):
-        cpu_rows.append([f"{n:,}"] + [fmt(ttable[lab][n][1], 3) if n in ttable[lab] else "–" for lab in labs])
-    doc.p("CPU seconds of the whole trisim process (reading, rendering and metrics), minimum over repeats, mean "
-          "over images:")
+        cells = [f"{n:,}"]
+        for lab in labs:
+            here = ttable[lab].get(n)
+            th = THESIS_TIMES.get(lab.split(" ")[0], {}).get(n) if "[" not in lab else None
+            cells.append("–" if not here else fmt(here[1], 3) + " s" + (f"<br>{th / here[1]:.1f}x" if th else ""))
+        cpu_rows.append(cells)
+    doc.p("Wall-clock times on a shared, loaded machine overstate the cost (the load average above counts "
+          "processes competing for the CPUs). CPU seconds do not depend on that load; these are of the whole "
+          "trisim process (reading the files, rendering and the metrics), so they overstate the render alone and "
+          "thesis ÷ CPU is a lower bound of the speed-up. Minimum over repeats, mean over images; second line: "
+          "thesis ÷ CPU here:")
     doc.table(["vertices"] + labs, cpu_rows)
     ours = {lab: [(n, v[0]) for n, v in d.items()] for lab, d in ttable.items()}
     thesis = {m: list(d.items()) for m, d in THESIS_TIMES.items()}

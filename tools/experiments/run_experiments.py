@@ -214,6 +214,19 @@ def main(argv):
         "started": time.strftime("%Y-%m-%d %H:%M:%S UTC", time.gmtime(started)),
         "command": " ".join([Path(sys.argv[0]).name] + list(argv)), "report_only": args.report_only,
     }
+    # The last computing run of this set, so that a --report-only page can say when and how the results
+    # were computed.
+    import json
+    from runner import atomic_write_json
+    last_run = out_dir / "cache" / f"last-run-{plan.name}.json"
+    if args.report_only:
+        try:
+            context["computed_by"] = json.loads(last_run.read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            context["computed_by"] = None
+    else:
+        atomic_write_json(last_run, {k: context[k] for k in ("started", "elapsed_s", "load_start", "load_end",
+                                                             "jobs", "command", "trisim_sha", "triencode_sha")})
     try:
         report.write_report(out_dir, plan, tools, executor, work, timing, context)
     except OSError as exc:
