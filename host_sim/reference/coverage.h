@@ -50,9 +50,30 @@ inline bool owns_edge_points(const Point& a, const Point& b, int sx, int sy) {
   return (-sx * dy > 0) || (dy == 0 && sy * dx > 0);
 }
 
+namespace detail {
+
+// orient2d(a, b, p) from one floating-point evaluation when its sign is certain (Shewchuk's
+// error bound for this expression), else from the exact predicate.
+// With `exact` (every coordinate an integer of magnitude below 2^25) the evaluation has no
+// rounding at all and is returned as it is.
+inline double orient_filtered(const Point& a, const Point& b, const Point& p, bool exact) {
+  const double l = (b.x - a.x) * (p.y - a.y);
+  const double r = (b.y - a.y) * (p.x - a.x);
+  const double det = l - r;
+  if (exact) return det;
+  const double bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
+  if (det > bound || -det > bound) return det;
+  return orient2d(a, b, p);
+}
+
+inline bool is_small_integer(double v) { return v == std::trunc(v) && std::abs(v) < 33554432.0; }
+
+}  // namespace detail
+
 // Calls visit(i, j, l0, l1, l2) for every output pixel (i, j) whose sample point triangle t
 // owns; (l0, l1, l2) are the barycentric coordinates of the sample point with respect to
-// t's vertices v[0], v[1], v[2].
+// t's vertices v[0], v[1], v[2]. Each row scans only the columns of the triangle's span
+// there (widened by a pixel and a rounding margin); every pixel decision is exact.
 template <class Visit>
 void for_each_owned_pixel(const Mesh& mesh, const Topology& topo, std::uint32_t t, const PixelMapping& map,
                           Visit&& visit) {
@@ -68,18 +89,39 @@ void for_each_owned_pixel(const Mesh& mesh, const Topology& topo, std::uint32_t 
       inclusive[k][e] = topo.is_boundary_edge(t, e) ||
                         owns_edge_points(*corner[e], *corner[(e + 1) % 3], k & 1 ? 1 : -1, k & 2 ? 1 : -1);
   const double area = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x);
+  constexpr double eps = 2.220446049250313e-16;
+  // Integer vertices sampled at integer points (the usual case) need no exact fallback.
+  bool exact = map.sx == 1 && map.sy == 1;
+  for (const Point* c : corner) exact = exact && detail::is_small_integer(c->x) && detail::is_small_integer(c->y);
 
   const int i0 = map.first_column(std::min({p0.x, p1.x, p2.x}));
   const int i1 = map.last_column(std::max({p0.x, p1.x, p2.x}));
   const int j0 = map.first_row(std::min({p0.y, p1.y, p2.y}));
   const int j1 = map.last_row(std::max({p0.y, p1.y, p2.y}));
-  for (int j = j0; j <= j1; ++j)
-    for (int i = i0; i <= i1; ++i) {
+  for (int j = j0; j <= j1; ++j) {
+    const double y = map.sample(0, j).y;
+    // The span of x where every edge function is >= 0, conservatively widened.
+    double lo = -1e300, hi = 1e300;
+    for (int e = 0; e < 3; ++e) {
+      const Point& a = *corner[e];
+      const Point& b = *corner[(e + 1) % 3];
+      const double dy = b.y - a.y;
+      if (dy == 0) continue;  // a horizontal edge bounds rows, not columns: left to the exact test
+      const double shift = (b.x - a.x) * (y - a.y) / dy;
+      const double x = a.x + shift;
+      const double margin = 8 * eps * (std::abs(a.x) + std::abs(shift)) + 1e-300;
+      if (dy > 0) hi = std::min(hi, x + margin);
+      else lo = std::max(lo, x - margin);
+    }
+    if (lo > hi) continue;
+    const int first = std::max(i0, lo <= -1e299 ? i0 : map.first_column(lo));
+    const int last = std::min(i1, hi >= 1e299 ? i1 : map.last_column(hi));
+    for (int i = first; i <= last; ++i) {
       const Point p = map.sample(i, j);
       const bool* incl = inclusive[(i == 0 ? 1 : 0) + (j == 0 ? 2 : 0)];
       bool inside = true;
       for (int e = 0; e < 3 && inside; ++e) {
-        const double o = orient2d(*corner[e], *corner[(e + 1) % 3], p);
+        const double o = detail::orient_filtered(*corner[e], *corner[(e + 1) % 3], p, exact);
         inside = o > 0 || (o == 0 && incl[e]);
       }
       if (!inside) continue;
@@ -88,6 +130,7 @@ void for_each_owned_pixel(const Mesh& mesh, const Topology& topo, std::uint32_t 
       const double l1 = ((p2.x - p.x) * (p0.y - p.y) - (p2.y - p.y) * (p0.x - p.x)) / area;
       visit(i, j, l0, l1, 1.0 - l0 - l1);
     }
+  }
 }
 
 }  // namespace tristream

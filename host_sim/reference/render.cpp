@@ -33,7 +33,12 @@ Image render_reference(const Triangulation& tri, const MethodInfo& method, const
   const Field field = render_reference_field(tri, method, options);
   const int nc = field.channels;
   Image img(field.width, field.height, nc, options.background);
-  auto to_byte = [](double x) { return static_cast<std::uint8_t>(std::lround(std::fmin(255.0, std::fmax(0.0, x)))); };
+  // Clamp, then round half away from zero (x >= 0 here, so x - floor(x) is exact).
+  auto to_byte = [](double x) {
+    x = std::fmin(255.0, std::fmax(0.0, x));
+    const int r = static_cast<int>(x);
+    return static_cast<std::uint8_t>(x - r >= 0.5 ? r + 1 : r);
+  };
   for (std::size_t p = 0; p < std::size_t(field.width) * field.height; ++p) {
     const double* f = &field.v[p * nc];
     bool covered = true;

@@ -55,6 +55,28 @@ TEST_CASE("every pixel is owned by exactly one triangle") {
   }
 }
 
+TEST_CASE("every pixel is owned exactly once with sub-pixel vertices") {
+  // Lattices of step 1/2 (exact, many edges through pixel centres) and 1/3 (inexact decimals).
+  for (int step : {2, 3}) {
+    for (std::uint32_t seed = 200; seed < 204; ++seed) {
+      const int w = 30, h = 22;
+      Mesh mesh = random_lattice_mesh(step * (w - 1) + 1, step * (h - 1) + 1, 300, seed, 100);
+      for (Point& p : mesh.points) p = {p.x / step, p.y / step};
+      const Topology topo = build_topology(mesh);
+      for (auto [ow, oh] : {std::pair{w, h}, std::pair{47, 31}}) {
+        const PixelMapping map(w, h, ow, oh);
+        std::vector<int> count(std::size_t(ow) * oh, 0);
+        for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+          for_each_owned_pixel(mesh, topo, t, map, [&](int i, int j, double, double, double) { ++count[j * ow + i]; });
+        int wrong = 0;
+        for (int v : count) wrong += v != 1;
+        INFO("step 1/" << step << " seed " << seed << " output " << ow << "x" << oh);
+        CHECK(wrong == 0);
+      }
+    }
+  }
+}
+
 TEST_CASE("vertex values are reproduced exactly") {
   for (std::uint32_t seed = 10; seed < 14; ++seed) {
     Mesh mesh = random_lattice_mesh(50, 40, 120, seed, 40);
