@@ -17,7 +17,7 @@ for n in 2000 4000 20000 40000; do
         ir=$(callgrind_annotate "$out" 2>/dev/null | awk '/PROGRAM TOTALS/ {gsub(",", "", $1); print $1}')
         rm -f "$out"
         printf "%-9s %-12s %-6s %-9s %12.1f\n" "$n" "$m" "$([ "$t" = 0 ] && echo full || echo "$t")" "$f" \
-          "$(echo "$ir / ($frames * 512 * 512)" | bc -l)"
+          "$(awk -v ir="$ir" -v f="$frames" 'BEGIN { print ir / (f * 512 * 512) }')"
       done
     done
   done
