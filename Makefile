@@ -1,13 +1,13 @@
 # tristream: every target installs what it needs first (tools/install-deps.sh), then builds.
 #   make run     build, then render the demo data with every method into out/ and print a table
 #   make test    build, then run every test through ctest
-# More: make build | test-sanitize | fuzz | cross | bench | ci | clean
+# More: make build | test-sanitize | fuzz | cross | bench | experiments | experiments-quick | clean
 
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
 FUZZ_TIME  ?= 60
 
-.PHONY: all deps build run test test-sanitize fuzz cross bench ci clean experiments experiments-quick
+.PHONY: all deps build run test test-sanitize fuzz cross bench clean experiments experiments-quick
 
 all: build
 
@@ -22,10 +22,12 @@ run: build
 	bash tools/run-demo.sh $(BUILD)/bin out
 
 test: build
+	@bash tools/install-deps.sh experiments
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
 # The tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer.
 test-sanitize: deps
+	@bash tools/install-deps.sh experiments
 	cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DTRISTREAM_SANITIZE=ON -DTRISTREAM_BENCH=OFF
 	cmake --build build-sanitize -j$(JOBS)
 	cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)
@@ -37,6 +39,13 @@ fuzz:
 	  -DCMAKE_CXX_COMPILER=clang++-14 -DTRISTREAM_FUZZ=ON -DTRISTREAM_TESTS=OFF -DTRISTREAM_BENCH=OFF
 	cmake --build build-fuzz -j$(JOBS)
 	bash tools/run-fuzzers.sh build-fuzz/bin $(FUZZ_TIME)
+
+# Speed: Google Benchmark of the core (Mpixel/s for triangle counts, tilings and formats), then
+# callgrind instructions per pixel (repeatable on a busy machine).
+bench: build
+	@bash tools/install-deps.sh bench
+	$(BUILD)/bin/bench_core
+	bash tests/core/callgrind_core.sh $(BUILD)/bin/core_frames
 
 # firmware_core for Cortex-M4 (size report, fails if an allocator is linked), then the golden-image
 # test as a 32-bit ARM binary under qemu-arm (pixels must equal the x86-64 goldens).

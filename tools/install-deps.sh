@@ -8,7 +8,7 @@ declare -A groups=(
   [fuzz]="clang-14 libclang-rt-14-dev"
   [cross]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-user file"
   [bench]="valgrind"
-  [experiments]="python3 python3-numpy python3-scipy python3-matplotlib"
+  [experiments]="python3 python3-numpy python3-scipy python3-matplotlib python3-pil python3-tqdm"
 )
 
 wanted=()
