@@ -95,6 +95,17 @@ struct DirectWriter {
   uint8_t* at(int32_t x, int32_t y) const {
     return base + (y - rect.y0) * stride + (x - rect.x0) * bytes_per_pixel(F);
   }
+  // Whether put_rounded is available: channels that go to the pixel without conversion.
+  static constexpr bool takes_rounded = F != PixelFormat::coverage8 && !YCbCr;
+
+  // r: channel values already rounded to integers (q24_8 value v gives (v + 128) >> 8), unclamped.
+  void put_rounded(uint8_t* p, int32_t x, int32_t y, const int32_t* r) const {
+    if constexpr (Channels == 1) {
+      store_grey<F>(p, clamp_u8(r[0]), x, y, dither);
+    } else {
+      store_rgb<F>(p, clamp_u8(r[0]), clamp_u8(r[1]), clamp_u8(r[2]), x, y, dither);
+    }
+  }
   void put(uint8_t* p, int32_t x, int32_t y, const int32_t* v) const {
     if constexpr (F == PixelFormat::coverage8) {
       store_rgb<F>(p, 0, 0, 0, x, y, false);
@@ -116,6 +127,9 @@ struct ScratchWriter {
   int32_t width;  // pixels per scratch row
   Rect rect;
   int channel;
+
+  static constexpr bool takes_rounded = false;
+  static void put_rounded(int16_t*, int32_t, int32_t, const int32_t*) {}
 
   int16_t* at(int32_t x, int32_t y) const { return base + 3 * ((y - rect.y0) * width + (x - rect.x0)) + channel; }
   static void put(int16_t* p, int32_t, int32_t, const int32_t* v) {
@@ -157,6 +171,21 @@ struct BilinearShader {
       dv[c] = ch[c].step();
     }
     auto* p = writer.at(x0, y);
+    if constexpr (Writer::takes_rounded) {
+      // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded into
+      // the start value (covered pixels hold values far from the int32 limits).
+      for (int c = 0; c < Channels; ++c) v[c] += 1u << (q16_16::frac_bits - 1);
+      for (int32_t x = x0; x <= x1; ++x) {
+        int32_t r[Channels];
+        for (int c = 0; c < Channels; ++c) {
+          r[c] = int32_t(v[c]) >> q16_16::frac_bits;
+          v[c] += dv[c];
+        }
+        writer.put_rounded(p, x, y, r);
+        p += bpp;
+      }
+      return;
+    }
     for (int32_t x = x0; x <= x1; ++x) {
       int32_t q8[Channels];
       for (int c = 0; c < Channels; ++c) {

@@ -67,40 +67,59 @@ struct FloorStepper {
 
 // The span of covered columns of one row, from the three edges: x >= -floor(num / a) for edges
 // with a > 0 (left bounds), x <= floor(num / -a) for a < 0 (right bounds), num = b y + c.
-// Edges with a == 0 restrict rows only (see row_range).
+// Edges with a == 0 restrict rows only (see row_range). A triangle of positive area has at least
+// one left and one right bound and at most one edge with a == 0, so the bounds are kept in three
+// fixed slots: slot 0 a left bound, slot 1 a right bound, slot 2 the third edge (left, right, or a
+// neutral left bound for a == 0 that never wins), without a per-row loop over edge kinds.
 struct SpanStepper {
   FloorStepper bound[3];
-  int8_t kind[3] = {0, 0, 0};  // +1 left bound, -1 right bound, 0 horizontal
-  int count = 0;
+  bool third_left = true;
 
   void init(const Edge* edges, int32_t y0) {
-    count = 0;
+    int third = 0;
+    int order[3] = {-1, -1, -1};
     for (int k = 0; k < 3; ++k) {
       const Edge& e = edges[k];
-      if (e.a == 0) continue;
-      kind[count] = e.a > 0 ? 1 : -1;
+      if (e.a > 0 && order[0] < 0) {
+        order[0] = k;
+      } else if (e.a < 0 && order[1] < 0) {
+        order[1] = k;
+      } else {
+        third = k;
+      }
+    }
+    for (int s = 0; s < 2; ++s) {
+      const Edge& e = edges[order[s]];
       const int64_t den = e.a > 0 ? e.a : -e.a;
-      bound[count].init(e.b * y0 + e.c, e.b, den);
-      ++count;
+      bound[s].init(e.b * y0 + e.c, e.b, den);
+    }
+    const Edge& e = edges[third];
+    if (e.a == 0) {
+      third_left = true;
+      bound[2] = FloorStepper{};
+      bound[2].q = INT32_MAX;  // left bound -INT32_MAX: below every real left bound
+    } else {
+      third_left = e.a > 0;
+      const int64_t den = e.a > 0 ? e.a : -e.a;
+      bound[2].init(e.b * y0 + e.c, e.b, den);
     }
   }
   // Columns [*x0, *x1] (inclusive; empty when *x0 > *x1) of the current row.
   void span(int32_t* x0, int32_t* x1) const {
-    int32_t lo = INT32_MIN, hi = INT32_MAX;
-    for (int k = 0; k < count; ++k) {
-      if (kind[k] > 0) {
-        const int32_t v = -bound[k].q;
-        lo = v > lo ? v : lo;
-      } else {
-        const int32_t v = bound[k].q;
-        hi = v < hi ? v : hi;
-      }
+    int32_t lo = -bound[0].q, hi = bound[1].q;
+    const int32_t v = bound[2].q;
+    if (third_left) {
+      lo = -v > lo ? -v : lo;
+    } else {
+      hi = v < hi ? v : hi;
     }
     *x0 = lo;
     *x1 = hi;
   }
   void next_row() {
-    for (int k = 0; k < count; ++k) bound[k].next_row();
+    bound[0].next_row();
+    bound[1].next_row();
+    bound[2].next_row();
   }
 };
 

@@ -13,6 +13,9 @@ inline uint8_t to_u8(int32_t v_q8) {
   return uint8_t(r < 0 ? 0 : (r > 255 ? 255 : r));
 }
 
+// Clamp a rounded value to [0, 255].
+inline uint8_t clamp_u8(int32_t r) { return uint8_t(r < 0 ? 0 : (r > 255 ? 255 : r)); }
+
 // JPEG YCbCr (BT.601 full range) to RGB on q24_8 values, coefficients in q16.
 inline void ycbcr_to_rgb_q8(int32_t y, int32_t cb, int32_t cr, int32_t* rgb) {
   const int64_t dcb = int64_t(cb) - 128 * 256;
