@@ -27,7 +27,7 @@ void splat_thesis(const BezierPatch& patch, int channels, detail::PatchCanvas& c
   }
 }
 
-void rasterize_exact(const BezierPatch& patch, int channels, detail::PatchCanvas& canvas,
+void rasterize_exact(const BezierPatch& patch, std::vector<double>& value, detail::PatchCanvas& canvas,
                      std::vector<detail::MicroVertex>& node) {
   const int n = patch.subdivisions();
   // Node (i, j) has a = i / n, b = j / n; row j holds n + 1 - j nodes.
@@ -39,13 +39,14 @@ void rasterize_exact(const BezierPatch& patch, int channels, detail::PatchCanvas
       const Point p = patch.position(a, b);
       if (!detail::snap(p.x, p.y, a, b, node[index(i, j)])) return;  // absurd coordinates: no patch
     }
-  std::vector<double> value(channels);
+  double* out = value.data();
   auto visit = [&](int x, int y, double a, double b) {
-    if (!canvas.in_domain(x, y)) return;
+    const std::size_t p = canvas.index(x, y);
+    if (!canvas.inside(p)) return;
     if (!patch.solve(x, y, a, b)) return;
     if (!patch.in_domain(a, b)) return;  // outside the patch, inside a boundary chord
-    patch.values(a, b, value.data());
-    canvas.add(x, y, value.data());
+    patch.values(a, b, out);
+    canvas.add_inside(p, out);
   };
   const int w = canvas.width(), h = canvas.height();
   for (int j = 0; j < n; ++j)
@@ -123,6 +124,7 @@ void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const 
 
   PatchControl control;
   std::vector<detail::MicroVertex> nodes;
+  std::vector<double> value(std::size_t(std::max(mesh.value_count, 1)));
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     if (!patch_control(mesh, topo, t, map, control)) continue;
     // The patch lies in the convex hull of its control points: skip it when that misses the image.
@@ -135,7 +137,7 @@ void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const 
     if (thesis)
       splat_thesis(patch, control.channels, canvas);
     else
-      rasterize_exact(patch, control.channels, canvas, nodes);
+      rasterize_exact(patch, value, canvas, nodes);
   }
   if (thesis)
     canvas.resolve_thesis(out);

@@ -44,7 +44,8 @@ class BezierPatch {
   Point position(double a, double b) const { return {x_(a, b), y_(a, b)}; }
   // control.channels values at (a, b).
   void values(double a, double b, double* out) const {
-    for (std::size_t c = 0; c < value_.size(); ++c) out[c] = value_[c](a, b);
+    const detail::Quadratic2* q = value_.data();
+    for (std::size_t c = 0, n = value_.size(); c < n; ++c) out[c] = q[c](a, b);
   }
   // Solves position(a, b) = (x, y) by Newton's method from (a, b) near the solution. The map
   // is quadratic, so after a step d the residual is exactly -(k_aa d_a^2 + k_ab d_a d_b +

@@ -35,7 +35,7 @@ void splat_thesis(const CoonsPatch& patch, int channels, detail::PatchCanvas& ca
   }
 }
 
-void rasterize_exact(const CoonsPatch& patch, int channels, detail::PatchCanvas& canvas,
+void rasterize_exact(const CoonsPatch& patch, std::vector<double>& value, detail::PatchCanvas& canvas,
                      std::vector<detail::MicroVertex>& node) {
   const auto [nu, nv] = patch.subdivisions();
   // Node (i, j) has u = i / nu, v = j / nv; each grid cell is split along (i, j)-(i+1, j+1).
@@ -51,13 +51,14 @@ void rasterize_exact(const CoonsPatch& patch, int channels, detail::PatchCanvas&
     }
   const int w = canvas.width(), h = canvas.height();
   if (x1 < 0 || y1 < 0 || x0 > w - 1 || y0 > h - 1) return;
-  std::vector<double> value(channels);
+  double* out = value.data();
   auto visit = [&](int x, int y, double u, double v) {
-    if (!canvas.in_domain(x, y)) return;
+    const std::size_t p = canvas.index(x, y);
+    if (!canvas.inside(p)) return;
     if (!detail::refine_parameters(patch, x, y, u, v)) return;
     if (!patch.in_domain(u, v)) return;  // outside the patch, inside a boundary chord
-    patch.values(u, v, value.data());
-    canvas.add(x, y, value.data());
+    patch.values(u, v, out);
+    canvas.add_inside(p, out);
   };
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
@@ -120,13 +121,15 @@ void CoonsPatch::Component::expand() {
 std::array<int, 2> CoonsPatch::subdivisions() const {
   // P_uu = 2 kuu + 2 v kuuv, P_vv = 2 kvv + 2 u kuvv and P_uv = kuv + 2 u kuuv + 2 v kuvv are
   // affine, so their largest norms over the square are at its corners.
+  // Largest squared norms first, one square root each (hypot per corner cost more than the rest).
+  auto norm2 = [](double x, double y) { return x * x + y * y; };
   double kuu = 0, kvv = 0, kuv = 0;
+  for (double v : {0.0, 1.0}) kuu = std::max(kuu, norm2(2 * (x_.kuu + v * x_.kuuv), 2 * (y_.kuu + v * y_.kuuv)));
+  for (double u : {0.0, 1.0}) kvv = std::max(kvv, norm2(2 * (x_.kvv + u * x_.kuvv), 2 * (y_.kvv + u * y_.kuvv)));
   for (double u : {0.0, 1.0})
-    for (double v : {0.0, 1.0}) {
-      kuu = std::max(kuu, std::hypot(2 * (x_.kuu + v * x_.kuuv), 2 * (y_.kuu + v * y_.kuuv)));
-      kvv = std::max(kvv, std::hypot(2 * (x_.kvv + u * x_.kuvv), 2 * (y_.kvv + u * y_.kuvv)));
-      kuv = std::max(kuv, std::hypot(x_.kuv + 2 * u * x_.kuuv + 2 * v * x_.kuvv, y_.kuv + 2 * u * y_.kuuv + 2 * v * y_.kuvv));
-    }
+    for (double v : {0.0, 1.0})
+      kuv = std::max(kuv, norm2(x_.kuv + 2 * u * x_.kuuv + 2 * v * x_.kuvv, y_.kuv + 2 * u * y_.kuuv + 2 * v * y_.kuvv));
+  kuu = std::sqrt(kuu), kvv = std::sqrt(kvv), kuv = std::sqrt(kuv);
   return {detail::subdivisions_for(kuu, 2 * (kuu + kuv)), detail::subdivisions_for(kvv, 2 * (kvv + kuv))};
 }
 
@@ -140,13 +143,14 @@ void render_coons(const Mesh& mesh, int domain_width, int domain_height, const R
 
   PatchControl control;
   std::vector<detail::MicroVertex> nodes;
+  std::vector<double> value(std::size_t(std::max(mesh.value_count, 1)));
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     if (!patch_control(mesh, topo, t, map, control)) continue;
     const CoonsPatch patch(control);
     if (thesis)
       splat_thesis(patch, control.channels, canvas);
     else
-      rasterize_exact(patch, control.channels, canvas, nodes);
+      rasterize_exact(patch, value, canvas, nodes);
   }
   if (thesis)
     canvas.resolve_thesis(out);

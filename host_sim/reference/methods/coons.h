@@ -55,6 +55,7 @@ class CoonsPatch {
   void position(double u, double v, double& x, double& y, double& x_u, double& x_v, double& y_u,
                 double& y_v) const {
     const XY* k = pos_;  // k, ku, kv, kuv, kuu, kvv, kuuv, kuvv
+    // Horner in u over coefficients that are polynomials in v: P = c0 + u (c1 + u c2).
     const double uu = u * u, vv = v * v, uv = u * v;
     const XY p = k[0] + u * k[1] + v * k[2] + uv * k[3] + uu * k[4] + vv * k[5] + uu * v * k[6] + u * vv * k[7];
     const XY pu = k[1] + v * k[3] + 2 * u * k[4] + 2 * uv * k[6] + vv * k[7];
@@ -64,7 +65,8 @@ class CoonsPatch {
   Point position(double u, double v) const { return {x_.at(u, v), y_.at(u, v)}; }
   // control.channels values at (u, v).
   void values(double u, double v, double* out) const {
-    for (std::size_t c = 0; c < value_.size(); ++c) out[c] = value_[c].at(u, v);
+    const Component* q = value_.data();
+    for (std::size_t c = 0, n = value_.size(); c < n; ++c) out[c] = q[c].at(u, v);
   }
   // The parameter domain [0, 1]^2 (up to 1e-12).
   static bool in_domain(double u, double v) { return u >= -1e-12 && v >= -1e-12 && u <= 1 + 1e-12 && v <= 1 + 1e-12; }

@@ -58,12 +58,17 @@ void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, 
     unsigned inclusive = 0;
     for (int e = 0; e < 3; ++e)
       if (topo.is_boundary_edge(t, e)) inclusive |= 1u << e;
+    const double* q0 = &mesh.values[std::size_t(v[0]) * nc];
+    const double* q1 = &mesh.values[std::size_t(v[1]) * nc];
+    const double* q2 = &mesh.values[std::size_t(v[2]) * nc];
+    double* field = out.v.data();
+    const std::size_t width = std::size_t(out.width), stride = std::size_t(out.channels);
     rasterize_micro_triangle(
         a, b, c, out.width, out.height,
         [&](int i, int j, double l0, double l1) {
-          for (int ch = 0; ch < nc; ++ch)
-            out.at(i, j, ch) =
-                l0 * mesh.value(v[0], ch) + l1 * mesh.value(v[1], ch) + (1 - l0 - l1) * mesh.value(v[2], ch);
+          double* o = field + (std::size_t(j) * width + i) * stride;
+          const double l2 = 1 - l0 - l1;
+          for (int ch = 0; ch < nc; ++ch) o[ch] = l0 * q0[ch] + l1 * q1[ch] + l2 * q2[ch];
         },
         inclusive);
   }
