@@ -4,6 +4,12 @@
 
 namespace tristream::core::detail {
 
+// floor(n / d) for d > 0, always in 64 bits (for dividends that rarely fit 32 bits).
+inline int64_t floor_div64(int64_t n, int64_t d) {
+  int64_t q = n / d;
+  return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
 // floor(n / d) for d > 0.
 inline int64_t floor_div(int64_t n, int64_t d) {
   if (n == int64_t(int32_t(n)) && d == int64_t(int32_t(d))) {
@@ -17,7 +23,8 @@ inline int64_t floor_div(int64_t n, int64_t d) {
 }
 
 // n / d rounded to nearest (halves up) for d > 0; |n| < 2^62.
-inline int64_t round_div(int64_t n, int64_t d) { return floor_div(2 * n + d, 2 * d); }
+// Its dividends (gradients and weights scaled by 2^8 or 2^30) hardly ever fit 32 bits.
+inline int64_t round_div(int64_t n, int64_t d) { return floor_div64(2 * n + d, 2 * d); }
 
 inline int32_t min3(int32_t a, int32_t b, int32_t c) { return a < b ? (a < c ? a : c) : (b < c ? b : c); }
 inline int32_t max3(int32_t a, int32_t b, int32_t c) { return a > b ? (a > c ? a : c) : (b > c ? b : c); }
