@@ -1,23 +1,14 @@
 // The Bezier triangle patch of one triangle and its neighbours (thesis §3.3, NOTES.md §3.3).
 #include <catch2/catch.hpp>
 
+#include "methods_support.h"
 #include "model/topology.h"
 #include "reference/methods/bezier.h"
 
 using namespace tristream;
+using tristream::testing::four_triangles;
 
 namespace {
-
-// Triangle 0 = (A, B, C) with a neighbour across each edge; apexes N_ab, N_bc, N_ca.
-Mesh four_triangles(const Point& a, const Point& b, const Point& c, const Point& n_ab, const Point& n_bc,
-                    const Point& n_ca) {
-  Mesh mesh;
-  mesh.points = {a, b, c, n_ab, n_bc, n_ca};
-  mesh.values = {10, 20, 30, 40, 50, 60};
-  mesh.triangles = {Triangle{{0, 1, 2}}, Triangle{{1, 0, 3}}, Triangle{{2, 1, 4}}, Triangle{{0, 2, 5}}};
-  mesh.normalize_winding();
-  return mesh;
-}
 
 bool same(const Point& p, const Point& q) { return p.x == Approx(q.x).margin(1e-12) && p.y == Approx(q.y).margin(1e-12); }
 

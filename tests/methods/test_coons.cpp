@@ -4,22 +4,14 @@
 #include <cmath>
 #include <random>
 
+#include "methods_support.h"
 #include "model/topology.h"
 #include "reference/methods/coons.h"
 
 using namespace tristream;
+using tristream::testing::four_triangles;
 
 namespace {
-
-Mesh four_triangles(const Point& a, const Point& b, const Point& c, const Point& n_ab, const Point& n_bc,
-                    const Point& n_ca) {
-  Mesh mesh;
-  mesh.points = {a, b, c, n_ab, n_bc, n_ca};
-  mesh.values = {10, 20, 30, 40, 50, 60};
-  mesh.triangles = {Triangle{{0, 1, 2}}, Triangle{{1, 0, 3}}, Triangle{{2, 1, 4}}, Triangle{{0, 2, 5}}};
-  mesh.normalize_winding();
-  return mesh;
-}
 
 PatchControl control_of(const Mesh& mesh) {
   const Topology topo = build_topology(mesh);

@@ -11,42 +11,12 @@
 #include "reference/methods/natural.h"
 #include "reference/render.h"
 #include "../support/random_mesh.h"
+#include "methods_support.h"
 
 using namespace tristream;
+using namespace tristream::testing;
 
 namespace {
-
-using Polygon = std::vector<Point>;
-
-// Keeps the part of `poly` no farther from a than from b (a half-plane; Sutherland-Hodgman).
-Polygon clip_closer_to(const Polygon& poly, const Point& a, const Point& b) {
-  // Inside when s(x) = 2 x.(b - a) - (|b|^2 - |a|^2) <= 0.
-  auto s = [&](const Point& x) {
-    return 2 * (x.x * (b.x - a.x) + x.y * (b.y - a.y)) - ((b.x * b.x + b.y * b.y) - (a.x * a.x + a.y * a.y));
-  };
-  Polygon out;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const Point& p = poly[i];
-    const Point& q = poly[(i + 1) % poly.size()];
-    const double sp = s(p), sq = s(q);
-    if (sp <= 0) out.push_back(p);
-    if ((sp < 0 && sq > 0) || (sp > 0 && sq < 0)) {
-      const double t = sp / (sp - sq);
-      out.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)});
-    }
-  }
-  return out;
-}
-
-double area(const Polygon& poly) {
-  double a = 0;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const Point& p = poly[i];
-    const Point& q = poly[(i + 1) % poly.size()];
-    a += p.x * q.y - q.x * p.y;
-  }
-  return std::abs(a) / 2;
-}
 
 // Sibson coordinates by definition: p's Voronoi cell among sites + p, intersected with each
 // site's old Voronoi cell, O(n^2) half-plane clips. `box` must contain p's cell.

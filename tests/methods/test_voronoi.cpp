@@ -15,37 +15,12 @@
 #include "reference/methods/zienkiewicz.h"
 #include "reference/render.h"
 #include "../support/random_mesh.h"
+#include "methods_support.h"
 
 using namespace tristream;
+using namespace tristream::testing;
 
 namespace {
-
-using Polygon = std::vector<Point>;
-
-Polygon clip_closer_to(const Polygon& poly, const Point& a, const Point& b) {
-  auto s = [&](const Point& x) {
-    return 2 * (x.x * (b.x - a.x) + x.y * (b.y - a.y)) - ((b.x * b.x + b.y * b.y) - (a.x * a.x + a.y * a.y));
-  };
-  Polygon out;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const Point& p = poly[i];
-    const Point& q = poly[(i + 1) % poly.size()];
-    const double sp = s(p), sq = s(q);
-    if (sp <= 0) out.push_back(p);
-    if ((sp < 0 && sq > 0) || (sp > 0 && sq < 0)) {
-      const double t = sp / (sp - sq);
-      out.push_back({p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)});
-    }
-  }
-  return out;
-}
-
-double area(std::span<const Point> poly) {
-  double a = 0;
-  for (std::size_t i = 0; i < poly.size(); ++i)
-    a += poly[i].x * poly[(i + 1) % poly.size()].y - poly[(i + 1) % poly.size()].x * poly[i].y;
-  return std::abs(a) / 2;
-}
 
 double dist(const Point& a, const Point& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
