@@ -115,34 +115,16 @@ bool BezierPatch::solve(double x, double y, double& a, double& b) const {
 int BezierPatch::subdivisions() const { return detail::subdivisions_for(second_derivative_, second_derivative_); }
 
 void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
-  const bool thesis = detail::is_thesis_variant("bezier", options.variant);
-  const Topology topo = build_topology(mesh);
-  const PixelMapping map(domain_width, domain_height, out.width, out.height);
-  Field prefill(out.width, out.height, out.channels);
-  detail::bilinear_prefill(mesh, topo, domain_width, domain_height, options, prefill);
-  detail::PatchCanvas canvas(prefill);
-
-  PatchControl control;
-  std::vector<detail::MicroVertex> nodes;
-  std::vector<double> value(std::size_t(std::max(mesh.value_count, 1)));
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (!patch_control(mesh, topo, t, map, control)) continue;
-    // The patch lies in the convex hull of its control points: skip it when that misses the image.
+  // The patch lies in the convex hull of its control points: skip it when that misses the image.
+  auto meets_image = [&out](const PatchControl& control) {
     double x0 = control.pixel[0].x, x1 = x0, y0 = control.pixel[0].y, y1 = y0;
     for (const Point& p : control.pixel) {
       x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
     }
-    if (x1 < -1 || y1 < -1 || x0 > out.width || y0 > out.height) continue;
-    const BezierPatch patch(control);
-    if (thesis)
-      splat_thesis(patch, control.channels, canvas);
-    else
-      rasterize_exact(patch, value, canvas, nodes);
-  }
-  if (thesis)
-    canvas.resolve_thesis(out);
-  else
-    canvas.resolve_exact(out);
+    return !(x1 < -1 || y1 < -1 || x0 > out.width || y0 > out.height);
+  };
+  detail::render_patches<BezierPatch>("bezier", mesh, domain_width, domain_height, options, out, meets_image,
+                                      splat_thesis, rasterize_exact);
 }
 
 }  // namespace tristream

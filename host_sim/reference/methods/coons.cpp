@@ -134,28 +134,9 @@ std::array<int, 2> CoonsPatch::subdivisions() const {
 }
 
 void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
-  const bool thesis = detail::is_thesis_variant("coons", options.variant);
-  const Topology topo = build_topology(mesh);
-  const PixelMapping map(domain_width, domain_height, out.width, out.height);
-  Field prefill(out.width, out.height, out.channels);
-  detail::bilinear_prefill(mesh, topo, domain_width, domain_height, options, prefill);
-  detail::PatchCanvas canvas(prefill);
-
-  PatchControl control;
-  std::vector<detail::MicroVertex> nodes;
-  std::vector<double> value(std::size_t(std::max(mesh.value_count, 1)));
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (!patch_control(mesh, topo, t, map, control)) continue;
-    const CoonsPatch patch(control);
-    if (thesis)
-      splat_thesis(patch, control.channels, canvas);
-    else
-      rasterize_exact(patch, value, canvas, nodes);
-  }
-  if (thesis)
-    canvas.resolve_thesis(out);
-  else
-    canvas.resolve_exact(out);
+  detail::render_patches<CoonsPatch>(
+      "coons", mesh, domain_width, domain_height, options, out, [](const PatchControl&) { return true; },
+      splat_thesis, rasterize_exact);
 }
 
 }  // namespace tristream

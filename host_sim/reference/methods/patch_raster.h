@@ -43,6 +43,7 @@
 
 #include "common/errors.h"
 #include "model/topology.h"
+#include "reference/methods/patch_control.h"
 #include "reference/render.h"
 
 namespace tristream::detail {
@@ -259,6 +260,38 @@ bool refine_parameters(const Patch& patch, double x, double y, double& s, double
     }
   }
   return false;
+}
+
+// The render loop of the patch methods: the bilinear pre-fill, then for each triangle with
+// three neighbours whose control points `accept(control)` takes, the patch built by
+// Patch(control), splatted as the thesis does (`splat`) or rasterized exactly
+// (`rasterize`), then the averages written to `out`.
+template <class Patch, class Accept, class Splat, class Rasterize>
+void render_patches(std::string_view method, const Mesh& mesh, int domain_width, int domain_height,
+                    const RenderOptions& options, Field& out, Accept&& accept, Splat&& splat,
+                    Rasterize&& rasterize) {
+  const bool thesis = is_thesis_variant(method, options.variant);
+  const Topology topo = build_topology(mesh);
+  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+  Field prefill(out.width, out.height, out.channels);
+  bilinear_prefill(mesh, topo, domain_width, domain_height, options, prefill);
+  PatchCanvas canvas(prefill);
+
+  PatchControl control;
+  std::vector<MicroVertex> nodes;
+  std::vector<double> value(std::size_t(std::max(mesh.value_count, 1)));
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (!patch_control(mesh, topo, t, map, control) || !accept(control)) continue;
+    const Patch patch(control);
+    if (thesis)
+      splat(patch, control.channels, canvas);
+    else
+      rasterize(patch, value, canvas, nodes);
+  }
+  if (thesis)
+    canvas.resolve_thesis(out);
+  else
+    canvas.resolve_exact(out);
 }
 
 }  // namespace tristream::detail
