@@ -4,8 +4,8 @@
 // domain. Prints figures; not a test.
 //   build*/bin/bench_patches
 // Wall and CPU time are noisy on the shared machine; instruction counts are repeatable:
-//   valgrind --tool=callgrind '--toggle-collect=tristream::render_coons(*' \
-//     build*/bin/bench_patches --benchmark_filter='BM_coons_512/1$' --benchmark_min_time=0.000001
+//   valgrind --tool=callgrind '--toggle-collect=tristream::render_coons(*' build*/bin/bench_patches
+//     --benchmark_filter='BM_coons_512/1$' --benchmark_min_time=0.000001   (one command line)
 // (one render; divide by 512 * 512 for instructions per pixel). Grey, 13,004 vertices:
 //   bezier 631.9M (2,410 per pixel) before the bit-identical speedups, 593.0M (2,262) after;
 //   coons 1,059.2M (4,041) before, 988.5M (3,771) after. Of coons's, about 1.07M calls of
