@@ -59,7 +59,7 @@ bool is_locally_delaunay(const Mesh& mesh, const Topology& topo) {
 
 void SibsonCoordinates::prepare() {
   const std::size_t nt = mesh_.triangles.size();
-  centre_.resize(nt);
+  tri_.resize(nt);
   circle_.resize(nt);
   for (std::size_t t = 0; t < nt; ++t) {
     const auto& v = mesh_.triangles[t].v;
@@ -67,7 +67,12 @@ void SibsonCoordinates::prepare() {
     const Point& b = mesh_.points[v[1]];
     const Point& c = mesh_.points[v[2]];
     const Point cc = circumcentre_from(a, b, c);
-    centre_[t] = {a.x + cc.x, a.y + cc.y};
+    TriangleRecord& r = tri_[t];
+    r.centre = {a.x + cc.x, a.y + cc.y};
+    for (int e = 0; e < 3; ++e) {
+      r.v[e] = v[e];
+      r.n[e] = topo_.neighbour[3 * t + e];
+    }
     const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
     const double lb = bx * bx + by * by, lc = cx * cx + cy * cy;
     circle_[t] = {a.x,
@@ -80,14 +85,18 @@ void SibsonCoordinates::prepare() {
                   std::abs(bx * cy) + std::abs(by * cx)};
   }
   mark_.assign(nt, 0);
-  vertex_stamp_.assign(mesh_.points.size(), 0);
-  vertex_slot_.assign(mesh_.points.size(), 0);
+  vertex_slot_.assign(mesh_.points.size(), VertexSlot{});
+  integer_points_ = true;
+  for (const Point& q : mesh_.points)
+    integer_points_ = integer_points_ && q.x >= 0 && q.x <= exact_limit && q.y >= 0 && q.y <= exact_limit &&
+                      q.x == std::uint32_t(q.x) && q.y == std::uint32_t(q.y);
 }
 
-bool SibsonCoordinates::in_circle(std::uint32_t t, const Point& p) const {
+inline bool SibsonCoordinates::in_circle(std::uint32_t t, const Point& p, bool exact) const {
   const CircleTest& k = circle_[t];
   const double dx = p.x - k.ax, dy = p.y - k.ay, l = dx * dx + dy * dy;
   const double f = k.alpha * dx + k.beta * dy + k.gamma * l;
+  if (exact) return f > 0;
   const double bound = circle_filter * (k.alpha_abs * std::abs(dx) + k.beta_abs * std::abs(dy) + k.gamma_abs * l);
   if (f > bound) return true;
   if (f < -bound) return false;
@@ -161,7 +170,7 @@ bool SibsonCoordinates::compute_in(const Point& p, std::uint32_t t0, std::vector
 void SibsonCoordinates::next_query() {
   if (++query_ == 0) {
     std::fill(mark_.begin(), mark_.end(), 0);
-    std::fill(vertex_stamp_.begin(), vertex_stamp_.end(), 0);
+    std::fill(vertex_slot_.begin(), vertex_slot_.end(), VertexSlot{});
     query_ = 1;
   }
 }
@@ -169,6 +178,7 @@ void SibsonCoordinates::next_query() {
 bool SibsonCoordinates::cavity_coordinates(const Point& p, std::uint32_t t0, std::vector<NeighbourWeight>& out) {
   // The cavity: triangles whose circumcircle strictly contains p, a connected set around t0.
   next_query();
+  const bool exact = exact_point(p);
   cavity_.clear();
   stack_.assign(1, t0);
   mark_[t0] = 2 * std::uint64_t(query_) + 1;
@@ -179,7 +189,7 @@ bool SibsonCoordinates::cavity_coordinates(const Point& p, std::uint32_t t0, std
     for (int e = 0; e < 3; ++e) {
       const std::uint32_t n = topo_.neighbour[3 * t + e];
       if (n != no_neighbour && (mark_[n] >> 1) != query_) {
-        const bool in = in_circle(n, p);
+        const bool in = in_circle(n, p, exact);
         mark_[n] = 2 * std::uint64_t(query_) + in;
         if (in) stack_.push_back(n);
       }
@@ -201,50 +211,61 @@ bool SibsonCoordinates::stolen_areas(const Point& p, std::span<const std::uint32
   // polygon; boundary edge a -> b of T adds c(T) x g to a's and g x c(T) to b's, and
   // closes a's polygon with g x (a's first point) and opens b's with g. (Every vertex of a
   // cavity triangle is on the cavity boundary.) The caller has called next_query().
+  // Scratch for every vertex of the cavity (at most three per triangle), so the pass below
+  // never grows it.
+  if (polygon_.size() < 3 * cavity.size()) polygon_.resize(3 * cavity.size() + 16);
+  StolenPolygon* const poly = polygon_.data();
+  VertexSlot* const slots = vertex_slot_.data();
+  const TriangleRecord* const tri = tri_.data();
+  const Point* const points = mesh_.points.data();
+  const std::uint32_t query = query_;
+  std::uint32_t count = 0;
   auto slot_of = [&](std::uint32_t v) __attribute__((always_inline)) {
-    if (vertex_stamp_[v] != query_) {
-      vertex_stamp_[v] = query_;
-      vertex_slot_[v] = std::uint32_t(out.size());
-      if (out.size() == polygon_.size()) polygon_.resize(2 * polygon_.size() + 16);
-      polygon_[out.size()] = {};
-      out.push_back({v, 0.0});
+    VertexSlot& s = slots[v];
+    if (s.stamp != query) {
+      s.stamp = query;
+      s.index = count;
+      poly[count] = {0.0, {}, {}, v};
+      ++count;
     }
-    return vertex_slot_[v];
+    return s.index;
   };
   for (const std::uint32_t t : cavity) {
-    const auto& v = mesh_.triangles[t].v;
-    const Point ct = {centre_[t].x - p.x, centre_[t].y - p.y};
-    for (int e = 0; e < 3; ++e) {
-      const std::uint32_t n = topo_.neighbour[3 * t + e];
-      const std::uint32_t a = v[e], b = v[(e + 1) % 3];
+    const TriangleRecord& r = tri[t];
+    const Point ct = {r.centre.x - p.x, r.centre.y - p.y};
+    // Edge a -> b of t with neighbour n across it; false when p turns out to be on a hull
+    // edge (out then holds the result).
+    auto edge = [&](std::uint32_t a, std::uint32_t b, std::uint32_t n) __attribute__((always_inline)) {
       if (inside(n)) {
-        const Point cn = {centre_[n].x - p.x, centre_[n].y - p.y};
-        out[slot_of(a)].weight += ct.x * cn.y - cn.x * ct.y;
-        continue;
+        const Point cn = {tri[n].centre.x - p.x, tri[n].centre.y - p.y};
+        poly[slot_of(a)].sum += ct.x * cn.y - cn.x * ct.y;
+        return true;
       }
-      if (n == no_neighbour && orient2d(mesh_.points[a], mesh_.points[b], p) == 0) {
+      if (n == no_neighbour && orient2d(points[a], points[b], p) == 0) {
         // p is on the hull boundary. On this edge: linear along it. On the line but beyond
         // the segment (collinear hull vertices): the edge holding p is a boundary edge too.
-        if (on_hull_edge(p, a, b, out)) return true;
-        continue;
+        return !on_hull_edge(p, a, b, out);
       }
-      const Point g = circumcentre_from(p, mesh_.points[a], mesh_.points[b]);
+      const Point g = circumcentre_from(p, points[a], points[b]);
       const std::uint32_t sa = slot_of(a);
-      out[sa].weight += ct.x * g.y - g.x * ct.y;
-      polygon_[sa].last = g;
+      poly[sa].sum += ct.x * g.y - g.x * ct.y;
+      poly[sa].last = g;
       const std::uint32_t sb = slot_of(b);
-      out[sb].weight += g.x * ct.y - ct.x * g.y;
-      polygon_[sb].first = g;
-    }
+      poly[sb].sum += g.x * ct.y - ct.x * g.y;
+      poly[sb].first = g;
+      return true;
+    };
+    if (!edge(r.v[0], r.v[1], r.n[0]) || !edge(r.v[1], r.v[2], r.n[1]) || !edge(r.v[2], r.v[0], r.n[2])) return true;
   }
   double total = 0;
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    const Point& l = polygon_[k].last;
-    const Point& f = polygon_[k].first;
+  if (out.capacity() < count) out.reserve(2 * count);
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const Point& l = poly[k].last;
+    const Point& f = poly[k].first;
     // The polygon runs clockwise in the orient2d > 0 frame, hence the minus sign. A true
     // stolen area is >= 0; rounding could leave a tiny negative for a sliver: taken as 0.
-    const double stolen = std::max(0.0, -0.5 * (out[k].weight + l.x * f.y - f.x * l.y));
-    out[k].weight = stolen;
+    const double stolen = std::max(0.0, -0.5 * (poly[k].sum + l.x * f.y - f.x * l.y));
+    out.push_back({poly[k].vertex, stolen});
     total += stolen;
   }
   if (!(total > 0)) {  // cannot happen for p strictly inside the hull; never divide by 0
@@ -257,34 +278,61 @@ bool SibsonCoordinates::stolen_areas(const Point& p, std::span<const std::uint32
 }
 
 void SibsonCoordinates::for_each_sample(const PixelMapping& map, double xmax, double ymax, const SampleVisit& visit) {
+  sweep(map, xmax, ymax, visit);
+}
+
+template <class Visit>
+void SibsonCoordinates::sweep(const PixelMapping& map, double xmax, double ymax, Visit&& visit) {
   const std::size_t nt = mesh_.triangles.size();
   const int width = map.out_width, height = map.out_height;
   std::vector<NeighbourWeight> weights;
   bool finite = true;
-  for (const Point& c : centre_) finite = finite && std::isfinite(c.x) && std::isfinite(c.y);
+  for (const TriangleRecord& r : tri_) finite = finite && std::isfinite(r.centre.x) && std::isfinite(r.centre.y);
   if (!finite) {  // a sliver whose circumcentre overflowed: the per-pixel search needs no circle
     for (int j = 0; j < height; ++j)
       for (int i = 0; i < width; ++i)
         if (compute(map.sample(i, j), weights)) visit(i, j, weights);
     return;
   }
+  // Sample points on the integer grid with integer vertices: incircle signs without rounding
+  // (see CircleTest), and a vertex of t is then on its circle with F == 0 exactly.
+  const bool exact = integer_points_ && map.sx == 1 && map.sy == 1 && width - 1 <= exact_limit &&
+                     height - 1 <= exact_limit;
+  // Each circle: centre and squared radius, and (used when exact) its incircle terms, in one
+  // cache line for the row passes, which visit the circles in no spatial order.
+  struct alignas(64) Disk {
+    double cx, cy, r2;
+    double ax, ay, alpha, beta, gamma;  // as in CircleTest
+  };
+  std::vector<Disk> disk(nt);
+  // With exact: the vertex at each pixel, if any (sample point (i, j) is pixel (i, j)).
+  std::vector<std::uint32_t> vertex_at;
+  if (exact) {
+    vertex_at.assign(std::size_t(width) * height, no_neighbour);
+    for (std::uint32_t v = 0; v < mesh_.points.size(); ++v) {
+      const Point& q = mesh_.points[v];
+      if (q.x < width && q.y < height) vertex_at[std::size_t(q.y) * width + std::size_t(q.x)] = v;
+    }
+  }
   // Rows whose sample line can meet each triangle's circle (with a row of margin), bucketed.
-  std::vector<double> radius2(nt);
   std::vector<std::uint32_t> row_start(std::size_t(height) + 1, 0), row_items;
   auto rows_of = [&](std::uint32_t t, int& j0, int& j1) {
-    const double r = std::sqrt(radius2[t]);
-    const double lo = (centre_[t].y - r) / map.sy, hi = (centre_[t].y + r) / map.sy;
+    const double r = std::sqrt(disk[t].r2);
+    const double lo = (disk[t].cy - r) / map.sy, hi = (disk[t].cy + r) / map.sy;
     j0 = lo < 1 ? 0 : lo > height ? height : int(lo) - 1;
     j1 = hi < -1 ? -1 : hi > height - 2 ? height - 1 : int(hi) + 1;
   };
   for (std::uint32_t t = 0; t < nt; ++t) {
     const Point& a = mesh_.points[mesh_.triangles[t].v[0]];
-    radius2[t] = (a.x - centre_[t].x) * (a.x - centre_[t].x) + (a.y - centre_[t].y) * (a.y - centre_[t].y);
+    const Point& c = tri_[t].centre;
+    const CircleTest& k = circle_[t];
+    disk[t] = {c.x, c.y, (a.x - c.x) * (a.x - c.x) + (a.y - c.y) * (a.y - c.y), k.ax, k.ay, k.alpha, k.beta, k.gamma};
     int j0, j1;
     rows_of(t, j0, j1);
     for (int j = j0; j <= j1; ++j) ++row_start[j + 1];
   }
   for (int j = 0; j < height; ++j) row_start[j + 1] += row_start[j];
+
   row_items.resize(row_start[height]);
   {
     std::vector<std::uint32_t> fill(row_start.begin(), row_start.end() - 1);
@@ -300,7 +348,7 @@ void SibsonCoordinates::for_each_sample(const PixelMapping& map, double xmax, do
   // segment). Entering and leaving columns become events; the sweep keeps the active set,
   // which for a point strictly inside the hull is its Bowyer-Watson cavity.
   std::vector<std::uint32_t> enter_start(std::size_t(width) + 2), leave_start(std::size_t(width) + 2);
-  std::vector<std::uint32_t> enter_items, leave_items;
+  std::vector<std::uint32_t> enter_items, leave_items, enter_fill, leave_fill;
   std::vector<std::pair<int, int>> run;  // per row item: [first, last] column, first > last if none
   std::vector<std::uint32_t> active, position(nt, 0);
   std::vector<std::uint8_t> is_active(nt, 0);
@@ -312,17 +360,23 @@ void SibsonCoordinates::for_each_sample(const PixelMapping& map, double xmax, do
     std::fill(leave_start.begin(), leave_start.end(), 0);
     for (std::uint32_t k = b0; k < b1; ++k) {
       const std::uint32_t t = row_items[k];
+      if (k + 8 < b1) __builtin_prefetch(&disk[row_items[k + 8]]);
       const auto& tv = mesh_.triangles[t].v;
+      const Disk& d = disk[t];
       auto in = [&](int i) {
         const Point p = map.sample(i, j);
+        if (exact) {  // in_circle(t, p, true) from this cache line
+          const double dx = p.x - d.ax, dy = p.y - d.ay, l = dx * dx + dy * dy;
+          return d.alpha * dx + d.beta * dy + d.gamma * l > 0;
+        }
         // A vertex of t is on its circle: skip the exact test the filter would need there.
         for (const std::uint32_t v : tv)
           if (mesh_.points[v].x == p.x && mesh_.points[v].y == p.y) return false;
-        return in_circle(t, p);
+        return in_circle(t, p, false);
       };
-      const double dy = y - centre_[t].y;
-      const double h = std::sqrt(std::max(0.0, radius2[t] - dy * dy));
-      const double cx = centre_[t].x / map.sx, hx = h / map.sx;
+      const double dy = y - d.cy;
+      const double h = std::sqrt(std::max(0.0, d.r2 - dy * dy));
+      const double cx = d.cx / map.sx, hx = h / map.sx;
       // Columns are clamped to the image (the estimates lie far inside int range there).
       auto clamp_col = [&](double x) { return x < -1 ? -1.0 : x > width ? double(width) : x; };
       const double lo = clamp_col(cx - hx), hi = clamp_col(cx + hx);
@@ -356,16 +410,13 @@ void SibsonCoordinates::for_each_sample(const PixelMapping& map, double xmax, do
     }
     enter_items.resize(enter_start[width + 1]);
     leave_items.resize(leave_start[width + 1]);
-    {
-      std::vector<std::uint32_t>& ef = stack_;  // scratch: fill positions
-      ef.assign(enter_start.begin(), enter_start.end());
-      std::vector<std::uint32_t> lf(leave_start.begin(), leave_start.end());
-      for (std::uint32_t k = b0; k < b1; ++k) {
-        const auto [first, last] = run[k - b0];
-        if (first > last) continue;
-        enter_items[ef[first]++] = row_items[k];
-        leave_items[lf[last + 1]++] = row_items[k];
-      }
+    enter_fill.assign(enter_start.begin(), enter_start.end());
+    leave_fill.assign(leave_start.begin(), leave_start.end());
+    for (std::uint32_t k = b0; k < b1; ++k) {
+      const auto [first, last] = run[k - b0];
+      if (first > last) continue;
+      enter_items[enter_fill[first]++] = row_items[k];
+      leave_items[leave_fill[last + 1]++] = row_items[k];
     }
     for (int i = 0; i < width; ++i) {
       for (std::uint32_t k = leave_start[i]; k < leave_start[i + 1]; ++k) {
@@ -387,7 +438,14 @@ void SibsonCoordinates::for_each_sample(const PixelMapping& map, double xmax, do
       if (!(p.x >= 0 && p.x <= xmax && p.y >= 0 && p.y <= ymax)) {
         ok = compute(p, weights);  // the caller's rectangle is the hull; outside it by rounding
       } else if (active.empty()) {
-        ok = compute(p, weights);  // in no circle: p is a vertex
+        // In no circle: p is a vertex (its value alone, as compute() gives).
+        const std::uint32_t v = exact ? vertex_at[std::size_t(j) * width + i] : no_neighbour;
+        if (v != no_neighbour) {
+          weights.assign(1, {v, 1.0});
+          ok = true;
+        } else {
+          ok = compute(p, weights);
+        }
       } else {
         next_query();
         ok = stolen_areas(p, active, [&](std::uint32_t n) { return n != no_neighbour && is_active[n]; }, weights);
@@ -550,7 +608,7 @@ void render_natural(const Mesh& mesh, int domain_width, int domain_height, const
     }
   };
   if (full) {
-    sibson.for_each_sample(map, xmax, ymax, write);
+    sibson.sweep(map, xmax, ymax, write);
     return;
   }
   std::vector<NeighbourWeight> weights;

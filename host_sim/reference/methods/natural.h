@@ -71,7 +71,12 @@ class SibsonCoordinates {
   const Topology& delaunay_topology() const { return topo_; }
 
  private:
+  friend void render_natural(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options,
+                             Field& out);
   void prepare();  // circumcentres, incircle terms and scratch of the triangulation
+  // The row sweep of for_each_sample() with the visitor inlined.
+  template <class Visit>
+  void sweep(const PixelMapping& map, double xmax, double ymax, Visit&& visit);
   // A triangle whose closed interior contains p, or no_neighbour when p is outside the hull.
   std::uint32_t locate(const Point& p);
   // The weights from the cavity grown from t0, whose circle strictly contains p.
@@ -80,32 +85,55 @@ class SibsonCoordinates {
   template <class Inside>
   bool stolen_areas(const Point& p, std::span<const std::uint32_t> cavity, Inside inside,
                     std::vector<NeighbourWeight>& out);
-  void next_query();  // a fresh stamp for mark_ and vertex_stamp_
+  void next_query();  // a fresh stamp for mark_ and vertex_slot_
   bool on_hull_edge(const Point& p, std::uint32_t a, std::uint32_t b, std::vector<NeighbourWeight>& out) const;
-  // incircle(triangle t, p) > 0, decided exactly.
-  bool in_circle(std::uint32_t t, const Point& p) const;
+  // incircle(triangle t, p) > 0, decided exactly. With `exact` (integer_points_ and p on the
+  // integer grid [0, exact_limit]^2) the floating-point evaluation has no rounding at all.
+  bool in_circle(std::uint32_t t, const Point& p, bool exact) const;
+  bool in_circle(std::uint32_t t, const Point& p) const { return in_circle(t, p, exact_point(p)); }
+  bool exact_point(const Point& p) const {
+    return integer_points_ && p.x >= 0 && p.x <= exact_limit && p.y >= 0 && p.y <= exact_limit &&
+           p.x == std::uint32_t(p.x) && p.y == std::uint32_t(p.y);
+  }
 
   // The lifted incircle determinant of triangle (a, b, c) expanded along p's row, relative
   // to a: F(p) = alpha dx + beta dy + gamma (dx^2 + dy^2), dx = p.x - a.x, dy = p.y - a.y,
   // positive iff p is strictly inside; *_abs are the matching permanents for the error bound.
+  // For integer coordinates in [0, exact_limit] every term is an integer below 2^52 (all
+  // differences D <= 2^12: |alpha|, |beta| <= 4 D^3, |gamma| <= 2 D^2, |F| <= 12 D^4), so F
+  // is computed without rounding and its sign is the exact predicate's.
+  static constexpr double exact_limit = 4096;
   struct alignas(64) CircleTest {
     double ax, ay, alpha, beta, gamma, alpha_abs, beta_abs, gamma_abs;
+  };
+  // What the stolen-area pass reads of a triangle, in one place: its circumcentre, vertices
+  // and neighbours (topo_.neighbour order).
+  struct TriangleRecord {
+    Point centre;
+    std::uint32_t v[3];
+    std::uint32_t n[3];
   };
 
   Mesh mesh_;  // the Delaunay triangulation (points and triangles only)
   Topology topo_;
-  std::vector<Point> centre_;  // circumcentre of each triangle
+  std::vector<TriangleRecord> tri_;
   std::vector<CircleTest> circle_;
+  bool integer_points_ = false;  // every point an integer in [0, exact_limit]
   std::uint32_t hint_ = 0;
   // Scratch of compute_in().
-  struct PolygonEnds {
+  struct VertexSlot {
+    std::uint32_t stamp = 0, index = 0;  // query number, index in the stolen-area scratch
+  };
+  struct StolenPolygon {
+    double sum;         // shoelace sum so far, relative to p
     Point first, last;  // g of the boundary edges into and out of a cavity boundary vertex
+    std::uint32_t vertex;
   };
   std::vector<std::uint64_t> mark_;  // per triangle: 2 * query number + (in the cavity) when tested
   std::uint32_t query_ = 0;
   std::vector<std::uint32_t> stack_, cavity_;
-  std::vector<std::uint32_t> vertex_stamp_, vertex_slot_;  // per vertex: query, index in out
-  std::vector<PolygonEnds> polygon_;
+  std::vector<VertexSlot> vertex_slot_;  // per vertex
+  std::vector<StolenPolygon> polygon_;
 };
 
 // For every output pixel, the triangle of `mesh` that owns its sample point under the rule of
