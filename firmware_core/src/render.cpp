@@ -106,6 +106,20 @@ struct DirectWriter {
       store_rgb<F>(p, clamp_u8(r[0]), clamp_u8(r[1]), clamp_u8(r[2]), x, y, dither);
     }
   }
+  // Pixels x0..x1 of row y from q16_16 values v (rounding offset included) stepped by dv, every
+  // one known to round into [0, 255].
+  void put_span_in_range(uint8_t* p, int32_t x0, int32_t x1, int32_t y, const uint32_t* v, const uint32_t* dv) const {
+    constexpr int s = q16_16::frac_bits;
+    constexpr int bpp = bytes_per_pixel(F);
+    if constexpr (Channels == 1) {
+      uint32_t g = v[0];
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, g += dv[0]) store_grey<F>(p, uint8_t(g >> s), x, y, dither);
+    } else {
+      uint32_t r = v[0], g = v[1], b = v[2];
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, r += dv[0], g += dv[1], b += dv[2])
+        store_rgb<F>(p, uint8_t(r >> s), uint8_t(g >> s), uint8_t(b >> s), x, y, dither);
+    }
+  }
   void put(uint8_t* p, int32_t x, int32_t y, const int32_t* v) const {
     if constexpr (F == PixelFormat::coverage8) {
       store_rgb<F>(p, 0, 0, 0, x, y, false);
@@ -155,13 +169,14 @@ struct BilinearShader {
   int32_t xr = 0, yr = 0;
 
   void begin(const TriangleView& tv, const Edge* e, int64_t area2) {
+    const RoundingDivider by_area2(area2);
     xr = position_fx::from_raw(tv.x[0]).floor_to_int();
     yr = position_fx::from_raw(tv.y[0]).floor_to_int();
     int32_t vals[3][Channels];
     for (int k = 0; k < 3; ++k) vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
     for (int c = 0; c < Channels; ++c) {
       const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
-      ch[c].setup(e, area2, v3, xr, yr);
+      ch[c].setup(e, by_area2, v3, xr, yr);
     }
   }
   void span(int32_t y, int32_t, int32_t x0, int32_t x1) {
@@ -175,6 +190,18 @@ struct BilinearShader {
       // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded into
       // the start value (covered pixels hold values far from the int32 limits).
       for (int c = 0; c < Channels; ++c) v[c] += 1u << (q16_16::frac_bits - 1);
+      // Values are linear along the span, so when both ends round into [0, 255] every pixel
+      // does: no clamping (the exact values of covered pixels are far from the int32 limits).
+      uint32_t out_of_range = 0;
+      for (int c = 0; c < Channels; ++c) {
+        const int32_t first = int32_t(v[c]) >> q16_16::frac_bits;
+        const int32_t last = int32_t(v[c] + dv[c] * uint32_t(x1 - x0)) >> q16_16::frac_bits;
+        out_of_range |= uint32_t(first) | uint32_t(last);
+      }
+      if (out_of_range <= 255) {
+        writer.put_span_in_range(p, x0, x1, y, v, dv);
+        return;
+      }
       for (int32_t x = x0; x <= x1; ++x) {
         int32_t r[Channels];
         for (int c = 0; c < Channels; ++c) {
@@ -207,13 +234,13 @@ struct ZienkiewiczShader {
   int bpp;
   ZienkiewiczChannel ch[Channels];
   const Edge* edges = nullptr;
-  int64_t area2 = 1;
+  RoundingDivider by_area2{1};
   BarycentricStepper steps;
 
   void begin(const TriangleView& tv, const Edge* e, int64_t a2) {
     edges = e;
-    area2 = a2;
-    steps.setup(e, a2);
+    by_area2 = RoundingDivider(a2);
+    steps.setup(e, by_area2);
     int32_t dx[3], dy[3], vals[3][Channels], grads[Channels][6];
     for (int k = 0; k < 3; ++k) {
       const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
@@ -236,7 +263,7 @@ struct ZienkiewiczShader {
   // function (inlined, changes elsewhere in it swung its speed by 20%).
   __attribute__((noinline)) void span(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
     uint32_t a, b;
-    BarycentricStepper::at(edges, area2, xs, y, &a, &b);
+    BarycentricStepper::at(edges, by_area2, xs, y, &a, &b);
     a += steps.dadx * uint32_t(x0 - xs);
     b += steps.dbdx * uint32_t(x0 - xs);
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
@@ -259,10 +286,57 @@ struct Corner {
 };
 
 // Rasterizes one triangle inside `clip`, calling shader.begin once before the first span.
+// Small triangles: the rows and columns of their pixel box (at most this many) are scanned
+// with the three edge functions stepped in int32, instead of the span steppers and their
+// divisions. Both paths test the same exact predicate, so they cover the same pixels.
+constexpr int32_t scan_max_extent = 16;
+static_assert(scan_max_extent <= 62, "the scan path's int32 edge values need boxes below 64 pixels");
+
+// Edge values on the pixel box of a triangle whose box is below 64 x 64 pixels: for a pixel x of
+// the box, |x 2^S - Px| < 64 * 2^S and |dy| < 64 * 2^S, so |E| < 2 * (64 * 2^S)^2 = 2^21 for
+// S = 4 (and below 2^31 for every S up to 8), plus the bias; int32 suffices.
+static_assert(2 * (int64_t(64) << config::subpixel_bits) * (int64_t(64) << config::subpixel_bits) < (int64_t(1) << 30),
+              "scan-path edge values must fit int32");
+
+template <typename Shader>
+void scan_small(const TriangleView& tv, const Edge* edges, int64_t area2, int32_t left, int32_t right, int32_t y0,
+                int32_t y1, Shader& shader) {
+  int32_t a[3], b[3], row[3];
+  for (int k = 0; k < 3; ++k) {
+    a[k] = int32_t(edges[k].a);
+    b[k] = int32_t(edges[k].b);
+    row[k] = int32_t(edges[k].a * left + edges[k].b * y0 + edges[k].c);
+  }
+  bool started = false;
+  for (int32_t y = y0; y <= y1; ++y) {
+    int32_t e0 = row[0], e1 = row[1], e2 = row[2];
+    row[0] += b[0];
+    row[1] += b[1];
+    row[2] += b[2];
+    int32_t x = left;
+    while (x <= right && (e0 | e1 | e2) < 0) {
+      e0 += a[0], e1 += a[1], e2 += a[2];
+      ++x;
+    }
+    if (x > right) continue;
+    const int32_t xs = x;
+    do {
+      e0 += a[0], e1 += a[1], e2 += a[2];
+      ++x;
+    } while (x <= right && (e0 | e1 | e2) >= 0);
+    if (!started) {
+      shader.begin(tv, edges, area2);
+      started = true;
+    }
+    shader.span(y, xs, xs, x - 1);
+  }
+}
+
 template <typename Shader>
 void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
-  int32_t y0 = position_fx::from_raw(min3(tv.y[0], tv.y[1], tv.y[2])).ceil_to_int();
-  int32_t y1 = position_fx::from_raw(max3(tv.y[0], tv.y[1], tv.y[2])).floor_to_int();
+  const int32_t top = position_fx::from_raw(min3(tv.y[0], tv.y[1], tv.y[2])).ceil_to_int();
+  const int32_t bottom = position_fx::from_raw(max3(tv.y[0], tv.y[1], tv.y[2])).floor_to_int();
+  int32_t y0 = top, y1 = bottom;
   if (y0 < clip.y0) y0 = clip.y0;
   if (y1 > clip.y1 - 1) y1 = clip.y1 - 1;
   if (y0 > y1) return;
@@ -276,6 +350,14 @@ void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
   for (int k = 0; k < 3; ++k) {
     const int n = (k + 1) % 3;
     edges[k] = make_edge(tv.x[k], tv.y[k], tv.x[n], tv.y[n], (tv.flags & (boundary_edge0 << k)) != 0);
+  }
+  // The scan path needs the whole column range inside the clip (the zienkiewicz shader starts
+  // each row at its first covered pixel) and no explicit corners.
+  constexpr uint16_t any_corner = corner_explicit0 | corner_explicit0 << 1 | corner_explicit0 << 2;
+  if (!(tv.flags & any_corner) && left >= clip.x0 && right < clip.x1 && right - left < scan_max_extent &&
+      bottom - top < scan_max_extent) {
+    scan_small(tv, edges, area2, left, right, y0, y1, shader);
+    return;
   }
   // Rows [r0, r1] pass the horizontal edges; an owned corner on an excluded row adds that row.
   int32_t r0 = y0, r1 = y1;
@@ -436,22 +518,45 @@ size_t scratch_bytes(const Blob& blob, const Resolved& r, PixelFormat f) {
   return (bytes + workspace_alignment - 1) / workspace_alignment * workspace_alignment;
 }
 
-// Whether the triangle's columns [ceil(min x), floor(max x)] miss [rect.x0, rect.x1): a cheap
-// first test on the raw positions (mapping is monotone, so mapped bounds are bounds too).
-inline bool misses_columns(const BlobLayer& layer, uint32_t t, const Mapping& map, const Rect& rect) {
-  const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
-  const int32_t x0 = load_u16(layer.positions + 4 * size_t(load_u16(p)));
-  const int32_t x1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)));
-  const int32_t x2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)));
-  const int32_t left = position_fx::from_raw(map.x(min3(x0, x1, x2))).ceil_to_int();
-  const int32_t right = position_fx::from_raw(map.x(max3(x0, x1, x2))).floor_to_int();
-  return right < rect.x0 || left >= rect.x1;
-}
+// The columns [rect.x0, rect.x1) of a tile as thresholds on raw (domain, unmapped) vertex x:
+// a triangle's columns [ceil(min x'), floor(max x')] (x' mapped) miss the tile exactly when
+// max x < lo or min x >= hi, because the mapping is monotone: floor(m / 2^S) < x0 iff m < x0 2^S,
+// and ceil(m / 2^S) >= x1 iff m >= (x1 - 1) 2^S + 1. One cheap test per live triangle and tile.
+struct ColumnWindow {
+  int32_t lo, hi;
+
+  // Smallest raw v in [0, 65536] with map.x(v) >= target (65536 when there is none).
+  static int32_t first_at_least(const Mapping& map, int32_t target) {
+    if (map.identity) return target < 0 ? 0 : (target > 65536 ? 65536 : target);
+    int32_t lo = 0, hi = 65536;
+    while (lo < hi) {
+      const int32_t mid = lo + (hi - lo) / 2;
+      if (map.x(mid) >= target) {
+        hi = mid;
+      } else {
+        lo = mid + 1;
+      }
+    }
+    return lo;
+  }
+  ColumnWindow(const Mapping& map, const Rect& rect)
+      : lo(first_at_least(map, rect.x0 * (1 << config::subpixel_bits))),
+        hi(first_at_least(map, (rect.x1 - 1) * (1 << config::subpixel_bits) + 1)) {}
+
+  bool misses(const BlobLayer& layer, uint32_t t) const {
+    const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
+    const int32_t x0 = load_u16(layer.positions + 4 * size_t(load_u16(p)));
+    const int32_t x1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)));
+    const int32_t x2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)));
+    return max3(x0, x1, x2) < lo || min3(x0, x1, x2) >= hi;
+  }
+};
 
 template <typename Shader>
 void draw_layer(const ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
+  const ColumnWindow columns(map, rect);
   set.for_each_live([&](uint32_t t) {
-    if (misses_columns(*set.layer, t, map, rect)) return;
+    if (columns.misses(*set.layer, t)) return;
     TriangleView tv;
     load_triangle(*set.layer, t, map, &tv);
     rasterize(tv, rect, shader);
@@ -466,7 +571,7 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, const Activ
     BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
     draw_layer(list, map, rect, s);
   } else {
-    ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, nullptr, 1, {}};
+    ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, nullptr, RoundingDivider{1}, {}};
     draw_layer(list, map, rect, s);
   }
 }

@@ -26,6 +26,63 @@ inline int64_t floor_div(int64_t n, int64_t d) {
 // Its dividends (gradients and weights scaled by 2^8 or 2^30) hardly ever fit 32 bits.
 inline int64_t round_div(int64_t n, int64_t d) { return floor_div64(2 * n + d, 2 * d); }
 
+// High 64 bits of the 128-bit product a * b, from four 32 x 32 -> 64 products (targets without
+// a 128-bit type, such as Cortex-M; the result is the same everywhere).
+inline uint64_t mulhi_u64_portable(uint64_t a, uint64_t b) {
+  const uint64_t a_lo = uint32_t(a), a_hi = a >> 32, b_lo = uint32_t(b), b_hi = b >> 32;
+  const uint64_t lo_lo = a_lo * b_lo, hi_lo = a_hi * b_lo, lo_hi = a_lo * b_hi, hi_hi = a_hi * b_hi;
+  const uint64_t mid = (lo_lo >> 32) + uint32_t(hi_lo) + uint32_t(lo_hi);  // below 3 * 2^32
+  return hi_hi + (hi_lo >> 32) + (lo_hi >> 32) + (mid >> 32);
+}
+
+inline uint64_t mulhi_u64(uint64_t a, uint64_t b) {
+#if defined(__SIZEOF_INT128__)
+  __extension__ typedef unsigned __int128 u128;
+  return uint64_t((u128(a) * b) >> 64);
+#else
+  return mulhi_u64_portable(a, b);
+#endif
+}
+
+// Exact division by one divisor d (0 < d < 2^62) used several times: the reciprocal
+// m = floor((2^64 - 1) / d) is one division, then every quotient is a high multiply and at most
+// two corrections (m > 2^64 / d - 2, so n m / 2^64 > n / d - 2 for n < 2^64). Same results as
+// floor_div64 and round_div, bit for bit.
+class Divider {
+ public:
+  explicit Divider(int64_t d) : d_(uint64_t(d)), m_(~uint64_t(0) / uint64_t(d)) {}
+
+  // floor(n / d) for 0 <= n < 2^64.
+  uint64_t floor_u(uint64_t n) const {
+    uint64_t q = mulhi_u64(n, m_);
+    uint64_t r = n - q * d_;
+    while (r >= d_) {
+      ++q;
+      r -= d_;
+    }
+    return q;
+  }
+  // floor(n / d) for |n| < 2^62.
+  int64_t floor(int64_t n) const {
+    return n >= 0 ? int64_t(floor_u(uint64_t(n))) : -int64_t(floor_u(uint64_t(-n) + d_ - 1));
+  }
+
+ private:
+  uint64_t d_;
+  uint64_t m_;
+};
+
+// round_div(n, d) for many n and one d: floor((2n + d) / (2d)).
+class RoundingDivider {
+ public:
+  explicit RoundingDivider(int64_t d) : half_(d), div_(2 * d) {}
+  int64_t operator()(int64_t n) const { return div_.floor(2 * n + half_); }
+
+ private:
+  int64_t half_;
+  Divider div_;
+};
+
 inline int32_t min3(int32_t a, int32_t b, int32_t c) { return a < b ? (a < c ? a : c) : (b < c ? b : c); }
 inline int32_t max3(int32_t a, int32_t b, int32_t c) { return a > b ? (a > c ? a : c) : (b > c ? b : c); }
 

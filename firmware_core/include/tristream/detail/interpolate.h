@@ -19,7 +19,8 @@ struct BilinearChannel {
   int64_t dvdy = 0;
 
   // values: q8_8 of vertices 0, 1, 2. xr, yr: a reference pixel near the triangle.
-  void setup(const Edge* e, int64_t area2, const int32_t* values, int32_t xr, int32_t yr) {
+  // by_area2: division by the triangle's doubled area, rounded to nearest.
+  void setup(const Edge* e, const RoundingDivider& by_area2, const int32_t* values, int32_t xr, int32_t yr) {
     int64_t nx = 0, ny = 0, nv = 0;
     for (int k = 0; k < 3; ++k) {
       const int64_t v = values[(k + 2) % 3];
@@ -28,13 +29,13 @@ struct BilinearChannel {
       nv += v * e[k].exact_at(xr, yr);
     }
     constexpr int shift = q16_16::frac_bits - q8_8::frac_bits;
-    dvdx = round_div(nx * (int64_t(1) << shift), area2);
-    dvdy = round_div(ny * (int64_t(1) << shift), area2);
-    v_ref = round_div(nv * (int64_t(1) << shift), area2);
+    dvdx = by_area2(nx * (int64_t(1) << shift));
+    dvdy = by_area2(ny * (int64_t(1) << shift));
+    v_ref = by_area2(nv * (int64_t(1) << shift));
   }
   // q16_16 value at (x, y), modulo 2^32 (exact when the pixel is covered).
   uint32_t at(int32_t x, int32_t y, int32_t xr, int32_t yr) const {
-    return uint32_t(v_ref + dvdx * (x - xr) + dvdy * (y - yr));
+    return uint32_t(v_ref) + uint32_t(dvdx) * uint32_t(x - xr) + uint32_t(dvdy) * uint32_t(y - yr);
   }
   uint32_t step() const { return uint32_t(dvdx); }
 };
@@ -90,16 +91,16 @@ struct ZienkiewiczChannel {
 struct BarycentricStepper {
   uint32_t dadx = 0, dbdx = 0;  // per triangle
 
-  void setup(const Edge* e, int64_t area2) {
+  void setup(const Edge* e, const RoundingDivider& by_area2) {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
-    dadx = uint32_t(round_div(e[1].a * one, area2));
-    dbdx = uint32_t(round_div(e[2].a * one, area2));
+    dadx = uint32_t(by_area2(e[1].a * one));
+    dbdx = uint32_t(by_area2(e[2].a * one));
   }
   // Weights at pixel (x, y), the first covered pixel of its row (so independent of tiling).
-  static void at(const Edge* e, int64_t area2, int32_t x, int32_t y, uint32_t* a, uint32_t* b) {
+  static void at(const Edge* e, const RoundingDivider& by_area2, int32_t x, int32_t y, uint32_t* a, uint32_t* b) {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
-    *a = uint32_t(round_div(e[1].exact_at(x, y) * one, area2));
-    *b = uint32_t(round_div(e[2].exact_at(x, y) * one, area2));
+    *a = uint32_t(by_area2(e[1].exact_at(x, y) * one));
+    *b = uint32_t(by_area2(e[2].exact_at(x, y) * one));
   }
 };
 

@@ -1,0 +1,56 @@
+// The exact integer helpers of the core's setup: the reciprocal divider must give the same
+// quotients as plain division, bit for bit, over the whole range the setup uses.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <random>
+
+#include "tristream/detail/arith.h"
+
+using namespace tristream::core::detail;
+
+namespace {
+
+__extension__ typedef unsigned __int128 u128;
+
+std::int64_t reference_floor(std::int64_t n, std::int64_t d) { return floor_div64(n, d); }
+
+}  // namespace
+
+TEST_CASE("mulhi_u64_portable equals the 128-bit product's high half") {
+  std::mt19937_64 rng(7);
+  const std::uint64_t edges[] = {0, 1, 2, 0xFFFFFFFFull, 0x100000000ull, ~0ull, ~0ull - 1, 1ull << 63};
+  for (std::uint64_t a : edges)
+    for (std::uint64_t b : edges) CHECK(mulhi_u64_portable(a, b) == std::uint64_t((u128(a) * b) >> 64));
+  for (int i = 0; i < 200000; ++i) {
+    const std::uint64_t a = rng() >> (rng() % 64), b = rng() >> (rng() % 64);
+    REQUIRE(mulhi_u64_portable(a, b) == std::uint64_t((u128(a) * b) >> 64));
+    REQUIRE(mulhi_u64(a, b) == mulhi_u64_portable(a, b));
+  }
+}
+
+TEST_CASE("Divider and RoundingDivider equal floor_div64 and round_div") {
+  std::mt19937_64 rng(11);
+  // Divisors: small, powers of two and their neighbours, random up to 2^61 (doubled areas
+  // are below 2^31; the divider is exact for any d below 2^62).
+  std::vector<std::int64_t> divisors = {1, 2, 3, 5, 7, 255, 256, 257, 65535, 65536, 65537, (1ll << 31) - 1,
+                                        1ll << 31, (1ll << 61) - 1};
+  for (int i = 0; i < 300; ++i) divisors.push_back(std::int64_t(1 + (rng() >> (3 + rng() % 61))));
+  for (std::int64_t d : divisors) {
+    const Divider div(d);
+    const RoundingDivider round(d);
+    const std::int64_t specials[] = {0, 1, -1, d - 1, d, d + 1, -d + 1, -d, -d - 1, 2 * d, -2 * d,
+                                     (1ll << 61) - 1, -(1ll << 61) + 1};
+    for (std::int64_t n : specials) {
+      INFO("n " << n << " d " << d);
+      REQUIRE(div.floor(n) == reference_floor(n, d));
+      REQUIRE(round(n / 2) == round_div(n / 2, d));
+    }
+    for (int i = 0; i < 2000; ++i) {
+      const std::int64_t n = std::int64_t(rng() >> (3 + rng() % 61)) * ((rng() & 1) ? 1 : -1);
+      INFO("n " << n << " d " << d);
+      REQUIRE(div.floor(n) == reference_floor(n, d));
+      if (d < (1ll << 60)) REQUIRE(round(n / 2) == round_div(n / 2, d));
+    }
+  }
+}
