@@ -9,6 +9,7 @@
 #include "geometry/predicates.h"
 #include "reference/coverage.h"
 #include "reference/gradients.h"
+#include "reference/methods/fan_topology.h"
 #include "reference/methods/natural.h"
 #include "reference/methods/zienkiewicz.h"
 
@@ -29,7 +30,7 @@ class TriangleGrid {
  public:
   TriangleGrid(const Mesh& mesh, double width, double height) : mesh_(mesh) {
     const double n = std::max<double>(1, mesh.triangles.size());
-    cell_ = std::max(1.0, 2 * std::sqrt(std::max(1.0, width * height) / n));
+    cell_ = std::max(1.0, std::sqrt(std::max(1.0, width * height) / n));
     nx_ = std::max(1, int(std::ceil(width / cell_)) + 1);
     ny_ = std::max(1, int(std::ceil(height / cell_)) + 1);
     start_.assign(std::size_t(nx_) * ny_ + 1, 0);
@@ -57,11 +58,13 @@ class TriangleGrid {
     const int x = std::clamp(int(std::floor(p.x / cell_)), 0, nx_ - 1);
     const int y = std::clamp(int(std::floor(p.y / cell_)), 0, ny_ - 1);
     const std::size_t c = std::size_t(y) * nx_ + x;
+    // The first triangle of the bucket that holds p (closed); signs as orient2d's, from
+    // detail::orient_filtered (reference/coverage.h).
     for (std::uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
       const auto& v = mesh_.triangles[items_[k]].v;
-      if (orient2d(mesh_.points[v[0]], mesh_.points[v[1]], p) >= 0 &&
-          orient2d(mesh_.points[v[1]], mesh_.points[v[2]], p) >= 0 &&
-          orient2d(mesh_.points[v[2]], mesh_.points[v[0]], p) >= 0)
+      const Point &a = mesh_.points[v[0]], &b = mesh_.points[v[1]], &d = mesh_.points[v[2]];
+      if (detail::orient_filtered(a, b, p, false) >= 0 && detail::orient_filtered(b, d, p, false) >= 0 &&
+          detail::orient_filtered(d, a, p, false) >= 0)
         return items_[k];
     }
     return no_neighbour;
@@ -84,6 +87,40 @@ class TriangleGrid {
   int nx_ = 1, ny_ = 1;
   std::vector<std::uint32_t> start_, items_;
 };
+
+// The lowest-numbered triangle of mesh (orient2d > 0 winding) that holds p (closed), as
+// TriangleGrid::find() gives it, by a visibility walk from triangle t: when the walk ends
+// with p strictly inside a triangle, that triangle is the only one; with p inside an edge
+// shared by two triangles, the lower of the two (a valid mesh does not overlap). No_neighbour
+// when the walk cannot tell: it leaves the mesh, takes long (it may cycle in a triangulation
+// that is not Delaunay), or ends with p at a vertex or on a boundary edge.
+// `exact`: every coordinate (the mesh's and p's) a multiple of 1/2 of magnitude <= 2^20; the
+// orientation determinant then has no rounding (products of differences are multiples of 1/4
+// below 2^42), which spares the exact predicate for circumcentres on an edge (the midpoint
+// of a right triangle's hypotenuse).
+std::uint32_t walk_to_owner(const Mesh& mesh, const Topology& topo, std::uint32_t t, const Point& p, bool exact) {
+  for (int steps = 0; steps < 64; ++steps) {
+    const auto& v = mesh.triangles[t].v;
+    int cross = -1, zeros = 0, zero_edge = 0;
+    for (int e = 0; e < 3 && cross < 0; ++e) {
+      const double o = detail::orient_filtered(mesh.points[v[e]], mesh.points[v[e == 2 ? 0 : e + 1]], p, exact);
+      if (o < 0) cross = e;
+      if (o == 0) ++zeros, zero_edge = e;
+    }
+    if (cross < 0) {
+      if (zeros == 0) return t;
+      if (zeros > 1) return no_neighbour;
+      const std::uint32_t n = topo.neighbour[3 * t + zero_edge];
+      return n == no_neighbour ? no_neighbour : std::min(t, n);
+    }
+    t = topo.neighbour[3 * t + cross];
+    if (t == no_neighbour) return no_neighbour;
+  }
+  return no_neighbour;
+}
+
+// Whether v is a multiple of 1/2 of magnitude <= 2^20.
+bool on_half_grid(double v) { return std::abs(v) <= 0x1p20 && 2 * v == std::trunc(2 * v); }
 
 // Barycentric coordinates of p in triangle t of mesh (orient2d > 0 winding).
 std::array<double, 3> barycentric(const Mesh& mesh, std::uint32_t t, const Point& p) {
@@ -114,7 +151,7 @@ VoronoiDiagram::VoronoiDiagram(std::span<const Point> points) : sites_(points.si
   mesh_.points.push_back({cx - s, cy + s});
   mesh_.points.push_back({cx + s, cy + s});
   mesh_.triangles = delaunay_triangulation(mesh_.points);
-  topo_ = build_topology(mesh_);
+  topo_ = build_fan_topology(mesh_);
 
   std::vector<Point> centre(mesh_.triangles.size());
   for (std::size_t t = 0; t < centre.size(); ++t) {
@@ -165,7 +202,7 @@ VoronoiDiagram::VoronoiDiagram(std::span<const Point> points) : sites_(points.si
     cell_start_.push_back(std::uint32_t(cell_points_.size()));
     for (const std::uint32_t t : ring) {
       const std::uint32_t x = mesh_.triangles[t].v[(index_of(t, v) + 1) % 3];
-      if (x < sites_) neighbours_.push_back(x);
+      if (x < sites_) neighbours_.push_back(x), neighbour_points_.push_back(mesh_.points[x]);
     }
     neighbour_start_.push_back(std::uint32_t(neighbours_.size()));
   }
@@ -187,16 +224,88 @@ std::uint32_t VoronoiDiagram::nearest_site(const Point& p, std::uint32_t start) 
   std::uint32_t v = start;
   double best = d2(v);
   for (std::size_t steps = 0; steps <= sites_; ++steps) {
-    std::uint32_t next = v;
-    for (std::uint32_t k = neighbour_start_[v]; k < neighbour_start_[v + 1]; ++k) {
-      const double d = d2(neighbours_[k]);
-      if (d < best) best = d, next = neighbours_[k];
+    std::uint32_t next_k = no_neighbour;
+    for (std::uint32_t k = neighbour_start_[v], e = neighbour_start_[v + 1]; k < e; ++k) {
+      const double dx = neighbour_points_[k].x - p.x, dy = neighbour_points_[k].y - p.y;
+      const double d = dx * dx + dy * dy;  // d2(neighbours_[k])
+      if (d < best) best = d, next_k = k;
     }
-    if (next == v) break;
-    v = next;
+    if (next_k == no_neighbour) break;
+    v = neighbours_[next_k];
   }
   return v;
 }
+
+namespace {
+
+// Meyer / Wachspress weights of p in the convex polygon q[0..n) (n >= 3) into w[0..n), given
+// corner[j] = cross(q[j] - q[j-1], q[j+1] - q[j]) (independent of p, so a caller with many
+// points per polygon computes it once). area, prefix and suffix: scratch of n + 1 doubles.
+void meyer_weights(const Point* q, const double* corner, std::size_t n, const Point& p, double* w, double* area,
+                   double* prefix, double* suffix) {
+  // Eq. 3.12 equals Wachspress's coordinates on a convex polygon: with A_k the doubled area
+  // of (p, Q_k, Q_k+1) and C_j that of (Q_j-1, Q_j, Q_j+1),
+  //   (cot gamma_j + cot delta_j) / |p - Q_j|^2 = C_j / (A_j-1 A_j).
+  // Multiplied through by the product of all A_k, w_j = C_j * prod_{k != j-1, j} A_k: the
+  // same weights after normalisation, but stable next to an edge, where the cotangent form
+  // divides rounding noise by rounding noise. On edge k's line (A_k == 0) only Q_k and Q_k+1
+  // keep a weight, in proportion to the other end's distance: the thesis's fallback, linear
+  // interpolation along the edge.
+  double scale = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Point& a = q[k];
+    const Point& b = q[k + 1 == n ? 0 : k + 1];
+    area[k] = cross(a.x - p.x, a.y - p.y, b.x - p.x, b.y - p.y);
+    scale = std::max(scale, std::abs(area[k]));
+  }
+  if (scale > 0)
+    for (std::size_t k = 0; k < n; ++k) area[k] /= scale;  // keeps the products in range
+  // prefix[i] = A_0 ... A_i-1, suffix[i] = A_i ... A_n-1.
+  prefix[0] = 1;
+  suffix[n] = 1;
+  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] * area[k];
+  for (std::size_t k = n; k-- > 0;) suffix[k] = suffix[k + 1] * area[k];
+  double sum = 0;
+  {
+    // j = 0: product of all A_k but A_n-1 and A_0.
+    double others = 1;
+    for (std::size_t k = 1; k + 1 < n; ++k) others *= area[k];
+    w[0] = corner[0] * others;
+    sum += w[0];
+  }
+  for (std::size_t j = 1; j < n; ++j) {
+    w[j] = corner[j] * (prefix[j - 1] * suffix[j + 1]);  // all A_k but A_j-1 and A_j
+    sum += w[j];
+  }
+  if (sum != 0 && std::isfinite(sum)) {
+    for (std::size_t j = 0; j < n; ++j) w[j] /= sum;
+    return;
+  }
+  // Degenerate (p at a vertex of a polygon with a repeated vertex, or underflow): linear
+  // interpolation along the edge nearest to p's line.
+  std::size_t k = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (std::abs(area[i]) < std::abs(area[k])) k = i;
+  const Point& a = q[k];
+  const Point& b = q[(k + 1) % n];
+  const double ex = b.x - a.x, ey = b.y - a.y, len2 = ex * ex + ey * ey;
+  const double t = len2 > 0 ? std::clamp(((p.x - a.x) * ex + (p.y - a.y) * ey) / len2, 0.0, 1.0) : 0.0;
+  std::fill(w, w + n, 0.0);
+  w[k] += 1 - t;
+  w[(k + 1) % n] += t;
+}
+
+// corner[j] of meyer_weights for polygon q[0..n).
+void polygon_corners(const Point* q, std::size_t n, double* corner) {
+  for (std::size_t j = 0; j < n; ++j) {
+    const Point& q0 = q[(j + n - 1) % n];
+    const Point& q1 = q[j];
+    const Point& q2 = q[(j + 1) % n];
+    corner[j] = cross(q1.x - q0.x, q1.y - q0.y, q2.x - q1.x, q2.y - q1.y);
+  }
+}
+
+}  // namespace
 
 void meyer_coordinates(std::span<const Point> polygon, const Point& p, std::vector<double>& w) {
   const std::size_t n = polygon.size();
@@ -206,71 +315,16 @@ void meyer_coordinates(std::span<const Point> polygon, const Point& p, std::vect
     w[0] = 1;
     return;
   }
-  // Eq. 3.12 equals Wachspress's coordinates on a convex polygon: with A_k the doubled area
-  // of (p, Q_k, Q_k+1) and C_j that of (Q_j-1, Q_j, Q_j+1),
-  //   (cot gamma_j + cot delta_j) / |p - Q_j|^2 = C_j / (A_j-1 A_j).
-  // Multiplied through by the product of all A_k, w_j = C_j * prod_{k != j-1, j} A_k: the
-  // same weights after normalisation, but stable next to an edge, where the cotangent form
-  // divides rounding noise by rounding noise. On edge k's line (A_k == 0) only Q_k and Q_k+1
-  // keep a weight, in proportion to the other end's distance: the thesis's fallback, linear
-  // interpolation along the edge.
-  thread_local std::vector<double> area;
-  area.resize(n);
-  double scale = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const Point& a = polygon[k];
-    const Point& b = polygon[(k + 1) % n];
-    area[k] = cross(a.x - p.x, a.y - p.y, b.x - p.x, b.y - p.y);
-    scale = std::max(scale, std::abs(area[k]));
-  }
-  if (scale > 0)
-    for (double& a : area) a /= scale;  // keeps the products in range
-  // prefix[i] = A_0 ... A_i-1, suffix[i] = A_i ... A_n-1.
-  thread_local std::vector<double> prefix, suffix;
-  prefix.resize(n + 1);
-  suffix.resize(n + 1);
-  prefix[0] = 1;
-  suffix[n] = 1;
-  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] * area[k];
-  for (std::size_t k = n; k-- > 0;) suffix[k] = suffix[k + 1] * area[k];
-  double sum = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    const Point& q0 = polygon[(j + n - 1) % n];
-    const Point& q1 = polygon[j];
-    const Point& q2 = polygon[(j + 1) % n];
-    const double c = cross(q1.x - q0.x, q1.y - q0.y, q2.x - q1.x, q2.y - q1.y);
-    // Product of all A_k but A_j-1 and A_j.
-    double others;
-    if (j > 0) {
-      others = prefix[j - 1] * suffix[j + 1];
-    } else {
-      others = 1;
-      for (std::size_t k = 1; k + 1 < n; ++k) others *= area[k];
-    }
-    w[j] = c * others;
-    sum += w[j];
-  }
-  if (sum != 0 && std::isfinite(sum)) {
-    for (double& x : w) x /= sum;
-    return;
-  }
-  // Degenerate (p at a vertex of a polygon with a repeated vertex, or underflow): linear
-  // interpolation along the edge nearest to p's line.
-  std::size_t k = 0;
-  for (std::size_t i = 1; i < n; ++i)
-    if (std::abs(area[i]) < std::abs(area[k])) k = i;
-  const Point& a = polygon[k];
-  const Point& b = polygon[(k + 1) % n];
-  const double ex = b.x - a.x, ey = b.y - a.y, len2 = ex * ex + ey * ey;
-  const double t = len2 > 0 ? std::clamp(((p.x - a.x) * ex + (p.y - a.y) * ey) / len2, 0.0, 1.0) : 0.0;
-  std::fill(w.begin(), w.end(), 0.0);
-  w[k] += 1 - t;
-  w[(k + 1) % n] += t;
+  thread_local std::vector<double> scratch;
+  scratch.resize(4 * (n + 1));
+  double* corner = scratch.data();
+  polygon_corners(polygon.data(), n, corner);
+  meyer_weights(polygon.data(), corner, n, p, w.data(), corner + (n + 1), corner + 2 * (n + 1), corner + 3 * (n + 1));
 }
 
 void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
   const PixelMapping map(domain_width, domain_height, out.width, out.height);
-  const Topology topo = build_topology(mesh);
+  const Topology topo = build_fan_topology(mesh);
   const double xmax = domain_width - 1, ymax = domain_height - 1;
   // The domain's pixels: all of them when the mesh covers the rectangle, otherwise those the
   // mesh's coverage rule assigns (with their triangle, for the bilinear pre-fill).
@@ -284,13 +338,34 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
   std::vector<std::vector<Gradient>> gradients;
   for (int c = 0; c < nc; ++c) gradients.push_back(vertex_gradients(mesh, topo, c));
   const TriangleGrid grid(mesh, xmax, ymax);
+  bool half_grid = true;
+  for (const Point& x : mesh.points) half_grid = half_grid && on_half_grid(x.x) && on_half_grid(x.y);
   std::vector<double> value(dt.triangles.size() * nc, std::numeric_limits<double>::quiet_NaN());
   std::vector<std::uint8_t> has_value(dt.triangles.size(), 0);
   for (std::uint32_t t = 0; t < dt.triangles.size(); ++t) {
     const auto& dv = dt.triangles[t].v;
     const Point q = circumcentre(dt.points[dv[0]], dt.points[dv[1]], dt.points[dv[2]]);
     if (!(q.x >= 0 && q.x <= xmax && q.y >= 0 && q.y <= ymax)) continue;
-    const std::uint32_t m = grid.find(q);
+    // The mesh triangle holding q (the lowest-numbered closed one): a short walk from a
+    // triangle at one of t's vertices, or where the walk cannot tell, the grid.
+    std::uint32_t m = no_neighbour;
+    for (const std::uint32_t x : dv)
+      if (x < mesh.points.size() && topo.vertex_start[x] < topo.vertex_start[x + 1]) {
+        // Start from the mesh triangle with the most vertices in common with t.
+        std::uint32_t start = topo.vertex_triangles[topo.vertex_start[x]];
+        for (std::uint32_t k = topo.vertex_start[x]; k < topo.vertex_start[x + 1]; ++k) {
+          const auto& mv = mesh.triangles[topo.vertex_triangles[k]].v;
+          int shared = 0;
+          for (const std::uint32_t y : mv) shared += y == dv[0] || y == dv[1] || y == dv[2];
+          if (shared == 3) {
+            start = topo.vertex_triangles[k];
+            break;
+          }
+        }
+        m = walk_to_owner(mesh, topo, start, q, half_grid && on_half_grid(q.x) && on_half_grid(q.y));
+        break;
+      }
+    if (m == no_neighbour) m = grid.find(q);
     if (m == no_neighbour) continue;
     const auto& v = mesh.triangles[m].v;
     const auto l = barycentric(mesh, m, q);
@@ -311,7 +386,6 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
   const std::size_t sites = voronoi.site_count();
   std::vector<std::uint32_t> clipped_start(sites + 1, 0);
   std::vector<Vertex> clipped;
-  std::vector<Point> clipped_points;
   std::vector<Vertex> poly, next;
   const Point corners[4] = {{0, 0}, {xmax, 0}, {xmax, ymax}, {0, ymax}};
   for (std::uint32_t s = 0; s < sites; ++s) {
@@ -368,8 +442,22 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
     if (valued) clipped.insert(clipped.end(), poly.begin(), poly.end());
   }
   clipped_start[sites] = std::uint32_t(clipped.size());
-
-  std::vector<double> w;
+  // Per clipped vertex, what every pixel of its cell reads: the point, its corner term of
+  // meyer_weights (independent of the pixel) and its values.
+  std::vector<Point> cell_points(clipped.size());
+  std::vector<double> cell_corner(clipped.size()), cell_value(clipped.size() * nc);
+  std::size_t max_cell = 0;
+  for (std::uint32_t s = 0; s < sites; ++s) {
+    const std::uint32_t b = clipped_start[s], e = clipped_start[s + 1];
+    max_cell = std::max<std::size_t>(max_cell, e - b);
+    for (std::uint32_t x = b; x < e; ++x) {
+      cell_points[x] = clipped[x].q;
+      for (int c = 0; c < nc; ++c) cell_value[std::size_t(x) * nc + c] = value[std::size_t(clipped[x].source) * nc + c];
+    }
+    if (e > b) polygon_corners(cell_points.data() + b, e - b, cell_corner.data() + b);
+  }
+  std::vector<double> scratch(4 * (max_cell + 1));
+  double* const w = scratch.data();
   std::uint32_t site = 0, row_site = 0;  // nearest sites of the last pixel and of the row start
   for (int j = 0; j < out.height; ++j) {
     site = row_site;
@@ -383,12 +471,13 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
       if (i == 0) row_site = site;
       if (clipped_start[site] < clipped_start[site + 1]) {
         const std::uint32_t b = clipped_start[site], e = clipped_start[site + 1];
-        clipped_points.clear();
-        for (std::uint32_t x = b; x < e; ++x) clipped_points.push_back(clipped[x].q);
-        meyer_coordinates(clipped_points, p, w);
+        const std::size_t n = e - b;
+        meyer_weights(cell_points.data() + b, cell_corner.data() + b, n, p, w, w + (max_cell + 1),
+                      w + 2 * (max_cell + 1), w + 3 * (max_cell + 1));
+        const double* const val = cell_value.data() + std::size_t(b) * nc;
         for (int c = 0; c < nc; ++c) {
           double sum = 0;
-          for (std::uint32_t x = b; x < e; ++x) sum += w[x - b] * value[std::size_t(clipped[x].source) * nc + c];
+          for (std::size_t x = 0; x < n; ++x) sum += w[x] * val[x * nc + c];
           out.at(i, j, c) = sum;
         }
         continue;

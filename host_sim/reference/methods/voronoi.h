@@ -59,6 +59,7 @@ class VoronoiDiagram {
   std::vector<std::uint32_t> cell_tris_;
   std::vector<std::uint32_t> neighbour_start_;  // Delaunay neighbours of each site
   std::vector<std::uint32_t> neighbours_;
+  std::vector<Point> neighbour_points_;  // the point of each entry of neighbours_
 };
 
 // Meyer et al. barycentric coordinates of p in the convex polygon `polygon` (thesis
