@@ -172,11 +172,12 @@ struct BilinearShader {
     const RoundingDivider by_area2(area2);
     xr = position_fx::from_raw(tv.x[0]).floor_to_int();
     yr = position_fx::from_raw(tv.y[0]).floor_to_int();
+    const int64_t e_ref[3] = {e[0].exact_at(xr, yr), e[1].exact_at(xr, yr), e[2].exact_at(xr, yr)};
     int32_t vals[3][Channels];
     for (int k = 0; k < 3; ++k) vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
     for (int c = 0; c < Channels; ++c) {
       const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
-      ch[c].setup(e, by_area2, v3, xr, yr);
+      ch[c].setup(e, e_ref, by_area2, v3);
     }
   }
   void span(int32_t y, int32_t, int32_t x0, int32_t x1) {
@@ -298,9 +299,12 @@ static_assert(scan_max_extent <= 62, "the scan path's int32 edge values need box
 static_assert(2 * (int64_t(64) << config::subpixel_bits) * (int64_t(64) << config::subpixel_bits) < (int64_t(1) << 30),
               "scan-path edge values must fit int32");
 
+// Rows y0..y1 (already clipped) of a triangle whose pixel box has columns left..right: each row
+// is scanned over the whole box, so xs is the row's first covered pixel even when the clip
+// (columns cx0..cx1) cuts the span.
 template <typename Shader>
 void scan_small(const TriangleView& tv, const Edge* edges, int64_t area2, int32_t left, int32_t right, int32_t y0,
-                int32_t y1, Shader& shader) {
+                int32_t y1, int32_t cx0, int32_t cx1, Shader& shader) {
   int32_t a[3], b[3], row[3];
   for (int k = 0; k < 3; ++k) {
     a[k] = int32_t(edges[k].a);
@@ -324,11 +328,14 @@ void scan_small(const TriangleView& tv, const Edge* edges, int64_t area2, int32_
       e0 += a[0], e1 += a[1], e2 += a[2];
       ++x;
     } while (x <= right && (e0 | e1 | e2) >= 0);
+    const int32_t cs = xs > cx0 ? xs : cx0;
+    const int32_t ce = x - 1 < cx1 ? x - 1 : cx1;
+    if (cs > ce) continue;
     if (!started) {
       shader.begin(tv, edges, area2);
       started = true;
     }
-    shader.span(y, xs, xs, x - 1);
+    shader.span(y, xs, cs, ce);
   }
 }
 
@@ -351,12 +358,10 @@ void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
     const int n = (k + 1) % 3;
     edges[k] = make_edge(tv.x[k], tv.y[k], tv.x[n], tv.y[n], (tv.flags & (boundary_edge0 << k)) != 0);
   }
-  // The scan path needs the whole column range inside the clip (the zienkiewicz shader starts
-  // each row at its first covered pixel) and no explicit corners.
+  // The scan path: small boxes without explicit corners.
   constexpr uint16_t any_corner = corner_explicit0 | corner_explicit0 << 1 | corner_explicit0 << 2;
-  if (!(tv.flags & any_corner) && left >= clip.x0 && right < clip.x1 && right - left < scan_max_extent &&
-      bottom - top < scan_max_extent) {
-    scan_small(tv, edges, area2, left, right, y0, y1, shader);
+  if (!(tv.flags & any_corner) && right - left < scan_max_extent && bottom - top < scan_max_extent) {
+    scan_small(tv, edges, area2, left, right, y0, y1, clip.x0, clip.x1 - 1, shader);
     return;
   }
   // Rows [r0, r1] pass the horizontal edges; an owned corner on an excluded row adds that row.

@@ -18,15 +18,15 @@ struct BilinearChannel {
   int64_t dvdx = 0;
   int64_t dvdy = 0;
 
-  // values: q8_8 of vertices 0, 1, 2. xr, yr: a reference pixel near the triangle.
-  // by_area2: division by the triangle's doubled area, rounded to nearest.
-  void setup(const Edge* e, const RoundingDivider& by_area2, const int32_t* values, int32_t xr, int32_t yr) {
+  // values: q8_8 of vertices 0, 1, 2. e_ref[k]: edge k's exact value at a reference pixel
+  // (xr, yr) near the triangle. by_area2: division by the doubled area, rounded to nearest.
+  void setup(const Edge* e, const int64_t* e_ref, const RoundingDivider& by_area2, const int32_t* values) {
     int64_t nx = 0, ny = 0, nv = 0;
     for (int k = 0; k < 3; ++k) {
       const int64_t v = values[(k + 2) % 3];
       nx += v * e[k].a;
       ny += v * e[k].b;
-      nv += v * e[k].exact_at(xr, yr);
+      nv += v * e_ref[k];
     }
     constexpr int shift = q16_16::frac_bits - q8_8::frac_bits;
     dvdx = by_area2(nx * (int64_t(1) << shift));
