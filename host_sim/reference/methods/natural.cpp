@@ -20,6 +20,17 @@ namespace {
   return {(by * a2 - ay * b2) * r, (ax * b2 - bx * a2) * r};
 }
 
+// floor and ceil of x as int, for x within int range (std::floor and std::ceil are library
+// calls without SSE4.1).
+inline int floor_int(double x) {
+  const int i = int(x);
+  return i - (i > x);
+}
+inline int ceil_int(double x) {
+  const int i = int(x);
+  return i + (i < x);
+}
+
 // The filter's error bound relative to the permanent: Shewchuk's incircle bound is
 // (10 + 96 eps) eps for the same sum of six lift x coordinate x coordinate products;
 // 32 eps leaves a wide margin.
@@ -300,7 +311,7 @@ void SibsonCoordinates::sweep(const PixelMapping& map, double xmax, double ymax,
   const bool exact = integer_points_ && map.sx == 1 && map.sy == 1 && width - 1 <= exact_limit &&
                      height - 1 <= exact_limit;
   // Each circle: centre and squared radius, and (used when exact) its incircle terms, in one
-  // cache line for the row passes, which visit the circles in no spatial order.
+  // cache line for the row passes (indexed by slot, see below).
   struct alignas(64) Disk {
     double cx, cy, r2;
     double ax, ay, alpha, beta, gamma;  // as in CircleTest
@@ -315,34 +326,53 @@ void SibsonCoordinates::sweep(const PixelMapping& map, double xmax, double ymax,
       if (q.x < width && q.y < height) vertex_at[std::size_t(q.y) * width + std::size_t(q.x)] = v;
     }
   }
-  // Rows whose sample line can meet each triangle's circle (with a row of margin), bucketed.
-  std::vector<std::uint32_t> row_start(std::size_t(height) + 1, 0), row_items;
-  auto rows_of = [&](std::uint32_t t, int& j0, int& j1) {
-    const double r = std::sqrt(disk[t].r2);
-    const double lo = (disk[t].cy - r) / map.sy, hi = (disk[t].cy + r) / map.sy;
-    j0 = lo < 1 ? 0 : lo > height ? height : int(lo) - 1;
-    j1 = hi < -1 ? -1 : hi > height - 2 ? height - 1 : int(hi) + 1;
-  };
+  // Rows whose sample line can meet each triangle's circle (with a row of margin).
+  std::vector<int> first_row(nt), last_row(nt);
   for (std::uint32_t t = 0; t < nt; ++t) {
     const Point& a = mesh_.points[mesh_.triangles[t].v[0]];
     const Point& c = tri_[t].centre;
-    const CircleTest& k = circle_[t];
-    disk[t] = {c.x, c.y, (a.x - c.x) * (a.x - c.x) + (a.y - c.y) * (a.y - c.y), k.ax, k.ay, k.alpha, k.beta, k.gamma};
-    int j0, j1;
-    rows_of(t, j0, j1);
-    for (int j = j0; j <= j1; ++j) ++row_start[j + 1];
+    const double r = std::sqrt((a.x - c.x) * (a.x - c.x) + (a.y - c.y) * (a.y - c.y));
+    const double lo = (c.y - r) / map.sy, hi = (c.y + r) / map.sy;
+    first_row[t] = lo < 1 ? 0 : lo > height ? height : int(lo) - 1;
+    last_row[t] = hi < -1 ? -1 : hi > height - 2 ? height - 1 : int(hi) + 1;
   }
+  // The circles renumbered by first row (counting sort; "slot" s, triangle order within a
+  // row), so that the circles of neighbouring rows sit together in disk[]: the row passes
+  // then read it from cache instead of in the triangles' order, which has no locality.
+  std::vector<std::uint32_t> triangle_of(nt);  // slot -> triangle
+  {
+    std::vector<std::uint32_t> start(std::size_t(height) + 2, 0);
+    for (std::uint32_t t = 0; t < nt; ++t) ++start[std::size_t(std::min(first_row[t], height)) + 1];
+    for (int j = 0; j <= height; ++j) start[j + 1] += start[j];
+    for (std::uint32_t t = 0; t < nt; ++t) triangle_of[start[std::min(first_row[t], height)]++] = t;
+  }
+  for (std::uint32_t s = 0; s < nt; ++s) {
+    const std::uint32_t t = triangle_of[s];
+    const Point& a = mesh_.points[mesh_.triangles[t].v[0]];
+    const Point& c = tri_[t].centre;
+    const CircleTest& k = circle_[t];
+    disk[s] = {c.x, c.y, (a.x - c.x) * (a.x - c.x) + (a.y - c.y) * (a.y - c.y), k.ax, k.ay, k.alpha, k.beta, k.gamma};
+  }
+  // Each row's circles (slots), bucketed.
+  std::vector<std::uint32_t> row_start(std::size_t(height) + 1, 0), row_items;
+  for (std::uint32_t t = 0; t < nt; ++t)
+    for (int j = first_row[t]; j <= last_row[t]; ++j) ++row_start[j + 1];
   for (int j = 0; j < height; ++j) row_start[j + 1] += row_start[j];
-
   row_items.resize(row_start[height]);
   {
     std::vector<std::uint32_t> fill(row_start.begin(), row_start.end() - 1);
-    for (std::uint32_t t = 0; t < nt; ++t) {
-      int j0, j1;
-      rows_of(t, j0, j1);
-      for (int j = j0; j <= j1; ++j) row_items[fill[j]++] = t;
+    for (std::uint32_t s = 0; s < nt; ++s) {
+      const std::uint32_t t = triangle_of[s];
+      for (int j = first_row[t]; j <= last_row[t]; ++j) row_items[fill[j]++] = s;
     }
   }
+  // A column's events in increasing triangle order, as the active set's order (and with it
+  // the order of the sums in stolen_areas) depends on it. Buckets hold a few items.
+  auto sort_buckets = [&](std::vector<std::uint32_t>& items, const std::vector<std::uint32_t>& start) {
+    for (int i = 0; i <= width; ++i)
+      for (std::uint32_t k = start[i] + 1; k < start[i + 1]; ++k)
+        for (std::uint32_t m = k; m > start[i] && items[m - 1] > items[m]; --m) std::swap(items[m - 1], items[m]);
+  };
 
   // Per row: each circle's run of columns strictly inside it, from the chord's estimate
   // settled by exact tests at its ends (the run is an interval: a disk meets a line in a
@@ -360,10 +390,9 @@ void SibsonCoordinates::sweep(const PixelMapping& map, double xmax, double ymax,
     std::fill(enter_start.begin(), enter_start.end(), 0);
     std::fill(leave_start.begin(), leave_start.end(), 0);
     for (std::uint32_t k = b0; k < b1; ++k) {
-      const std::uint32_t t = row_items[k];
-      if (k + 8 < b1) __builtin_prefetch(&disk[row_items[k + 8]]);
+      const std::uint32_t t = triangle_of[row_items[k]];
       const auto& tv = mesh_.triangles[t].v;
-      const Disk& d = disk[t];
+      const Disk& d = disk[row_items[k]];
       auto in = [&](int i) {
         const Point p = map.sample(i, j);
         if (exact) {  // in_circle(t, p, true) from this cache line
@@ -381,12 +410,12 @@ void SibsonCoordinates::sweep(const PixelMapping& map, double xmax, double ymax,
       // Columns are clamped to the image (the estimates lie far inside int range there).
       auto clamp_col = [&](double x) { return x < -1 ? -1.0 : x > width ? double(width) : x; };
       const double lo = clamp_col(cx - hx), hi = clamp_col(cx + hx);
-      int first = int(std::floor(lo)) + 1, last = int(std::ceil(hi)) - 1;  // strictly inside
+      int first = floor_int(lo) + 1, last = ceil_int(hi) - 1;  // strictly inside
       first = std::max(first, 0);
       last = std::min(last, width - 1);
       if (first > last) {
         // The estimate says no column: the nearest columns to the centre settle it.
-        const int c0 = int(std::floor(clamp_col(cx)));
+        const int c0 = floor_int(clamp_col(cx));
         first = width, last = -1;
         for (int c = std::max(c0, 0); c <= std::min(c0 + 1, width - 1); ++c)
           if (in(c)) first = std::min(first, c), last = std::max(last, c);
@@ -416,9 +445,12 @@ void SibsonCoordinates::sweep(const PixelMapping& map, double xmax, double ymax,
     for (std::uint32_t k = b0; k < b1; ++k) {
       const auto [first, last] = run[k - b0];
       if (first > last) continue;
-      enter_items[enter_fill[first]++] = row_items[k];
-      leave_items[leave_fill[last + 1]++] = row_items[k];
+      const std::uint32_t t = triangle_of[row_items[k]];
+      enter_items[enter_fill[first]++] = t;
+      leave_items[leave_fill[last + 1]++] = t;
     }
+    sort_buckets(enter_items, enter_start);
+    sort_buckets(leave_items, leave_start);
     for (int i = 0; i < width; ++i) {
       for (std::uint32_t k = leave_start[i]; k < leave_start[i + 1]; ++k) {
         const std::uint32_t t = leave_items[k];
