@@ -290,7 +290,7 @@ struct Corner {
 // Small triangles: the rows and columns of their pixel box (at most this many) are scanned
 // with the three edge functions stepped in int32, instead of the span steppers and their
 // divisions. Both paths test the same exact predicate, so they cover the same pixels.
-constexpr int32_t scan_max_extent = 16;
+constexpr int32_t scan_max_extent = 12;
 static_assert(scan_max_extent <= 62, "the scan path's int32 edge values need boxes below 64 pixels");
 
 // Edge values on the pixel box of a triangle whose box is below 64 x 64 pixels: for a pixel x of
