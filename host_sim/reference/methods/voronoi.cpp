@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "geometry/delaunay.h"
 #include "geometry/predicates.h"
@@ -30,7 +31,7 @@ class TriangleGrid {
  public:
   TriangleGrid(const Mesh& mesh, double width, double height) : mesh_(mesh) {
     const double n = std::max<double>(1, mesh.triangles.size());
-    cell_ = std::max(1.0, std::sqrt(std::max(1.0, width * height) / n));
+    cell_ = std::max(1.0, 2 * std::sqrt(std::max(1.0, width * height) / n));
     nx_ = std::max(1, int(std::ceil(width / cell_)) + 1);
     ny_ = std::max(1, int(std::ceil(height / cell_)) + 1);
     start_.assign(std::size_t(nx_) * ny_ + 1, 0);
@@ -55,8 +56,8 @@ class TriangleGrid {
 
   // A triangle whose closed interior contains p, or no_neighbour.
   std::uint32_t find(const Point& p) const {
-    const int x = std::clamp(int(std::floor(p.x / cell_)), 0, nx_ - 1);
-    const int y = std::clamp(int(std::floor(p.y / cell_)), 0, ny_ - 1);
+    const int x = bucket(p.x, nx_);
+    const int y = bucket(p.y, ny_);
     const std::size_t c = std::size_t(y) * nx_ + x;
     // The first triangle of the bucket that holds p (closed); signs as orient2d's, from
     // detail::orient_filtered (reference/coverage.h).
@@ -74,12 +75,18 @@ class TriangleGrid {
   void range(std::uint32_t t, int& x0, int& x1, int& y0, int& y1) const {
     const auto& v = mesh_.triangles[t].v;
     const Point &a = mesh_.points[v[0]], &b = mesh_.points[v[1]], &c = mesh_.points[v[2]];
-    auto cx = [&](double x) { return std::clamp(int(std::floor(x / cell_)), 0, nx_ - 1); };
-    auto cy = [&](double y) { return std::clamp(int(std::floor(y / cell_)), 0, ny_ - 1); };
-    x0 = cx(std::min({a.x, b.x, c.x}));
-    x1 = cx(std::max({a.x, b.x, c.x}));
-    y0 = cy(std::min({a.y, b.y, c.y}));
-    y1 = cy(std::max({a.y, b.y, c.y}));
+    x0 = bucket(std::min({a.x, b.x, c.x}), nx_);
+    x1 = bucket(std::max({a.x, b.x, c.x}), nx_);
+    y0 = bucket(std::min({a.y, b.y, c.y}), ny_);
+    y1 = bucket(std::max({a.y, b.y, c.y}), ny_);
+  }
+
+  // clamp(floor(x / cell_), 0, n - 1), without a library call for floor.
+  int bucket(double x, int n) const {
+    const double u = x / cell_;
+    const double c = u < 0 ? -1.0 : u > n ? double(n) : u;
+    const int i = int(c);
+    return std::clamp(i - (i > c), 0, n - 1);
   }
 
   const Mesh& mesh_;
@@ -258,12 +265,17 @@ void meyer_weights(const Point* q, const double* corner, std::size_t n, const Po
     area[k] = cross(a.x - p.x, a.y - p.y, b.x - p.x, b.y - p.y);
     scale = std::max(scale, std::abs(area[k]));
   }
-  if (scale > 0)
-    for (std::size_t k = 0; k < n; ++k) area[k] /= scale;  // keeps the products in range
   // prefix[i] = A_0 ... A_i-1, suffix[i] = A_i ... A_n-1.
   prefix[0] = 1;
   suffix[n] = 1;
-  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] * area[k];
+  if (scale > 0) {
+    for (std::size_t k = 0; k < n; ++k) {
+      area[k] /= scale;  // keeps the products in range
+      prefix[k + 1] = prefix[k] * area[k];
+    }
+  } else {
+    for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] * area[k];
+  }
   for (std::size_t k = n; k-- > 0;) suffix[k] = suffix[k + 1] * area[k];
   double sum = 0;
   {
@@ -337,7 +349,19 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
   // Zienkiewicz values at the circumcentres inside the image rectangle and the mesh domain.
   std::vector<std::vector<Gradient>> gradients;
   for (int c = 0; c < nc; ++c) gradients.push_back(vertex_gradients(mesh, topo, c));
-  const TriangleGrid grid(mesh, xmax, ymax);
+  // The grid, for the points the walks below cannot settle (a few dozen: points at a vertex
+  // or on the domain's boundary), built on first use.
+  std::optional<TriangleGrid> grid;
+  auto grid_find = [&](const Point& q) {
+    if (!grid) grid.emplace(mesh, xmax, ymax);
+    return grid->find(q);
+  };
+  // The walk's start next to vertex x, or no_neighbour.
+  auto fan_start = [&](std::uint32_t x) {
+    return x < mesh.points.size() && topo.vertex_start[x] < topo.vertex_start[x + 1]
+               ? topo.vertex_triangles[topo.vertex_start[x]]
+               : no_neighbour;
+  };
   bool half_grid = true;
   for (const Point& x : mesh.points) half_grid = half_grid && on_half_grid(x.x) && on_half_grid(x.y);
   std::vector<double> value(dt.triangles.size() * nc, std::numeric_limits<double>::quiet_NaN());
@@ -365,7 +389,7 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
         m = walk_to_owner(mesh, topo, start, q, half_grid && on_half_grid(q.x) && on_half_grid(q.y));
         break;
       }
-    if (m == no_neighbour) m = grid.find(q);
+    if (m == no_neighbour) m = grid_find(q);
     if (m == no_neighbour) continue;
     const auto& v = mesh.triangles[m].v;
     const auto l = barycentric(mesh, m, q);
@@ -483,7 +507,15 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
         continue;
       }
       // Bilinear pre-fill, in the mesh triangle holding p.
-      const std::uint32_t t = domain.empty() ? grid.find(p) : domain[k];
+      std::uint32_t t = no_neighbour;
+      if (!domain.empty()) {
+        t = domain[k];
+      } else {
+        // From a triangle at the nearest site (a mesh vertex), else as the grid.
+        const std::uint32_t start = fan_start(site);
+        if (start != no_neighbour) t = walk_to_owner(mesh, topo, start, p, half_grid && on_half_grid(p.x) && on_half_grid(p.y));
+        if (t == no_neighbour) t = grid_find(p);
+      }
       if (t == no_neighbour) continue;
       const auto& v = mesh.triangles[t].v;
       const auto l = barycentric(mesh, t, p);
