@@ -27,37 +27,6 @@ void splat_thesis(const BezierPatch& patch, int channels, detail::PatchCanvas& c
   }
 }
 
-void rasterize_exact(const BezierPatch& patch, std::vector<double>& value, detail::PatchCanvas& canvas,
-                     std::vector<detail::MicroVertex>& node) {
-  const int n = patch.subdivisions();
-  // Node (i, j) has a = i / n, b = j / n; row j holds n + 1 - j nodes.
-  auto index = [n](int i, int j) { return std::size_t(j) * (n + 1) - std::size_t(j) * (j - 1) / 2 + i; };
-  node.resize(index(0, n) + 1);
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n - j; ++i) {
-      const double a = double(i) / n, b = double(j) / n;
-      const Point p = patch.position(a, b);
-      if (!detail::snap(p.x, p.y, a, b, node[index(i, j)])) return;  // absurd coordinates: no patch
-    }
-  double* out = value.data();
-  auto visit = [&](int x, int y, double a, double b) {
-    const std::size_t p = canvas.index(x, y);
-    if (!canvas.inside(p)) return;
-    if (!patch.solve(x, y, a, b)) return;
-    if (!patch.in_domain(a, b)) return;  // outside the patch, inside a boundary chord
-    patch.values(a, b, out);
-    canvas.add_inside(p, out);
-  };
-  const int w = canvas.width(), h = canvas.height();
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n - j; ++i) {
-      detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j)], node[index(i, j + 1)], w, h, visit);
-      if (i + 1 < n - j)
-        detail::rasterize_micro_triangle(node[index(i + 1, j)], node[index(i + 1, j + 1)], node[index(i, j + 1)], w,
-                                         h, visit);
-    }
-}
-
 }  // namespace
 
 BezierPatch::BezierPatch(const PatchControl& control) {
@@ -92,20 +61,21 @@ bool BezierPatch::solve(double x, double y, double& a, double& b) const {
   double px, py, xa, xb, ya, yb;
   position(a, b, px, py, xa, xb, ya, yb);
   XY r{x - px, y - py};
+  if (std::fabs(r[0]) + std::fabs(r[1]) < detail::kExactResidual) return true;  // as CoonsPatch::solve
   XY ja{xa, ya}, jb{xb, yb};  // columns of the Jacobian
   double ca = a, cb = b;
-  for (int iteration = 0; iteration < 8; ++iteration) {
+  for (int iteration = 0; iteration < detail::kNewtonIterations; ++iteration) {
     const double det = ja[0] * jb[1] - jb[0] * ja[1];
     if (!(std::fabs(det) > 1e-300)) return false;
     const double da = (jb[1] * r[0] - jb[0] * r[1]) / det;
     const double db = (ja[0] * r[1] - ja[1] * r[0]) / det;
     ca += da, cb += db;
     if (!(std::fabs(ca - a) + std::fabs(cb - b) < 0.25)) return false;
-    r = -(kaa * (da * da) + kab * (da * db) + kbb * (db * db));
-    if (std::fabs(r[0]) + std::fabs(r[1]) < 1e-7) {
+    if (std::fabs(da) + std::fabs(db) < detail::kNewtonStep) {
       a = ca, b = cb;
       return true;
     }
+    r = -(kaa * (da * da) + kab * (da * db) + kbb * (db * db));
     ja += 2 * da * kaa + db * kab;
     jb += da * kab + 2 * db * kbb;
   }
@@ -124,7 +94,7 @@ void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const 
     return !(x1 < -1 || y1 < -1 || x0 > out.width || y0 > out.height);
   };
   detail::render_patches<BezierPatch>("bezier", mesh, domain_width, domain_height, options, out, meets_image,
-                                      splat_thesis, rasterize_exact);
+                                      splat_thesis, detail::rasterize_exact<BezierPatch>);
 }
 
 }  // namespace tristream

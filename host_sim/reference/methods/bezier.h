@@ -50,16 +50,24 @@ class BezierPatch {
   // Solves position(a, b) = (x, y) by Newton's method from (a, b) near the solution. The map
   // is quadratic, so after a step d the residual is exactly -(k_aa d_a^2 + k_ab d_a d_b +
   // k_bb d_b^2) and the Jacobian grows by the Hessian times d: one evaluation, then cheap
-  // steps until the residual is below 1e-9 pixels. Returns false, leaving (a, b) alone, when
-  // the Jacobian is singular, the iteration moves 0.25 away or does not settle in 8 steps
-  // (beside a fold, see patch_raster.h).
+  // steps, until a step is shorter than detail::kNewtonStep (patch_raster.h). Returns false,
+  // leaving (a, b) alone, when the Jacobian is singular, the iteration moves 0.25 away or does
+  // not settle in kNewtonIterations steps (beside a fold, see patch_raster.h).
   bool solve(double x, double y, double& a, double& b) const;
-  // The parameter domain a, b, c >= 0 (up to 1e-12).
-  static bool in_domain(double a, double b) { return a >= -1e-12 && b >= -1e-12 && 1 - a - b >= -1e-12; }
+  // The closed parameter domain a, b, c >= 0, widened by detail::kDomainTolerance.
+  static bool in_domain(double a, double b) {
+    constexpr double e = detail::kDomainTolerance;
+    return a >= -e && b >= -e && 1 - a - b >= -e;
+  }
   // Subdivisions n per side for the exact variant (patch_raster.h): the second derivatives
   // along the three grid directions are 2 (P200 - 2 P101 + P002), 2 (P020 - 2 P011 + P002)
   // and 2 (P200 - 2 P110 + P020), constant, and each is also a boundary curve's.
   int subdivisions() const;
+  // Tessellates the patch (subdivisions() per side, node (i, j) at a = i / n, b = j / n) and
+  // calls visit(x, y, a, b) for every pixel of the width x height image that a micro-triangle
+  // covers, with the micro-triangle's linear guess of its parameters (patch_raster.h).
+  template <class Visit>
+  void tessellate(int width, int height, std::vector<detail::MicroVertex>& node, Visit&& visit) const;
 
  private:
   using XY = detail::XY;
@@ -68,6 +76,28 @@ class BezierPatch {
   std::vector<detail::Quadratic2> value_;  // one per value channel
   double second_derivative_ = 0;               // largest of the three above
 };
+
+template <class Visit>
+void BezierPatch::tessellate(int width, int height, std::vector<detail::MicroVertex>& node, Visit&& visit) const {
+  const int n = subdivisions();
+  // Node (i, j) has a = i / n, b = j / n; row j holds n + 1 - j nodes.
+  auto index = [n](int i, int j) { return std::size_t(j) * (n + 1) - std::size_t(j) * (j - 1) / 2 + i; };
+  node.resize(index(0, n) + 1);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n - j; ++i) {
+      const double a = double(i) / n, b = double(j) / n;
+      const Point p = position(a, b);
+      if (!detail::snap(p.x, p.y, a, b, node[index(i, j)])) return;  // absurd coordinates: no patch
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n - j; ++i) {
+      detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j)], node[index(i, j + 1)], width, height,
+                                       visit);
+      if (i + 1 < n - j)
+        detail::rasterize_micro_triangle(node[index(i + 1, j)], node[index(i + 1, j + 1)], node[index(i, j + 1)], width,
+                                         height, visit);
+    }
+}
 
 void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out);
 

@@ -35,40 +35,6 @@ void splat_thesis(const CoonsPatch& patch, int channels, detail::PatchCanvas& ca
   }
 }
 
-void rasterize_exact(const CoonsPatch& patch, std::vector<double>& value, detail::PatchCanvas& canvas,
-                     std::vector<detail::MicroVertex>& node) {
-  const auto [nu, nv] = patch.subdivisions();
-  // Node (i, j) has u = i / nu, v = j / nv; each grid cell is split along (i, j)-(i+1, j+1).
-  auto index = [nu = nu](int i, int j) { return std::size_t(j) * (nu + 1) + i; };
-  node.resize(std::size_t(nu + 1) * (nv + 1));
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (int j = 0; j <= nv; ++j)
-    for (int i = 0; i <= nu; ++i) {
-      const double u = double(i) / nu, v = double(j) / nv;
-      const Point p = patch.position(u, v);
-      if (!detail::snap(p.x, p.y, u, v, node[index(i, j)])) return;  // absurd coordinates: no patch
-      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-    }
-  const int w = canvas.width(), h = canvas.height();
-  if (x1 < 0 || y1 < 0 || x0 > w - 1 || y0 > h - 1) return;
-  double* out = value.data();
-  auto visit = [&](int x, int y, double u, double v) {
-    const std::size_t p = canvas.index(x, y);
-    if (!canvas.inside(p)) return;
-    if (!detail::refine_parameters(patch, x, y, u, v)) return;
-    if (!patch.in_domain(u, v)) return;  // outside the patch, inside a boundary chord
-    patch.values(u, v, out);
-    canvas.add_inside(p, out);
-  };
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j)], node[index(i + 1, j + 1)], w, h,
-                                       visit);
-      detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j + 1)], node[index(i, j + 1)], w, h,
-                                       visit);
-    }
-}
-
 }  // namespace
 
 CoonsPatch::CoonsPatch(const PatchControl& control) {
@@ -106,6 +72,33 @@ CoonsPatch::CoonsPatch(const PatchControl& control) {
   for (int i = 0; i < 8; ++i) pos_[i] = XY{x_.*coefficient[i], y_.*coefficient[i]};
 }
 
+bool CoonsPatch::solve(double x, double y, double& u, double& v) const {
+  const XY target{x, y};
+  double cu = u, cv = v;
+  for (int iteration = 0; iteration < detail::kNewtonIterations; ++iteration) {
+    XY p, pu, pv;
+    position(cu, cv, p, pu, pv);
+    const XY r = target - p;
+    // A start that is already the solution (a pixel on a tessellation node, such as a patch
+    // corner) stays: at the corner M the Jacobian is singular (the split curve runs straight
+    // through it), where a step would only add noise.
+    if (std::fabs(r[0]) + std::fabs(r[1]) < detail::kExactResidual) {
+      u = cu, v = cv;
+      return true;
+    }
+    const double det = pu[0] * pv[1] - pv[0] * pu[1];
+    if (!(std::fabs(det) > 1e-300)) return false;
+    const double du = (pv[1] * r[0] - pv[0] * r[1]) / det, dv = (pu[0] * r[1] - pu[1] * r[0]) / det;
+    cu += du, cv += dv;
+    if (!(std::fabs(cu - u) + std::fabs(cv - v) < 0.25)) return false;
+    if (std::fabs(du) + std::fabs(dv) < detail::kNewtonStep) {
+      u = cu, v = cv;
+      return true;
+    }
+  }
+  return false;
+}
+
 void CoonsPatch::Component::expand() {
   // (1-u) a1(v) + u a2(v) + (1-v) b1(u) + v b2(u) - [(1-u)(1-v) A + u(1-v) M + (1-u) v C + u v B]
   k = a1.c + b1.c - A;
@@ -136,7 +129,7 @@ std::array<int, 2> CoonsPatch::subdivisions() const {
 void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
   detail::render_patches<CoonsPatch>(
       "coons", mesh, domain_width, domain_height, options, out, [](const PatchControl&) { return true; },
-      splat_thesis, rasterize_exact);
+      splat_thesis, detail::rasterize_exact<CoonsPatch>);
 }
 
 }  // namespace tristream

@@ -22,6 +22,7 @@
 //
 // Variants as in bezier.h: "thesis" steps u and v by kCoonsThesisStep over [0, 1] and splats;
 // the default rasterizes each patch exactly (methods/patch_raster.h).
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -54,13 +55,17 @@ class CoonsPatch {
   // Position (output pixels) and its partial derivatives with respect to u and v.
   void position(double u, double v, double& x, double& y, double& x_u, double& x_v, double& y_u,
                 double& y_v) const {
-    const XY* k = pos_;  // k, ku, kv, kuv, kuu, kvv, kuuv, kuvv
-    // Horner in u over coefficients that are polynomials in v: P = c0 + u (c1 + u c2).
-    const double uu = u * u, vv = v * v, uv = u * v;
-    const XY p = k[0] + u * k[1] + v * k[2] + uv * k[3] + uu * k[4] + vv * k[5] + uu * v * k[6] + u * vv * k[7];
-    const XY pu = k[1] + v * k[3] + 2 * u * k[4] + 2 * uv * k[6] + vv * k[7];
-    const XY pv = k[2] + u * k[3] + 2 * v * k[5] + uu * k[6] + 2 * uv * k[7];
+    detail::XY p, pu, pv;
+    position(u, v, p, pu, pv);
     x = p[0], y = p[1], x_u = pu[0], x_v = pv[0], y_u = pu[1], y_v = pv[1];
+  }
+  // The same as (x, y) pairs.
+  void position(double u, double v, detail::XY& p, detail::XY& pu, detail::XY& pv) const {
+    const detail::XY* k = pos_;  // k, ku, kv, kuv, kuu, kvv, kuuv, kuvv
+    const double uu = u * u, vv = v * v, uv = u * v;
+    p = k[0] + u * k[1] + v * k[2] + uv * k[3] + uu * k[4] + vv * k[5] + uu * v * k[6] + u * vv * k[7];
+    pu = k[1] + v * k[3] + 2 * u * k[4] + 2 * uv * k[6] + vv * k[7];
+    pv = k[2] + u * k[3] + 2 * v * k[5] + uu * k[6] + 2 * uv * k[7];
   }
   Point position(double u, double v) const { return {x_.at(u, v), y_.at(u, v)}; }
   // control.channels values at (u, v).
@@ -68,14 +73,28 @@ class CoonsPatch {
     const Component* q = value_.data();
     for (std::size_t c = 0, n = value_.size(); c < n; ++c) out[c] = q[c].at(u, v);
   }
-  // The parameter domain [0, 1]^2 (up to 1e-12).
-  static bool in_domain(double u, double v) { return u >= -1e-12 && v >= -1e-12 && u <= 1 + 1e-12 && v <= 1 + 1e-12; }
+  // Solves position(u, v) = (x, y) by Newton's method from (u, v) near the solution, until a
+  // step is shorter than detail::kNewtonStep (patch_raster.h). Returns false, leaving (u, v)
+  // alone, when the Jacobian is singular, the iteration moves 0.25 away or does not settle in
+  // kNewtonIterations steps (beside a fold, see patch_raster.h).
+  bool solve(double x, double y, double& u, double& v) const;
+  // The closed parameter domain [0, 1]^2, widened by detail::kDomainTolerance.
+  static bool in_domain(double u, double v) {
+    constexpr double e = detail::kDomainTolerance;
+    return u >= -e && v >= -e && u <= 1 + e && v <= 1 + e;
+  }
   // Subdivisions (nu, nv) for the exact variant (patch_raster.h). Over the square |P_uu| <= Kuu
   // (also the curvature of the boundary curves along u), |P_vv| <= Kvv, |P_uv| <= Kuv, each the
   // largest at a corner (they are affine). A micro-triangle edge d (steps hu = 1/nu,
   // hv = 1/nv) has |d' H d| <= (Kuu + Kuv) hu^2 + (Kvv + Kuv) hv^2, so each side takes twice
   // its share as the interior bound.
   std::array<int, 2> subdivisions() const;
+  // Tessellates the patch (subdivisions(), node (i, j) at u = i / nu, v = j / nv, each grid
+  // cell split along (i, j)-(i+1, j+1)) and calls visit(x, y, u, v) for every pixel of the
+  // width x height image that a micro-triangle covers, with the micro-triangle's linear guess
+  // of its parameters (patch_raster.h).
+  template <class Visit>
+  void tessellate(int width, int height, std::vector<detail::MicroVertex>& node, Visit&& visit) const;
 
  private:
   // One coordinate (x, y or a value channel) of the patch: its corners and curves, and the
@@ -103,6 +122,29 @@ class CoonsPatch {
   XY pos_[8];                      // x_ and y_ monomial coefficients as pairs
   std::vector<Component> value_;  // one per value channel
 };
+
+template <class Visit>
+void CoonsPatch::tessellate(int width, int height, std::vector<detail::MicroVertex>& node, Visit&& visit) const {
+  const auto [nu, nv] = subdivisions();
+  auto index = [nu = nu](int i, int j) { return std::size_t(j) * (nu + 1) + i; };
+  node.resize(std::size_t(nu + 1) * (nv + 1));
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      const double u = double(i) / nu, v = double(j) / nv;
+      const Point p = position(u, v);
+      if (!detail::snap(p.x, p.y, u, v, node[index(i, j)])) return;  // absurd coordinates: no patch
+      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    }
+  if (x1 < 0 || y1 < 0 || x0 > width - 1 || y0 > height - 1) return;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j)], node[index(i + 1, j + 1)], width,
+                                       height, visit);
+      detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j + 1)], node[index(i, j + 1)], width,
+                                       height, visit);
+    }
+}
 
 void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out);
 

@@ -1,0 +1,306 @@
+// Coverage of the exact variant of the patch methods (bezier, coons; patch_raster.h), checked
+// patch by patch against an independent inversion of the patch: multi-start Newton in long
+// double on the patch rebuilt from its control points (Bernstein form, Coons boundary curves),
+// with numeric derivatives.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "../support/random_mesh.h"
+#include "model/topology.h"
+#include "reference/methods/bezier.h"
+#include "reference/methods/coons.h"
+#include "reference/methods/patch_raster.h"
+
+using namespace tristream;
+
+namespace {
+
+using LPoint = std::array<long double, 2>;
+
+// Independent position maps, in long double, from the control points.
+struct BezierMap {
+  std::array<LPoint, 6> p;
+  explicit BezierMap(const PatchControl& c) {
+    for (int k = 0; k < 6; ++k) p[k] = {c.pixel[k].x, c.pixel[k].y};
+  }
+  LPoint operator()(long double a, long double b) const {
+    const long double c = 1 - a - b;
+    LPoint r{};
+    for (int d = 0; d < 2; ++d)
+      r[d] = a * a * p[p200][d] + b * b * p[p020][d] + c * c * p[p002][d] + 2 * a * b * p[p110][d] +
+             2 * b * c * p[p011][d] + 2 * a * c * p[p101][d];
+    return r;
+  }
+  // Signed distance outside the domain a, b, c >= 0 (negative inside).
+  static long double outside(long double a, long double b) { return std::max({-a, -b, a + b - 1}); }
+  static constexpr long double lo = 0, hi = 1;
+};
+
+int middle_point(int p, int q) {
+  const int lo = std::min(p, q), hi = std::max(p, q);
+  return lo == p200 ? (hi == p020 ? p110 : p101) : p011;
+}
+
+struct CoonsMap {
+  LPoint A, M, B, C, mac, mbc;
+  CoonsMap(const PatchControl& c, const CoonsPatch& patch) {
+    const auto k = patch.corners();
+    auto at = [&](int i) { return LPoint{c.pixel[i].x, c.pixel[i].y}; };
+    A = at(k[0]), M = at(k[1]), B = at(k[2]), C = at(k[3]);
+    mac = at(middle_point(k[0], k[3])), mbc = at(middle_point(k[3], k[2]));
+  }
+  // The parabola through s, m, e at t = 0, 1/2, 1 (Lagrange form).
+  static long double curve(long double s, long double m, long double e, long double t) {
+    return s * 2 * (t - 0.5L) * (t - 1) - m * 4 * t * (t - 1) + e * 2 * t * (t - 0.5L);
+  }
+  LPoint operator()(long double u, long double v) const {
+    LPoint r{};
+    for (int d = 0; d < 2; ++d) {
+      const long double b1 = curve(A[d], M[d], B[d], u / 2), a2 = curve(A[d], M[d], B[d], (1 + v) / 2);
+      const long double a1 = curve(A[d], mac[d], C[d], v), b2 = curve(C[d], mbc[d], B[d], u);
+      r[d] = (1 - u) * a1 + u * a2 + (1 - v) * b1 + v * b2 -
+             ((1 - u) * (1 - v) * A[d] + u * (1 - v) * M[d] + (1 - u) * v * C[d] + u * v * B[d]);
+    }
+    return r;
+  }
+  static long double outside(long double u, long double v) { return std::max({-u, -v, u - 1, v - 1}); }
+};
+
+// Newton in long double with central-difference derivatives from (s, t), run until its steps
+// vanish (where the Jacobian is singular it converges only linearly, and a small residual
+// does not yet mean small parameter errors); true when it ends on a residual below 1e-10
+// pixels.
+template <class Map>
+bool invert(const Map& map, long double x, long double y, long double& s, long double& t) {
+  const long double h = 1e-7L;
+  for (int it = 0; it < 200; ++it) {
+    const LPoint p = map(s, t);
+    const long double ex = x - p[0], ey = y - p[1];
+    if (ex == 0 && ey == 0) return true;
+    const LPoint ps = map(s + h, t), ms = map(s - h, t), pt = map(s, t + h), mt = map(s, t - h);
+    const long double xs = (ps[0] - ms[0]) / (2 * h), ys = (ps[1] - ms[1]) / (2 * h);
+    const long double xt = (pt[0] - mt[0]) / (2 * h), yt = (pt[1] - mt[1]) / (2 * h);
+    const long double det = xs * yt - xt * ys;
+    if (det == 0) break;
+    const long double ds = (yt * ex - xt * ey) / det, dt = (xs * ey - ys * ex) / det;
+    s += ds, t += dt;
+    if (!(std::fabs(s) < 3 && std::fabs(t) < 3)) return false;
+    if (std::fabs(ds) + std::fabs(dt) < 1e-17L) break;
+  }
+  const LPoint p = map(s, t);
+  return std::fabs(x - p[0]) + std::fabs(y - p[1]) < 1e-10L;
+}
+
+// Preimages of (x, y) near the closed domain: their distances outside it (<= 0 inside).
+template <class Map>
+std::vector<long double> preimages(const Map& map, long double x, long double y) {
+  std::vector<std::array<long double, 2>> roots;
+  std::vector<long double> out;
+  // The domain's corners first: where the Jacobian is singular (the Coons corner M) Newton
+  // only creeps towards the root, so a start on it must find it exactly.
+  std::vector<std::array<long double, 2>> starts = {{0, 0}, {1, 0}, {0, 1}};
+  if (Map::outside(1, 1) <= 0) starts.push_back({1, 1});
+  for (int i = 0; i <= 5; ++i)
+    for (int j = 0; j <= 5; ++j) starts.push_back({-0.1L + 1.2L * i / 5, -0.1L + 1.2L * j / 5});
+  for (auto [s, t] : starts) {
+    if (!invert(map, x, y, s, t) || Map::outside(s, t) > 0.05L) continue;
+    bool seen = false;
+    for (const auto& r : roots) seen = seen || (std::fabs(r[0] - s) + std::fabs(r[1] - t) < 1e-6L);
+    if (seen) continue;
+    roots.push_back({s, t});
+    out.push_back(Map::outside(s, t));
+  }
+  return out;
+}
+
+// Distance from (x, y) to the patch's boundary curves, as a polyline of 4096 chords per curve
+// (its chord error is below 1e-5 pixels here).
+template <class Map>
+double boundary_distance(const Map& map, double x, double y, bool triangle) {
+  double best = 1e300;
+  const int n = 4096;
+  auto along = [&](auto&& point) {
+    LPoint q = point(0.0L);
+    for (int k = 1; k <= n; ++k) {
+      const LPoint r = point((long double)k / n);
+      const double dx = double(r[0] - q[0]), dy = double(r[1] - q[1]);
+      const double l2 = dx * dx + dy * dy;
+      double f = l2 > 0 ? ((x - double(q[0])) * dx + (y - double(q[1])) * dy) / l2 : 0;
+      f = std::clamp(f, 0.0, 1.0);
+      best = std::min(best, std::hypot(x - double(q[0]) - f * dx, y - double(q[1]) - f * dy));
+      q = r;
+    }
+  };
+  if (triangle) {
+    along([&](long double k) { return map(k, 0); });
+    along([&](long double k) { return map(0, k); });
+    along([&](long double k) { return map(k, 1 - k); });
+  } else {
+    along([&](long double k) { return map(k, 0); });
+    along([&](long double k) { return map(k, 1); });
+    along([&](long double k) { return map(0, k); });
+    along([&](long double k) { return map(1, k); });
+  }
+  return best;
+}
+
+// Jacobian of one sign over the domain (sampled): the patch does not fold.
+template <class Patch>
+bool folds(const Patch& patch, bool triangle) {
+  int positive = 0, negative = 0;
+  for (int i = 0; i <= 40; ++i)
+    for (int j = 0; j <= 40; ++j) {
+      const double s = i / 40.0, t = j / 40.0;
+      if (triangle && s + t > 1) continue;
+      double x, y, xs, xt, ys, yt;
+      patch.position(s, t, x, y, xs, xt, ys, yt);
+      const double det = xs * yt - xt * ys;
+      positive += det > 0, negative += det < 0;
+    }
+  return positive && negative;
+}
+
+struct Tally {
+  int patches = 0, folded = 0, pixels = 0, near_boundary = 0, on_boundary_counted = 0, ambiguous = 0;
+};
+
+// For every unfolded patch of `mesh`: the single patch's counts in a canvas against the number
+// of its independent preimages in the closed domain (kDomainTolerance), for each pixel of the
+// patch's box. Equal away from the boundary curves; within kBoundaryTolerance of them (plus
+// the 1/256-pixel snap), and on them, the tessellation decides, so the count may be lower,
+// never higher.
+template <class Patch, class MakeMap>
+Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, MakeMap&& make_map) {
+  const Topology topo = build_topology(mesh);
+  const PixelMapping map(width, height, width, height);
+  Tally tally;
+  Field prefill(width, height, 1);
+  std::fill(prefill.v.begin(), prefill.v.end(), 0.0);
+  std::vector<double> value(1);
+  std::vector<detail::MicroVertex> nodes;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    PatchControl control;
+    if (!patch_control(mesh, topo, t, map, control)) continue;
+    const Patch patch(control);
+    ++tally.patches;
+    if (folds(patch, triangle)) {
+      ++tally.folded;
+      continue;
+    }
+    const auto ref = make_map(control, patch);
+    detail::PatchCanvas canvas(prefill);
+    detail::rasterize_exact(patch, value, canvas, nodes);
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (int i = 0; i <= 32; ++i)
+      for (int j = 0; j <= 32; ++j) {
+        if (triangle && i + j > 32) continue;
+        const LPoint p = ref(i / 32.0L, j / 32.0L);
+        x0 = std::min(x0, double(p[0])), x1 = std::max(x1, double(p[0]));
+        y0 = std::min(y0, double(p[1])), y1 = std::max(y1, double(p[1]));
+      }
+    for (int y = std::max(0, int(std::floor(y0)) - 1); y <= std::min(height - 1, int(std::ceil(y1)) + 1); ++y)
+      for (int x = std::max(0, int(std::floor(x0)) - 1); x <= std::min(width - 1, int(std::ceil(x1)) + 1); ++x) {
+        const std::vector<long double> roots = preimages(ref, x, y);
+        int truth = 0;
+        bool on_boundary = false;
+        for (long double d : roots) {
+          // A preimage within 1e-6 of the domain's boundary is on it: these pixels are mesh
+          // vertices or on straight boundary curves, and where the patch's Jacobian is singular
+          // (the Coons corner M) even this long double inversion only gets within ~1e-9.
+          on_boundary = on_boundary || std::fabs(d) < 1e-6L;
+          truth += d < 1e-6L;
+          // Off the boundary, preimages keep clear of kDomainTolerance: the gap the band needs.
+          tally.ambiguous += std::fabs(d) >= 1e-6L && std::fabs(d) < 1e-4L;
+        }
+        const int counted = int(canvas.count(x, y));
+        const double distance = boundary_distance(ref, x, y, triangle);
+        INFO("patch " << t << " pixel " << x << ", " << y << " distance " << distance << " truth " << truth);
+        ++tally.pixels;
+        if (distance > detail::kBoundaryTolerance + 2.0 / detail::kSubpixelScale && !on_boundary) {
+          REQUIRE(counted == truth);
+        } else {
+          ++tally.near_boundary;
+          REQUIRE(counted <= truth);
+        }
+        tally.on_boundary_counted += on_boundary && counted > 0;
+      }
+  }
+  return tally;
+}
+
+}  // namespace
+
+TEST_CASE("bezier exact coverage matches an independent inversion of each patch", "[bezier]") {
+  for (std::uint32_t seed : {21u}) {
+    INFO("seed " << seed);
+    const Mesh mesh = testing::random_lattice_mesh(40, 30, 60, seed, 10);
+    const Tally tally = check_coverage<BezierPatch>(mesh, 40, 30, true, [](const PatchControl& c, const BezierPatch&) {
+      return BezierMap(c);
+    });
+    CHECK(tally.ambiguous == 0);
+    CHECK(tally.patches - tally.folded > 15);
+    // Pixels on a patch's boundary (its corners are vertices, so pixel centres) are counted.
+    CHECK(tally.on_boundary_counted > 20);
+  }
+}
+
+TEST_CASE("coons exact coverage matches an independent inversion of each patch", "[coons]") {
+  for (std::uint32_t seed : {22u}) {
+    INFO("seed " << seed);
+    const Mesh mesh = testing::random_lattice_mesh(40, 30, 60, seed, 10);
+    const Tally tally = check_coverage<CoonsPatch>(mesh, 40, 30, false, [](const PatchControl& c, const CoonsPatch& p) {
+      return CoonsMap(c, p);
+    });
+    CHECK(tally.ambiguous == 0);
+    CHECK(tally.patches - tally.folded > 15);
+    CHECK(tally.on_boundary_counted > 20);
+  }
+}
+
+// The trap of patch_raster.h: whether a pixel on a patch's boundary counts must not hang on
+// the last bits of Newton's result. Starting each solve from a guess moved by up to 1e-3
+// gives other last bits; the decisions must not change, and the parameters agree to a tenth
+// of kDomainTolerance.
+TEST_CASE("patch membership does not depend on the solver's start", "[bezier][coons]") {
+  const Mesh mesh = testing::random_lattice_mesh(64, 48, 200, 31, 20);
+  const Topology topo = build_topology(mesh);
+  const PixelMapping map(64, 48, 64, 48);
+  std::vector<detail::MicroVertex> nodes;
+  int boundary = 0, candidates = 0, singular = 0;
+  auto check = [&](const auto& patch, auto&& outside) {
+    patch.tessellate(64, 48, nodes, [&](int x, int y, double s, double t) {
+      double s0 = s, t0 = t;
+      if (!patch.solve(x, y, s0, t0)) return;
+      ++candidates;
+      boundary += std::fabs(outside(s0, t0)) < 1e-10;
+      // Where the Jacobian is nearly singular (the Coons corner M) Newton converges slowly
+      // from elsewhere; the renderer starts such a pixel on the node itself.
+      double px, py, xs, xt, ys, yt;
+      patch.position(s0, t0, px, py, xs, xt, ys, yt);
+      if (!(std::fabs(xs * yt - xt * ys) >= 1e-2 * std::hypot(xs, ys) * std::hypot(xt, yt) && xs * yt - xt * ys != 0)) {
+        ++singular;
+        return;
+      }
+      for (double ds : {-1e-3, 1e-3, 3.7e-4}) {
+        double s1 = s + ds, t1 = t - ds / 2;
+        if (!patch.solve(x, y, s1, t1)) continue;
+        INFO("pixel " << x << ", " << y << " (" << s0 << ", " << t0 << ") vs (" << s1 << ", " << t1 << ") det " << (xs * yt - xt * ys) / (std::hypot(xs, ys) * std::hypot(xt, yt)));
+        REQUIRE(patch.in_domain(s0, t0) == patch.in_domain(s1, t1));
+        REQUIRE(std::fabs(s1 - s0) + std::fabs(t1 - t0) < detail::kDomainTolerance / 10);
+      }
+    });
+  };
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    PatchControl control;
+    if (!patch_control(mesh, topo, t, map, control)) continue;
+    check(BezierPatch(control), [](double a, double b) { return std::max({-a, -b, a + b - 1}); });
+    check(CoonsPatch(control), [](double u, double v) { return std::max({-u, -v, u - 1, v - 1}); });
+  }
+  CHECK(candidates > 10000);
+  CHECK(boundary > 200);
+  CHECK(singular < candidates / 100);
+}
