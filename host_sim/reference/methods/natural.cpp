@@ -55,6 +55,19 @@ SibsonCoordinates::SibsonCoordinates(const Mesh& delaunay, const Topology& topo)
 bool is_locally_delaunay(const Mesh& mesh, const Topology& topo) {
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
     if (topo.vertex_start[v] == topo.vertex_start[v + 1]) return false;  // in no triangle
+  // Integer coordinates in [0, 4096]: incircle's determinant (relative to d, as in
+  // geometry/predicates.cpp) has no rounding (differences <= 2^12, each of its three terms
+  // below 2^50), so its sign is the exact predicate's.
+  bool small = true;
+  for (const Point& q : mesh.points)
+    small = small && q.x >= 0 && q.x <= 4096 && q.y >= 0 && q.y <= 4096 && q.x == std::uint32_t(q.x) &&
+            q.y == std::uint32_t(q.y);
+  auto inside = [small](const Point& a, const Point& b, const Point& c, const Point& d) {
+    if (!small) return incircle(a, b, c, d) > 0;
+    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y, cdx = c.x - d.x, cdy = c.y - d.y;
+    const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
+    return alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady) > 0;
+  };
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& v = mesh.triangles[t].v;
     for (int e = 0; e < 3; ++e) {
@@ -63,7 +76,7 @@ bool is_locally_delaunay(const Mesh& mesh, const Topology& topo) {
       std::uint32_t opposite = 0;
       for (std::uint32_t w : mesh.triangles[n].v)
         if (w != v[e] && w != v[(e + 1) % 3]) opposite = w;
-      if (incircle(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[opposite]) > 0) return false;
+      if (inside(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[opposite])) return false;
     }
   }
   return true;
