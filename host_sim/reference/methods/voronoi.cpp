@@ -172,6 +172,7 @@ VoronoiDiagram::VoronoiDiagram(std::span<const Point> points) : sites_(points.si
 
   cell_start_.assign(1, 0);
   neighbour_start_.assign(1, 0);
+  std::vector<std::int8_t> edge_cocircular(3 * mesh_.triangles.size(), -1);  // -1: not asked yet
   std::vector<std::uint32_t> ring;
   for (std::uint32_t v = 0; v < sites_; ++v) {
     ring.clear();
@@ -197,8 +198,25 @@ VoronoiDiagram::VoronoiDiagram(std::span<const Point> points) : sites_(points.si
       for (std::uint32_t w : mesh_.triangles[t].v)
         if (w != v && w != x) opposite = w;
       const auto& pv = mesh_.triangles[prev].v;
-      if (m > 1 && incircle(mesh_.points[pv[0]], mesh_.points[pv[1]], mesh_.points[pv[2]], mesh_.points[opposite]) == 0)
-        continue;
+      auto cocircular = [&] {
+        return incircle(mesh_.points[pv[0]], mesh_.points[pv[1]], mesh_.points[pv[2]], mesh_.points[opposite]) == 0;
+      };
+      bool same_centre = false;
+      if (m > 1) {
+        // Cocircularity of the four points is symmetric: the answer is kept for the edge,
+        // which the ring of x asks about again.
+        if (topo_.neighbour[3 * prev + k] == t) {
+          std::int8_t& known = edge_cocircular[3 * std::size_t(prev) + k];
+          if (known < 0) {
+            known = cocircular();
+            edge_cocircular[3 * std::size_t(t) + index_of(t, x)] = known;
+          }
+          same_centre = known;
+        } else {
+          same_centre = cocircular();
+        }
+      }
+      if (same_centre) continue;
       cell_points_.push_back(centre[t]);
       cell_tris_.push_back(t);
     }
