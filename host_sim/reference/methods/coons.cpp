@@ -75,26 +75,26 @@ CoonsPatch::CoonsPatch(const PatchControl& control) {
 bool CoonsPatch::solve(double x, double y, double& u, double& v) const {
   const XY target{x, y};
   double cu = u, cv = v;
+  XY p, pu, pv;
+  position(cu, cv, p, pu, pv);
+  XY r = target - p;
+  // A start that is already the solution (a pixel on a tessellation node, such as a patch
+  // corner) stays: at the corner M the Jacobian is singular (the split curve runs straight
+  // through it), where a step would only add noise.
+  if (std::fabs(r[0]) + std::fabs(r[1]) < detail::kExactResidual) return true;
   for (int iteration = 0; iteration < detail::kNewtonIterations; ++iteration) {
-    XY p, pu, pv;
-    position(cu, cv, p, pu, pv);
-    const XY r = target - p;
-    // A start that is already the solution (a pixel on a tessellation node, such as a patch
-    // corner) stays: at the corner M the Jacobian is singular (the split curve runs straight
-    // through it), where a step would only add noise.
-    if (std::fabs(r[0]) + std::fabs(r[1]) < detail::kExactResidual) {
-      u = cu, v = cv;
-      return true;
-    }
     const double det = pu[0] * pv[1] - pv[0] * pu[1];
     if (!(std::fabs(det) > 1e-300)) return false;
-    const double du = (pv[1] * r[0] - pv[0] * r[1]) / det, dv = (pu[0] * r[1] - pu[1] * r[0]) / det;
+    const double inverse = 1 / det;
+    const double du = (pv[1] * r[0] - pv[0] * r[1]) * inverse, dv = (pu[0] * r[1] - pu[1] * r[0]) * inverse;
     cu += du, cv += dv;
     if (!(std::fabs(cu - u) + std::fabs(cv - v) < 0.25)) return false;
     if (std::fabs(du) + std::fabs(dv) < detail::kNewtonStep) {
       u = cu, v = cv;
       return true;
     }
+    position(cu, cv, p, pu, pv);
+    r = target - p;
   }
   return false;
 }

@@ -62,10 +62,13 @@ class CoonsPatch {
   // The same as (x, y) pairs.
   void position(double u, double v, detail::XY& p, detail::XY& pu, detail::XY& pv) const {
     const detail::XY* k = pos_;  // k, ku, kv, kuv, kuu, kvv, kuuv, kuvv
-    const double uu = u * u, vv = v * v, uv = u * v;
-    p = k[0] + u * k[1] + v * k[2] + uv * k[3] + uu * k[4] + vv * k[5] + uu * v * k[6] + u * vv * k[7];
-    pu = k[1] + v * k[3] + 2 * u * k[4] + 2 * uv * k[6] + vv * k[7];
-    pv = k[2] + u * k[3] + 2 * v * k[5] + uu * k[6] + 2 * uv * k[7];
+    // Horner in u over coefficients that are polynomials in v: P = c0 + u (c1 + u c2).
+    const detail::XY c0 = k[0] + v * (k[2] + v * k[5]);
+    const detail::XY c1 = k[1] + v * (k[3] + v * k[7]);
+    const detail::XY c2 = k[4] + v * k[6];
+    p = c0 + u * (c1 + u * c2);
+    pu = c1 + 2 * u * c2;
+    pv = (k[2] + 2 * v * k[5]) + u * ((k[3] + 2 * v * k[7]) + u * k[6]);
   }
   Point position(double u, double v) const { return {x_.at(u, v), y_.at(u, v)}; }
   // control.channels values at (u, v).

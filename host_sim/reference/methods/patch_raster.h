@@ -212,8 +212,8 @@ void rasterize_micro_triangle(const MicroVertex& a, const MicroVertex& b, const 
   int opposite0 = 1, opposite1 = 2, opposite2 = 0;
   // Pixel sample points are the integers: column i at fixed-point i << kSubpixelBits. The box
   // first: most micro-triangles of a fine tessellation hold no sample point.
-  const std::int64_t min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
-  const std::int64_t min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
+  const std::int64_t min_x = std::min(std::min(a.x, b.x), c.x), max_x = std::max(std::max(a.x, b.x), c.x);
+  const std::int64_t min_y = std::min(std::min(a.y, b.y), c.y), max_y = std::max(std::max(a.y, b.y), c.y);
   const std::int64_t one = std::int64_t(1) << kSubpixelBits;
   const std::int64_t i0 = std::max<std::int64_t>(0, (min_x + one - 1) >> kSubpixelBits);
   const std::int64_t i1 = std::min<std::int64_t>(width - 1, max_x >> kSubpixelBits);
