@@ -55,13 +55,13 @@ struct FloorStepper {
     q_step = int32_t(qs);
     r_step = int32_t(step - qs * d);
   }
+  // Without a branch: whether the remainder wraps follows the slope's fraction, which a branch
+  // predictor guesses badly.
   void next_row() {
-    q += q_step;
     r += r_step;
-    if (r >= den) {
-      r -= den;
-      ++q;
-    }
+    const int32_t wrap = r >= den;
+    q += q_step + wrap;
+    r -= den & -wrap;
   }
 };
 
