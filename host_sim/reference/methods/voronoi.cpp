@@ -230,6 +230,15 @@ VoronoiDiagram::VoronoiDiagram(std::span<const Point> points) : sites_(points.si
       if (x < sites_) neighbours_.push_back(x), neighbour_points_.push_back(mesh_.points[x]);
     }
     neighbour_start_.push_back(std::uint32_t(neighbours_.size()));
+    // The site nearest to v is one of its Delaunay neighbours. A point closer to v than
+    // half that distance is strictly nearer to v than to any other site (triangle
+    // inequality); the margin covers the rounding of both squared distances.
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::uint32_t k = neighbour_start_[v]; k < neighbour_start_[v + 1]; ++k) {
+      const double dx = neighbour_points_[k].x - mesh_.points[v].x, dy = neighbour_points_[k].y - mesh_.points[v].y;
+      nearest = std::min(nearest, dx * dx + dy * dy);
+    }
+    safe_d2_.push_back(0.25 * nearest * (1 - 1e-12));
   }
 }
 
@@ -248,6 +257,8 @@ std::uint32_t VoronoiDiagram::nearest_site(const Point& p, std::uint32_t start) 
   };
   std::uint32_t v = start;
   double best = d2(v);
+  // Strictly nearest (the walk would scan v's neighbours, find none closer and stop).
+  if (best < safe_d2_[v]) return v;
   for (std::size_t steps = 0; steps <= sites_; ++steps) {
     std::uint32_t next_k = no_neighbour;
     for (std::uint32_t k = neighbour_start_[v], e = neighbour_start_[v + 1]; k < e; ++k) {

@@ -60,6 +60,7 @@ class VoronoiDiagram {
   std::vector<std::uint32_t> neighbour_start_;  // Delaunay neighbours of each site
   std::vector<std::uint32_t> neighbours_;
   std::vector<Point> neighbour_points_;  // the point of each entry of neighbours_
+  std::vector<double> safe_d2_;  // per site: a point this close (squared) has it as its only nearest site
 };
 
 // Meyer et al. barycentric coordinates of p in the convex polygon `polygon` (thesis
