@@ -616,7 +616,7 @@ struct ColumnWindow {
     const int32_t x0 = load_u16(layer.positions + 4 * size_t(load_u16(p)));
     const int32_t x1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)));
     const int32_t x2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)));
-    return max3(x0, x1, x2) < lo || min3(x0, x1, x2) >= hi;
+    return (max3(x0, x1, x2) < lo) | (min3(x0, x1, x2) >= hi);
   }
 };
 

@@ -16,7 +16,7 @@ inline int64_t floor_div(int64_t n, int64_t d) {
     // 32-bit division when both fit (a hardware divide on Cortex-M4, faster on hosts too).
     const int32_t n32 = int32_t(n), d32 = int32_t(d);
     const int32_t q32 = n32 / d32;
-    return (n32 % d32 != 0 && n32 < 0) ? int64_t(q32) - 1 : int64_t(q32);
+    return int64_t(q32) - ((n32 % d32 != 0) & (n32 < 0));
   }
   int64_t q = n / d;
   return (n % d != 0 && n < 0) ? q - 1 : q;
@@ -46,25 +46,24 @@ inline uint64_t mulhi_u64(uint64_t a, uint64_t b) {
 
 // Exact division by one divisor d (0 < d < 2^62) used several times: the reciprocal
 // m = floor((2^64 - 1) / d) is one division, then every quotient is a high multiply and at most
-// two corrections (m > 2^64 / d - 2, so n m / 2^64 > n / d - 2 for n < 2^64). Same results as
-// floor_div64 and round_div, bit for bit.
+// one correction: 2^64 - m d <= d, so n / d - n m / 2^64 <= n / 2^64 < 1 and floor(n m / 2^64)
+// is floor(n / d) or one less, for any n < 2^64. Same results as floor_div64 and round_div, bit
+// for bit (tested).
 class Divider {
  public:
   explicit Divider(int64_t d) : d_(uint64_t(d)), m_(~uint64_t(0) / uint64_t(d)) {}
 
   // floor(n / d) for 0 <= n < 2^64.
   uint64_t floor_u(uint64_t n) const {
-    uint64_t q = mulhi_u64(n, m_);
-    uint64_t r = n - q * d_;
-    while (r >= d_) {
-      ++q;
-      r -= d_;
-    }
-    return q;
+    const uint64_t q = mulhi_u64(n, m_);
+    return q + (n - q * d_ >= d_);
   }
-  // floor(n / d) for |n| < 2^62.
+  // floor(n / d) for |n| < 2^62: for n < 0, -floor((-n + d - 1) / d); without branches.
   int64_t floor(int64_t n) const {
-    return n >= 0 ? int64_t(floor_u(uint64_t(n))) : -int64_t(floor_u(uint64_t(-n) + d_ - 1));
+    const uint64_t negative = uint64_t(n >> 63);  // all ones or zero
+    const uint64_t magnitude = (uint64_t(n) ^ negative) - negative;
+    const uint64_t q = floor_u(magnitude + ((d_ - 1) & negative));
+    return int64_t((q ^ negative) - negative);
   }
 
  private:
@@ -83,7 +82,11 @@ class RoundingDivider {
   Divider div_;
 };
 
-inline int32_t min3(int32_t a, int32_t b, int32_t c) { return a < b ? (a < c ? a : c) : (b < c ? b : c); }
-inline int32_t max3(int32_t a, int32_t b, int32_t c) { return a > b ? (a > c ? a : c) : (b > c ? b : c); }
+// Minimum and maximum in a form compilers turn into conditional moves: on triangle data the
+// comparisons are unpredictable, and a mispredicted branch costs more than the whole test.
+inline int32_t min2(int32_t a, int32_t b) { return b < a ? b : a; }
+inline int32_t max2(int32_t a, int32_t b) { return b > a ? b : a; }
+inline int32_t min3(int32_t a, int32_t b, int32_t c) { return min2(min2(a, b), c); }
+inline int32_t max3(int32_t a, int32_t b, int32_t c) { return max2(max2(a, b), c); }
 
 }  // namespace tristream::core::detail

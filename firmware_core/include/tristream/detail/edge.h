@@ -31,7 +31,7 @@ inline Edge make_edge(int32_t px, int32_t py, int32_t qx, int32_t qy, bool bound
   Edge e;
   e.a = -dy * (int64_t(1) << config::subpixel_bits);
   e.b = dx * (int64_t(1) << config::subpixel_bits);
-  const bool inclusive = boundary || e.a < 0 || (e.a == 0 && e.b < 0);
+  const bool inclusive = boundary | (e.a < 0) | ((e.a == 0) & (e.b < 0));
   e.c_exact = dy * px - dx * py;
   e.c = e.c_exact - (inclusive ? 0 : 1);
   return e;
@@ -106,15 +106,11 @@ struct SpanStepper {
   }
   // Columns [*x0, *x1] (inclusive; empty when *x0 > *x1) of the current row.
   void span(int32_t* x0, int32_t* x1) const {
-    int32_t lo = -bound[0].q, hi = bound[1].q;
     const int32_t v = bound[2].q;
-    if (third_left) {
-      lo = -v > lo ? -v : lo;
-    } else {
-      hi = v < hi ? v : hi;
-    }
-    *x0 = lo;
-    *x1 = hi;
+    // The third bound applies to one side; the other side takes a bound that never wins.
+    const int32_t third_lo = third_left ? -v : INT32_MIN, third_hi = third_left ? INT32_MAX : v;
+    *x0 = max2(-bound[0].q, third_lo);
+    *x1 = min2(bound[1].q, third_hi);
   }
   void next_row() {
     bound[0].next_row();
