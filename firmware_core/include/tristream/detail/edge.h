@@ -107,8 +107,11 @@ struct SpanStepper {
   // Columns [*x0, *x1] (inclusive; empty when *x0 > *x1) of the current row.
   void span(int32_t* x0, int32_t* x1) const {
     const int32_t v = bound[2].q;
-    // The third bound applies to one side; the other side takes a bound that never wins.
-    const int32_t third_lo = third_left ? -v : INT32_MIN, third_hi = third_left ? INT32_MAX : v;
+    // The third bound applies to one side; the other side takes a bound that never wins. Bit
+    // operations on a mask, not a branch (compilers keep the ternary form as a jump here).
+    const int32_t left_mask = -int32_t(third_left);
+    const int32_t third_lo = (-v & left_mask) | (INT32_MIN & ~left_mask);
+    const int32_t third_hi = (INT32_MAX & left_mask) | (v & ~left_mask);
     *x0 = max2(-bound[0].q, third_lo);
     *x1 = min2(bound[1].q, third_hi);
   }
