@@ -77,7 +77,7 @@ struct CoonsMap {
 template <class Map>
 bool invert(const Map& map, long double x, long double y, long double& s, long double& t) {
   const long double h = 1e-7L;
-  for (int it = 0; it < 200; ++it) {
+  for (int it = 0; it < 120; ++it) {
     const LPoint p = map(s, t);
     const long double ex = x - p[0], ey = y - p[1];
     if (ex == 0 && ey == 0) return true;
@@ -104,8 +104,8 @@ std::vector<long double> preimages(const Map& map, long double x, long double y)
   // only creeps towards the root, so a start on it must find it exactly.
   std::vector<std::array<long double, 2>> starts = {{0, 0}, {1, 0}, {0, 1}};
   if (Map::outside(1, 1) <= 0) starts.push_back({1, 1});
-  for (int i = 0; i <= 5; ++i)
-    for (int j = 0; j <= 5; ++j) starts.push_back({-0.1L + 1.2L * i / 5, -0.1L + 1.2L * j / 5});
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) starts.push_back({-0.1L + 1.2L * i / 4, -0.1L + 1.2L * j / 4});
   for (auto [s, t] : starts) {
     if (!invert(map, x, y, s, t) || Map::outside(s, t) > 0.05L) continue;
     bool seen = false;
@@ -169,8 +169,8 @@ struct Tally {
 };
 
 // For every unfolded patch of `mesh`: the single patch's counts in a canvas against the number
-// of its independent preimages in the closed domain (kDomainTolerance), for each pixel of the
-// patch's box. Equal away from the boundary curves; within kBoundaryTolerance of them (plus
+// of its independent preimages in the closed domain (within 1e-6 of it counts as on it), for
+// each pixel of the patch's box. Equal away from the boundary curves; within kBoundaryTolerance of them (plus
 // the 1/256-pixel snap), and on them, the tessellation decides, so the count may be lower,
 // never higher.
 template <class Patch, class MakeMap>
@@ -217,14 +217,13 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
           tally.ambiguous += std::fabs(d) >= 1e-6L && std::fabs(d) < 1e-4L;
         }
         const int counted = int(canvas.count(x, y));
-        const double distance = boundary_distance(ref, x, y, triangle);
-        INFO("patch " << t << " pixel " << x << ", " << y << " distance " << distance << " truth " << truth);
         ++tally.pixels;
-        if (distance > detail::kBoundaryTolerance + 2.0 / detail::kSubpixelScale && !on_boundary) {
-          REQUIRE(counted == truth);
-        } else {
+        INFO("patch " << t << " pixel " << x << ", " << y << " truth " << truth << " counted " << counted);
+        REQUIRE(counted <= truth);
+        if (counted < truth && !on_boundary) {
+          // Missed: only between a boundary curve and its chord.
           ++tally.near_boundary;
-          REQUIRE(counted <= truth);
+          REQUIRE(boundary_distance(ref, x, y, triangle) <= detail::kBoundaryTolerance + 2.0 / detail::kSubpixelScale);
         }
         tally.on_boundary_counted += on_boundary && counted > 0;
       }
@@ -242,6 +241,7 @@ TEST_CASE("bezier exact coverage matches an independent inversion of each patch"
       return BezierMap(c);
     });
     CHECK(tally.ambiguous == 0);
+    CHECK(tally.pixels > 1000);
     CHECK(tally.patches - tally.folded > 15);
     // Pixels on a patch's boundary (its corners are vertices, so pixel centres) are counted.
     CHECK(tally.on_boundary_counted > 20);
@@ -256,6 +256,7 @@ TEST_CASE("coons exact coverage matches an independent inversion of each patch",
       return CoonsMap(c, p);
     });
     CHECK(tally.ambiguous == 0);
+    CHECK(tally.pixels > 1000);
     CHECK(tally.patches - tally.folded > 15);
     CHECK(tally.on_boundary_counted > 20);
   }
