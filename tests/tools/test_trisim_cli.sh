@@ -65,5 +65,14 @@ expect 0 "" "$bin/trisim" metrics "$tmp/a.png" "$tmp/a.png" --json
 grep -q '"mse":0' "$tmp/out" && passes=$((passes + 1)) || { echo "FAIL: metrics of identical images: $(cat "$tmp/out")"; failures=$((failures + 1)); }
 expect 66 "" "$bin/trisim" metrics "$tmp/a.png" "$tmp/missing.png"
 
+for engine in reference core; do
+  expect 0 "" "$bin/trisim" bench "$tri" --method zienkiewicz --engine "$engine" --runs 3 --json
+  for key in ms_median ms_min cpu_ms_median mpix_per_s runs pixels; do
+    grep -q "\"$key\":" "$tmp/out" && passes=$((passes + 1)) || { echo "FAIL: bench --json ($engine) lacks '$key'"; failures=$((failures + 1)); }
+  done
+done
+grep -q '"ram_bytes":' "$tmp/out" && passes=$((passes + 1)) || { echo "FAIL: bench --engine core --json lacks 'ram_bytes'"; failures=$((failures + 1)); }
+expect 64 "" "$bin/trisim" bench "$tri" --method coons --engine core
+
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]
