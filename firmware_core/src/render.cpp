@@ -286,11 +286,13 @@ struct ZienkiewiczShader {
     for (int32_t x = x0; x <= x1; ++x) {
       const int64_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;
       if constexpr (Writer::takes_rounded) {
-        // Rounded and clamped in 64 bits: to_u8 of the int32-clamped value, one clamp fewer.
+        // Rounded and clamped in 64 bits (as to_u8 of the int32-clamped value); the writer's
+        // clamp then folds away, and values are rarely out of range.
         int32_t r[Channels];
         for (int c = 0; c < Channels; ++c) {
-          const int64_t v = (ch[c].eval_wide(a15, b15) + (1 << (q24_8::frac_bits - 1))) >> q24_8::frac_bits;
-          r[c] = int32_t(v < 0 ? 0 : (v > 255 ? 255 : v));
+          int64_t v = (ch[c].eval_wide(a15, b15) + (1 << (q24_8::frac_bits - 1))) >> q24_8::frac_bits;
+          if (uint64_t(v) > 255) v = v < 0 ? 0 : 255;
+          r[c] = int32_t(v);
         }
         writer.put_rounded(p, x, y, r);
       } else {
@@ -314,7 +316,12 @@ struct ZienkiewiczShader {
       zienkiewicz_row<Channels>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),
                                 [&](int32_t n, const CubicSteps* s) {
                                   int32_t r[Channels];
-                                  for (int c = 0; c < Channels; ++c) r[c] = int32_t(int64_t(s[c].v) >> vf);
+                                  for (int c = 0; c < Channels; ++c) {
+                                    int32_t v = int32_t(int64_t(s[c].v) >> vf);
+                                    // Clamped here, rarely needed: the writer's clamp then folds away.
+                                    if (uint32_t(v) > 255) v = v < 0 ? 0 : 255;
+                                    r[c] = v;
+                                  }
                                   writer.put_rounded(p, xs + n, y, r);
                                   p += step;
                                 });
