@@ -238,7 +238,8 @@ struct ZienkiewiczShader {
 
   void begin(const TriangleView& tv, const Edge* e, int64_t a2) {
     const RoundingDivider by_area2(a2);
-    steps.setup(e, by_area2, position_fx::from_raw(tv.x[0]).floor_to_int(), position_fx::from_raw(tv.y[0]).floor_to_int());
+    steps.setup(e, by_area2, position_fx::from_raw(tv.x[0]).floor_to_int(),
+                position_fx::from_raw(tv.y[0]).floor_to_int());
     int32_t dx[3], dy[3], vals[3][Channels], grads[Channels][6];
     for (int k = 0; k < 3; ++k) {
       const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);

@@ -22,7 +22,8 @@ constexpr int vf = ZienkiewiczChannel::value_frac_bits;
 
 // Exact P(a, b) * 2^98 (p in 2^-8, a and b in 2^-30 grey units): every term below 2^122.
 i128 exact_p(const ZienkiewiczChannel& z, int32_t a, int32_t b) {
-  const int64_t p[4][4] = {{z.p00, z.p01, z.p02, z.p03}, {z.p10, z.p11, z.p12, 0}, {z.p20, z.p21, 0, 0}, {z.p30, 0, 0, 0}};
+  const int64_t p[4][4] = {
+      {z.p00, z.p01, z.p02, z.p03}, {z.p10, z.p11, z.p12, 0}, {z.p20, z.p21, 0, 0}, {z.p30, 0, 0, 0}};
   i128 sum = 0;
   for (int i = 0; i <= 3; ++i)
     for (int j = 0; i + j <= 3; ++j) {

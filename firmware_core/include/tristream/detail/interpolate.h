@@ -188,7 +188,8 @@ struct ZienkiewiczChannel {
     const int64_t pb = f00 + mul_q30(f01 + mul_q30(f02 + mul_q30(f03, b), b), b);
     const int64_t pa = f10 + mul_q30(f11 + mul_q30(f12, b), b) + mul_q30(f20 + mul_q30(f21, b) + mul_q30(f30, a), a);
     s.v = uint64_t(pb + mul_q30(pa, a));
-    if (order >= 1) s.d1 = uint64_t(g00 + mul_q30(g01 + mul_q30(g02, b), b) + mul_q30(g10 + mul_q30(g11, b) + mul_q30(g20, a), a));
+    if (order >= 1)
+      s.d1 = uint64_t(g00 + mul_q30(g01 + mul_q30(g02, b), b) + mul_q30(g10 + mul_q30(g11, b) + mul_q30(g20, a), a));
     if (order >= 2) s.d2 = uint64_t(h00 + mul_q30(h10, a) + mul_q30(h01, b));
     if (order >= 3) s.d3 = uint64_t(d3);
     return s;
