@@ -185,7 +185,7 @@ struct BilinearShader {
       ch[c].setup(e, e_ref, by_area2, v3);
     }
   }
-  void span(int32_t y, int32_t, int32_t x0, int32_t x1) {
+  void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {
     uint32_t v[Channels], dv[Channels];
     for (int c = 0; c < Channels; ++c) {
       v[c] = ch[c].at(x0, y, xr, yr);
@@ -239,14 +239,13 @@ struct ZienkiewiczShader {
   Writer writer;
   int bpp;
   ZienkiewiczChannel ch[Channels];
-  const Edge* edges = nullptr;
-  RoundingDivider by_area2{1};
   BarycentricStepper steps;
+  int fd_state = 0;  // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
 
   void begin(const TriangleView& tv, const Edge* e, int64_t a2) {
-    edges = e;
-    by_area2 = RoundingDivider(a2);
-    steps.setup(e, by_area2);
+    const RoundingDivider by_area2(a2);
+    steps.setup(e, by_area2, position_fx::from_raw(tv.x[0]).floor_to_int(),
+                position_fx::from_raw(tv.y[0]).floor_to_int());
     int32_t dx[3], dy[3], vals[3][Channels], grads[Channels][6];
     for (int k = 0; k < 3; ++k) {
       const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
@@ -260,28 +259,90 @@ struct ZienkiewiczShader {
         grads[c][2 * k + 1] = load_i32(g + 4);
       }
     }
+    fd_state = a2 >= zienkiewicz_fd_min_area2 ? 0 : -1;
     for (int c = 0; c < Channels; ++c) {
       const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
       ch[c].setup(dx, dy, v3, grads[c]);
     }
   }
-  // Out of line: the pixel loop's code generation then does not depend on the rest of the tile
-  // function (inlined, changes elsewhere in it swung its speed by 20%).
-  __attribute__((noinline)) void span(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
+  // Forward differencing set up on the first row that uses it; false for a small triangle or one
+  // outside the bit budget (then every row is evaluated per pixel).
+  __attribute__((noinline)) bool rows_ready_slow() {
+    fd_state = 1;
+    for (int c = 0; c < Channels; ++c)
+      if (!ch[c].setup_rows(int32_t(steps.dadx), int32_t(steps.dbdx))) fd_state = -1;
+    return fd_state > 0;
+  }
+  bool rows_ready() { return fd_state == 0 ? rows_ready_slow() : fd_state > 0; }
+  // Row y of the triangle covers [xs, xe]; pixels x0..x1 of it are in the tile. Rows of at least
+  // zienkiewicz_fd_min_length pixels (of large enough triangles) are forward-differenced, others
+  // evaluated per pixel: the choice depends on the whole row, not on the tile. Out of line (both
+  // loops): their code generation then does not depend on the rest of the tile function (inlined,
+  // changes elsewhere in it swung its speed by 20%).
+  __attribute__((noinline)) void span(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
     uint32_t a, b;
-    BarycentricStepper::at(edges, by_area2, xs, y, &a, &b);
+    steps.at(xs, y, &a, &b);
+    if (xe - xs + 1 >= zienkiewicz_fd_min_length && rows_ready()) {
+      forward_differenced(y, xs, x0, x1, a, b);
+      return;
+    }
     a += steps.dadx * uint32_t(x0 - xs);
     b += steps.dbdx * uint32_t(x0 - xs);
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
     auto* p = writer.at(x0, y);
     for (int32_t x = x0; x <= x1; ++x) {
       const int64_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;
-      int32_t q8[Channels];
-      for (int c = 0; c < Channels; ++c) q8[c] = ch[c].eval(a15, b15);
-      writer.put(p, x, y, q8);
+      if constexpr (Writer::takes_rounded) {
+        // Rounded and clamped in 64 bits (as to_u8 of the int32-clamped value); the writer's
+        // clamp then folds away, and values are rarely out of range.
+        int32_t r[Channels];
+        for (int c = 0; c < Channels; ++c) {
+          int64_t v = (ch[c].eval_wide(a15, b15) + (1 << (q24_8::frac_bits - 1))) >> q24_8::frac_bits;
+          if (uint64_t(v) > 255) v = v < 0 ? 0 : 255;
+          r[c] = int32_t(v);
+        }
+        writer.put_rounded(p, x, y, r);
+      } else {
+        int32_t q8[Channels];
+        for (int c = 0; c < Channels; ++c) q8[c] = ch[c].eval(a15, b15);
+        writer.put(p, x, y, q8);
+      }
       p += bpp;
       a += steps.dadx;
       b += steps.dbdx;
+    }
+  }
+  // Pixels x0..x1 of row y by forward differencing from the weights a, b at xs.
+  __attribute__((noinline)) void forward_differenced(int32_t y, int32_t xs, int32_t x0, int32_t x1, uint32_t a,
+                                                     uint32_t b) {
+    constexpr int vf = ZienkiewiczChannel::value_frac_bits;
+    auto* p = writer.at(x0, y);
+    const int step = bpp;  // a local: the pixel stores could alias the member
+    if constexpr (Writer::takes_rounded) {
+      // Rounding to nearest folded into the values (exact: the differences are unchanged).
+      zienkiewicz_row<Channels>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),
+                                [&](int32_t n, const CubicSteps* s) {
+                                  int32_t r[Channels];
+                                  for (int c = 0; c < Channels; ++c) {
+                                    int32_t v = int32_t(int64_t(s[c].v) >> vf);
+                                    // Clamped here, rarely needed: the writer's clamp then folds away.
+                                    if (uint32_t(v) > 255) v = v < 0 ? 0 : 255;
+                                    r[c] = v;
+                                  }
+                                  writer.put_rounded(p, xs + n, y, r);
+                                  p += step;
+                                });
+    } else {
+      zienkiewicz_row<Channels>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, 0,
+                                [&](int32_t n, const CubicSteps* s) {
+                                  int32_t q8[Channels];
+                                  for (int c = 0; c < Channels; ++c) {
+                                    const int64_t v = int64_t(s[c].v) >> (vf - q24_8::frac_bits);
+                                    q8[c] = int32_t(v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : v));
+                                  }
+                                  writer.put(p, xs + n, y, q8);
+                                  p += step;
+                                });
     }
   }
 };
@@ -398,7 +459,7 @@ void scan_small(const TriangleView& tv, const Edge* edges, int64_t area2, int32_
       shader.begin(tv, edges, area2);
       started = true;
     }
-    shader.span(y, xs, cs, ce);
+    shader.span(y, xs, x - 1, cs, ce);
   }
 }
 
@@ -475,7 +536,7 @@ void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
       shader.begin(tv, edges, area2);
       started = true;
     }
-    shader.span(y, xs, cs, ce);
+    shader.span(y, xs, xe, cs, ce);
   }
 }
 
@@ -639,7 +700,7 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, const Activ
     BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
     draw_layer(list, map, rect, s);
   } else {
-    ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, nullptr, RoundingDivider{1}, {}};
+    ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, {}, 0};
     draw_layer(list, map, rect, s);
   }
 }

@@ -82,6 +82,52 @@ class RoundingDivider {
   Divider div_;
 };
 
+// floor(x * y / 2^30) for |x| < 2^61 and any int32 y (a q2_30 weight): the 96-bit product from
+// a 32 x 32 -> 64 product of x's high word and one of its low word, so no 128-bit type is needed
+// (the same result everywhere; the native 128-bit product where there is one).
+inline int64_t mul_q30_portable(int64_t x, int32_t y) {
+  const int64_t hi = (x >> 32) * y;             // |hi| < 2^29 * 2^31
+  const int64_t lo = int64_t(uint32_t(x)) * y;  // |lo| < 2^32 * 2^31
+  return int64_t(uint64_t(hi) << 2) + (lo >> 30);
+}
+
+inline int64_t mul_q30(int64_t x, int32_t y) {
+#if defined(__SIZEOF_INT128__)
+  __extension__ typedef __int128 i128;
+  return int64_t((i128(x) * y) >> 30);
+#else
+  return mul_q30_portable(x, y);
+#endif
+}
+
+// A signed 128-bit integer for exact sums of 64 x 64-bit products in per-triangle setup
+// (two's complement in two words; only what the setup needs).
+struct Wide {
+  uint64_t lo = 0;
+  uint64_t hi = 0;  // the high word, two's complement
+
+  // Exact a * b.
+  static Wide product(int64_t a, int64_t b) {
+    const uint64_t ua = uint64_t(a), ub = uint64_t(b);
+    Wide w;
+    w.lo = ua * ub;
+    w.hi = mulhi_u64(ua, ub) - (a < 0 ? ub : 0) - (b < 0 ? ua : 0);
+    return w;
+  }
+  Wide operator+(const Wide& o) const {
+    Wide w;
+    w.lo = lo + o.lo;
+    w.hi = hi + o.hi + (w.lo < lo ? 1 : 0);
+    return w;
+  }
+  // round(value / 2^s), halves up, for 64 <= s < 127; the result must fit int64.
+  int64_t round_shift(int s) const {
+    const Wide half = s - 1 >= 64 ? Wide{0, uint64_t(1) << (s - 1 - 64)} : Wide{uint64_t(1) << (s - 1), 0};
+    const Wide t = *this + half;
+    return int64_t(t.hi) >> (s - 64);
+  }
+};
+
 // Minimum and maximum in a form compilers turn into conditional moves: on triangle data the
 // comparisons are unpredictable, and a mispredicted branch costs more than the whole test.
 inline int32_t min2(int32_t a, int32_t b) { return b < a ? b : a; }

@@ -40,11 +40,51 @@ struct BilinearChannel {
   uint32_t step() const { return uint32_t(dvdx); }
 };
 
+// Forward differences of a cubic along a row: the value and its first three differences,
+// modulo 2^64 (the values read as int64 are exact whenever they fit, see ZienkiewiczChannel).
+struct CubicSteps {
+  uint64_t v = 0, d1 = 0, d2 = 0, d3 = 0;
+
+  void step() {
+    v += d1;
+    d1 += d2;
+    d2 += d3;
+  }
+  // k steps at once: v(k) = v + k d1 + C(k,2) d2 + C(k,3) d3, and so on; exactly what k calls of
+  // step() give (integer identities, modulo 2^64).
+  void skip(uint32_t k) {
+    const uint64_t k1 = k, k2 = k1 * (k1 - 1) / 2, k3 = k2 * (k1 - 2) / 3;
+    v += k1 * d1 + k2 * d2 + k3 * d3;
+    d1 += k1 * d2 + k2 * d3;
+    d2 += k1 * d3;
+  }
+};
+
 // Zienkiewicz (NOTES.md 3.2) as a cubic polynomial in the barycentric weights (a, b) of vertices
 // 0 and 1: f = sum p[i][j] a^i b^j, coefficients in q24_8 from the vertex values and the edge
-// derivatives u = edge . gradient, evaluated by Horner's rule with a, b in q17_15.
+// derivatives u = edge . gradient.
+//
+// Two evaluations (docs/FIXED_POINT.md, Zienkiewicz):
+// - eval: Horner's rule with a, b in q17_15 at one pixel (short rows, small triangles, and
+//   triangles outside the forward-difference bit budget; see zienkiewicz_fd_min_length);
+// - forward differencing along a row: a and b are linear in x (steps da, db in q2_30), so f is a
+//   cubic in x. setup_rows() expands, once per triangle, the value P(a, b) and its forward
+//   differences D1(a, b) = P(a + da, b + db) - P(a, b), D2 (the difference of D1) and D3 as
+//   polynomials in (a, b) with coefficients in 2^-32 grey levels (each the exact value rounded
+//   once); steps_at() evaluates them at a restart point, then a pixel costs three additions.
 struct ZienkiewiczChannel {
   int64_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
+
+  // Forward differencing: fraction bits of values and differences (grey levels).
+  static constexpr int value_frac_bits = 32;
+  // Coefficients p (q24_8) must be below this in magnitude (2^20 grey levels) for forward
+  // differencing; the bit budget below rests on it.
+  static constexpr int64_t max_fd_coefficient = int64_t(1) << 28;
+  // Forward-difference polynomials in 2^-32 grey: value P (cubic), D1 (quadratic), D2 (linear), D3.
+  int64_t f00, f01, f02, f03, f10, f11, f12, f20, f21, f30;
+  int64_t g00, g01, g02, g10, g11, g20;
+  int64_t h00, h01, h10;
+  int64_t d3;
 
   // dx, dy: domain-space edge vectors AB, BC, CA in position_fx; values q8_8; gradients q19_12
   // (gx, gy per vertex).
@@ -76,31 +116,158 @@ struct ZienkiewiczChannel {
     p01 = -3 * k003 + k012;
     p00 = k003;
   }
-  // q24_8 value at barycentric weights a, b (q17_15).
-  int32_t eval(int64_t a, int64_t b) const {
+  // q24_8 value at barycentric weights a, b (q17_15), unclamped (below 2^45 in magnitude).
+  int64_t eval_wide(int64_t a, int64_t b) const {
     constexpr int s = q17_15::frac_bits;
     const int64_t pb = p00 + ((b * (p01 + ((b * (p02 + ((b * p03) >> s))) >> s))) >> s);
     const int64_t pa = p10 + ((b * (p11 + ((b * p12) >> s))) >> s) +
                        ((a * (p20 + ((b * p21) >> s) + ((a * p30) >> s))) >> s);
-    const int64_t f = pb + ((a * pa) >> s);
+    return pb + ((a * pa) >> s);
+  }
+  // The same clamped to int32.
+  int32_t eval(int64_t a, int64_t b) const {
+    const int64_t f = eval_wide(a, b);
     return int32_t(f > INT32_MAX ? INT32_MAX : (f < INT32_MIN ? INT32_MIN : f));
+  }
+
+  // Whether the coefficients are within the forward-difference bit budget.
+  bool fits_rows() const {
+    const int64_t p[10] = {p00, p01, p02, p03, p10, p11, p12, p20, p21, p30};
+    for (int64_t c : p)
+      if (c >= max_fd_coefficient || c <= -max_fd_coefficient) return false;
+    return true;
+  }
+
+  // Forward-difference polynomials for the steps da, db (q2_30) of a pixel along x; false (and
+  // nothing set) when the coefficients or the steps are outside the bit budget: |p| < 2^28 (q24_8)
+  // and |da|, |db| <= 2^30 (a row of n >= 2 covered pixels has weights in [0, 1] at both ends,
+  // so |da|, |db| <= 2^30 / (n - 1) + 1/2). Taylor terms along the row, in 2^-38 grey (p in
+  // 2^-8 times weights in 2^-30): c1 exact, c2 and c3 with floor(x w / 2^30) (below 2 and 4 units
+  // of error); then D1 = c1 + c2 + c3, D2 = 2 c2 + 6 c3, D3 = 6 c3 are rounded to 2^-32.
+  bool setup_rows(int32_t da_q30, int32_t db_q30) {
+    constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
+    if (!fits_rows() || da_q30 > one || da_q30 < -one || db_q30 > one || db_q30 < -one) return false;
+    constexpr int lift = value_frac_bits - q24_8::frac_bits;
+    constexpr int down = q24_8::frac_bits + q2_30::frac_bits - value_frac_bits;  // 2^-38 to 2^-32
+    static_assert(lift >= 0 && down >= 1, "values have more fraction bits than q24_8, fewer than 2^-38");
+    // Bounds at 2^-38 with |p| < 2^28, |da|, |db| <= 2^30: p da <= 2^58, so c1 terms <= 2^60,
+    // c2 terms <= 6 * 2^58, c3 <= 4 * 2^58, and the largest sum 2 c2 + 6 c3 < 2^62.9.
+    static_assert(max_fd_coefficient <= (int64_t(1) << 28) && q2_30::frac_bits == 30 && down == 6,
+                  "bit budget of setup_rows");
+    const int64_t A = da_q30, B = db_q30;
+    // c1 = P_a da + P_b db (quadratic in a, b).
+    const int64_t r00 = p10 * A + p01 * B, r10 = 2 * p20 * A + p11 * B, r01 = p11 * A + 2 * p02 * B;
+    const int64_t r20 = 3 * p30 * A + p21 * B, r11 = 2 * p21 * A + 2 * p12 * B, r02 = p12 * A + 3 * p03 * B;
+    // c2 = (P_aa da^2 + 2 P_ab da db + P_bb db^2) / 2 (linear in a, b).
+    const int64_t s00 = mul_q30(p20 * A + p11 * B, int32_t(A)) + mul_q30(p02 * B, int32_t(B));
+    const int64_t s10 = mul_q30(3 * p30 * A + 2 * p21 * B, int32_t(A)) + mul_q30(p12 * B, int32_t(B));
+    const int64_t s01 = mul_q30(p21 * A + 2 * p12 * B, int32_t(A)) + mul_q30(3 * p03 * B, int32_t(B));
+    // c3 = p30 da^3 + p21 da^2 db + p12 da db^2 + p03 db^3.
+    const int64_t c3 = mul_q30(mul_q30(p30 * A + p21 * B, int32_t(A)), int32_t(A)) +
+                       mul_q30(mul_q30(p12 * A + p03 * B, int32_t(B)), int32_t(B));
+    auto round_down = [](int64_t v) { return (v + (int64_t(1) << (down - 1))) >> down; };
+    constexpr int64_t to_value = int64_t(1) << lift;
+    f00 = p00 * to_value, f01 = p01 * to_value, f02 = p02 * to_value, f03 = p03 * to_value;
+    f10 = p10 * to_value, f11 = p11 * to_value, f12 = p12 * to_value;
+    f20 = p20 * to_value, f21 = p21 * to_value, f30 = p30 * to_value;
+    // P(a + m da, b + m db) = P + c1 m + c2 m^2 + c3 m^3.
+    g00 = round_down(r00 + s00 + c3), g10 = round_down(r10 + s10), g01 = round_down(r01 + s01);
+    g20 = round_down(r20), g11 = round_down(r11), g02 = round_down(r02);
+    h00 = round_down(2 * s00 + 6 * c3), h10 = round_down(2 * s10), h01 = round_down(2 * s01);
+    d3 = round_down(6 * c3);
+    return true;
+  }
+
+  // Value and differences at weights a, b (q2_30, within [0, 1] up to rounding), in 2^-32 grey
+  // levels; only the first `order` differences (0 to 3), the others stay 0 (they do not reach
+  // the first `order` steps). Horner's rule with floor(x w / 2^30): below 9, 5 and 2 units of
+  // 2^-32 of error for the value, D1 and D2 from the products (docs/FIXED_POINT.md adds the
+  // coefficients' rounding).
+  CubicSteps steps_at(int32_t a, int32_t b, int order) const {
+    CubicSteps s;
+    const int64_t pb = f00 + mul_q30(f01 + mul_q30(f02 + mul_q30(f03, b), b), b);
+    const int64_t pa = f10 + mul_q30(f11 + mul_q30(f12, b), b) + mul_q30(f20 + mul_q30(f21, b) + mul_q30(f30, a), a);
+    s.v = uint64_t(pb + mul_q30(pa, a));
+    if (order >= 1)
+      s.d1 = uint64_t(g00 + mul_q30(g01 + mul_q30(g02, b), b) + mul_q30(g10 + mul_q30(g11, b) + mul_q30(g20, a), a));
+    if (order >= 2) s.d2 = uint64_t(h00 + mul_q30(h10, a) + mul_q30(h01, b));
+    if (order >= 3) s.d3 = uint64_t(d3);
+    return s;
   }
 };
 
-// Barycentric weights a (vertex 0) and b (vertex 1) in q2_30 along a row, modulo 2^32.
-struct BarycentricStepper {
-  uint32_t dadx = 0, dbdx = 0;  // per triangle
+// Rows at least this long (the row's whole covered length, independent of tiling) of triangles
+// of at least this area (pixels) are forward-differenced; other rows are evaluated pixel by pixel
+// (ZienkiewiczChannel::eval): below these sizes the setup costs more than it saves.
+constexpr int32_t zienkiewicz_fd_min_length = 5;
+constexpr int32_t zienkiewicz_fd_min_area = 32;
+constexpr int64_t zienkiewicz_fd_min_area2 = int64_t(2 * zienkiewicz_fd_min_area) << (2 * config::subpixel_bits);
+// Forward differencing restarts (recomputes the differences from the weights) every this many
+// pixels counted from the row's first covered pixel.
+constexpr int32_t zienkiewicz_fd_restart = 64;
 
-  void setup(const Edge* e, const RoundingDivider& by_area2) {
+// One row by forward differencing: a, b are the weights (q2_30) at the row's first covered pixel
+// xs, da, db their steps; calls put(n, steps) for the pixels xs + n, n = n0..n1, where steps[c].v
+// is channel c's value in 2^-32 grey plus `bias`. A pixel's value depends only on the triangle,
+// the row and n (the chunk [n - n % R, ...] it lies in restarts from integers), never on n0.
+// The error bound of docs/FIXED_POINT.md at m = R - 1 steps after a restart, in thousandths of a
+// unit of 2^-32 grey: 9 + m 8.2 + C(m,2) 4.1 + C(m,3) 0.875 units must stay below 2^-16 grey.
+constexpr int64_t zienkiewicz_fd_bound_milli(int64_t m) {
+  return 9000 + m * 8200 + m * (m - 1) / 2 * 4100 + m * (m - 1) * (m - 2) / 6 * 875;
+}
+static_assert(zienkiewicz_fd_bound_milli(zienkiewicz_fd_restart - 1) <
+                  (int64_t(1000) << (ZienkiewiczChannel::value_frac_bits - 16)),
+              "forward differencing error must stay far below the final rounding");
+
+template <int Channels, typename Put>
+inline void zienkiewicz_row(const ZienkiewiczChannel* ch, uint32_t a, uint32_t b, uint32_t da, uint32_t db, int32_t n0,
+                            int32_t n1, uint64_t bias, Put&& put) {
+  constexpr int32_t R = zienkiewicz_fd_restart;
+  static_assert(R > 0 && (R & (R - 1)) == 0, "restart interval is a power of two");
+  int32_t n = n0;
+  while (n <= n1) {
+    const int32_t start = n & ~(R - 1);
+    const int32_t end = start + (R - 1) < n1 ? start + (R - 1) : n1;
+    const int order = end - start < 3 ? end - start : 3;
+    const int32_t ac = int32_t(a + da * uint32_t(start)), bc = int32_t(b + db * uint32_t(start));
+    CubicSteps s[Channels];
+    for (int c = 0; c < Channels; ++c) {
+      s[c] = ch[c].steps_at(ac, bc, order);
+      s[c].v += bias;
+      if (n > start) s[c].skip(uint32_t(n - start));
+    }
+    for (; n <= end; ++n) {
+      put(n, s);
+      for (int c = 0; c < Channels; ++c) s[c].step();
+    }
+  }
+}
+
+// Barycentric weights a (vertex 0) and b (vertex 1) in q2_30, modulo 2^32, at a pixel (x, y):
+// a = a_ref + dadx (x - xr) + dady (y - yr) with the weights at a reference pixel (xr, yr) and
+// the steps each rounded once per triangle (no division per row). The rounding error at a pixel
+// is below (1 + |x - xr| + |y - yr|) / 2 units of 2^-30; the exact weights of a covered pixel are
+// in [0, 1], so the int32 reading of the modular sum is exact even when a step does not fit.
+struct BarycentricStepper {
+  uint32_t dadx = 0, dbdx = 0, dady = 0, dbdy = 0;
+  uint32_t a_ref = 0, b_ref = 0;
+  int32_t xr = 0, yr = 0;
+
+  void setup(const Edge* e, const RoundingDivider& by_area2, int32_t x_ref, int32_t y_ref) {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
+    xr = x_ref;
+    yr = y_ref;
     dadx = uint32_t(by_area2(e[1].a * one));
     dbdx = uint32_t(by_area2(e[2].a * one));
+    dady = uint32_t(by_area2(e[1].b * one));
+    dbdy = uint32_t(by_area2(e[2].b * one));
+    a_ref = uint32_t(by_area2(e[1].exact_at(xr, yr) * one));
+    b_ref = uint32_t(by_area2(e[2].exact_at(xr, yr) * one));
   }
-  // Weights at pixel (x, y), the first covered pixel of its row (so independent of tiling).
-  static void at(const Edge* e, const RoundingDivider& by_area2, int32_t x, int32_t y, uint32_t* a, uint32_t* b) {
-    constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
-    *a = uint32_t(by_area2(e[1].exact_at(x, y) * one));
-    *b = uint32_t(by_area2(e[2].exact_at(x, y) * one));
+  // Weights at pixel (x, y) (the first covered pixel of a row: independent of tiling).
+  void at(int32_t x, int32_t y, uint32_t* a, uint32_t* b) const {
+    *a = a_ref + dadx * uint32_t(x - xr) + dady * uint32_t(y - yr);
+    *b = b_ref + dbdx * uint32_t(x - xr) + dbdy * uint32_t(y - yr);
   }
 };
 

@@ -1,0 +1,242 @@
+// Forward differencing of the zienkiewicz cubic along rows (detail/interpolate.h): the helpers
+// against 128-bit arithmetic, every forward-differenced value against the exact value of the same
+// cubic (within the bound of docs/FIXED_POINT.md), and values independent of where a span starts.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "tristream/detail/arith.h"
+#include "tristream/detail/edge.h"
+#include "tristream/detail/interpolate.h"
+
+using namespace tristream::core;
+using namespace tristream::core::detail;
+
+namespace {
+
+__extension__ typedef __int128 i128;
+
+constexpr int vf = ZienkiewiczChannel::value_frac_bits;
+
+// Exact P(a, b) * 2^98 (p in 2^-8, a and b in 2^-30 grey units): every term below 2^122.
+i128 exact_p(const ZienkiewiczChannel& z, int32_t a, int32_t b) {
+  const int64_t p[4][4] = {
+      {z.p00, z.p01, z.p02, z.p03}, {z.p10, z.p11, z.p12, 0}, {z.p20, z.p21, 0, 0}, {z.p30, 0, 0, 0}};
+  i128 sum = 0;
+  for (int i = 0; i <= 3; ++i)
+    for (int j = 0; i + j <= 3; ++j) {
+      i128 t = p[i][j];
+      for (int k = 0; k < i; ++k) t *= a;
+      for (int k = 0; k < j; ++k) t *= b;
+      for (int k = 0; k < 3 - i - j; ++k) t *= i128(1) << 30;
+      sum += t;
+    }
+  return sum;
+}
+
+// The documented bound, in units of 2^-32 grey, at m steps after a restart.
+double fd_bound(int32_t m) {
+  const double c2 = m * (m - 1.0) / 2, c3 = c2 * (m - 2.0) / 3;
+  return 9.01 + 8.2 * m + 4.1 * c2 + 0.876 * c3;
+}
+
+struct RowCase {
+  ZienkiewiczChannel ch[3];
+  uint32_t a = 0, b = 0, da = 0, db = 0;  // q2_30 at the row's first covered pixel, and steps
+  int32_t length = 0;                      // covered pixels
+};
+
+// A random triangle of the given size (pixels) with random values and gradients; its longest
+// covered row. False when no row has two pixels.
+bool random_row(std::mt19937& rng, int32_t size, int32_t max_gradient, RowCase* rc) {
+  constexpr int S = config::subpixel_bits;
+  std::uniform_int_distribution<int32_t> pos(0, size << S);
+  int32_t x[3], y[3];
+  for (int k = 0; k < 3; ++k) x[k] = pos(rng), y[k] = pos(rng);
+  int64_t area2 = (int64_t(x[1]) - x[0]) * (int64_t(y[2]) - y[0]) - (int64_t(y[1]) - y[0]) * (int64_t(x[2]) - x[0]);
+  if (area2 == 0) return false;
+  if (area2 < 0) std::swap(x[1], x[2]), std::swap(y[1], y[2]), area2 = -area2;
+  Edge e[3];
+  for (int k = 0; k < 3; ++k) e[k] = make_edge(x[k], y[k], x[(k + 1) % 3], y[(k + 1) % 3], true);
+  const RoundingDivider by_area2(area2);
+  BarycentricStepper steps;
+  steps.setup(e, by_area2, x[0] >> S, y[0] >> S);
+  int32_t best_y = 0, best_xs = 0, best_len = 0;
+  for (int32_t row = 0; row <= size; ++row) {
+    int32_t xs = -1, len = 0;
+    for (int32_t px = 0; px <= size; ++px) {
+      bool in = true;
+      for (int k = 0; k < 3; ++k) in = in && e[k].exact_at(px, row) >= 0;
+      if (in && xs < 0) xs = px;
+      if (in) len = px - xs + 1;
+    }
+    if (len > best_len) best_len = len, best_xs = xs, best_y = row;
+  }
+  if (best_len < 2) return false;
+  int32_t dx[3], dy[3], grads[6];
+  for (int k = 0; k < 3; ++k) dx[k] = x[(k + 1) % 3] - x[k], dy[k] = y[(k + 1) % 3] - y[k];
+  std::uniform_int_distribution<int32_t> value(0, 255 * 256), gradient(-max_gradient << 12, max_gradient << 12);
+  for (auto& ch : rc->ch) {
+    const int32_t v3[3] = {value(rng), value(rng), value(rng)};
+    for (int32_t& g : grads) g = gradient(rng);
+    ch.setup(dx, dy, v3, grads);
+    if (!ch.setup_rows(int32_t(steps.dadx), int32_t(steps.dbdx))) return false;
+  }
+  steps.at(best_xs, best_y, &rc->a, &rc->b);
+  rc->da = steps.dadx;
+  rc->db = steps.dbdx;
+  rc->length = best_len;
+  return true;
+}
+
+// Values of pixels n0..n1 of the row (2^-32 grey, no bias), channel c.
+std::vector<int64_t> row_values(const RowCase& rc, int c, int32_t n0, int32_t n1) {
+  std::vector<int64_t> out;
+  zienkiewicz_row<3>(rc.ch, rc.a, rc.b, rc.da, rc.db, n0, n1, 0, [&](int32_t n, const CubicSteps* s) {
+    REQUIRE(n == n0 + int32_t(out.size()));
+    out.push_back(int64_t(s[c].v));
+  });
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("mul_q30 and Wide equal 128-bit arithmetic") {
+  std::mt19937_64 rng(3);
+  const int64_t xs[] = {0, 1, -1, (int64_t(1) << 61) - 1, -(int64_t(1) << 61) + 1, 0x123456789abcdefll >> 4};
+  const int32_t ys[] = {0, 1, -1, INT32_MAX, INT32_MIN, 1 << 30, -(1 << 30)};
+  for (int64_t x : xs)
+    for (int32_t y : ys) {
+      CHECK(mul_q30_portable(x, y) == int64_t((i128(x) * y) >> 30));
+      CHECK(mul_q30(x, y) == mul_q30_portable(x, y));
+    }
+  for (int i = 0; i < 200000; ++i) {
+    const int64_t x = int64_t(rng()) >> (3 + rng() % 60);
+    const int32_t y = int32_t(uint32_t(rng())) >> (rng() % 31);
+    REQUIRE(mul_q30_portable(x, y) == int64_t((i128(x) * y) >> 30));
+    REQUIRE(mul_q30(x, y) == mul_q30_portable(x, y));
+    const int64_t a = int64_t(rng()) >> (rng() % 63), b = int64_t(rng()) >> (rng() % 63);
+    const int64_t c = int64_t(rng()) >> (2 + rng() % 61), d = int64_t(rng()) >> (2 + rng() % 61);
+    const Wide w = Wide::product(a, b) + Wide::product(c, d);
+    const i128 exact = i128(a) * b + i128(c) * d;
+    REQUIRE(w.lo == uint64_t(exact));
+    REQUIRE(w.hi == uint64_t(exact >> 64));
+    const int s = 64 + int(rng() % 62);
+    const i128 rounded = (exact + (i128(1) << (s - 1))) >> s;
+    REQUIRE(w.round_shift(s) == int64_t(rounded));
+  }
+}
+
+TEST_CASE("CubicSteps::skip equals repeated steps") {
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 2000; ++i) {
+    CubicSteps s{rng(), rng(), rng(), rng()};
+    const uint32_t k = uint32_t(rng() % 200);
+    CubicSteps t = s;
+    for (uint32_t j = 0; j < k; ++j) t.step();
+    s.skip(k);
+    REQUIRE(s.v == t.v);
+    REQUIRE(s.d1 == t.d1);
+    REQUIRE(s.d2 == t.d2);
+    REQUIRE(s.d3 == t.d3);
+  }
+}
+
+TEST_CASE("forward-differenced rows equal the exact cubic within the documented bound") {
+  std::mt19937 rng(17);
+  double worst = 0;  // largest error over the bound
+  double worst_units = 0;
+  int rows = 0;
+  for (int32_t size : {40, 300, 1200, 2047}) {
+    for (int32_t max_gradient : {8, 60, 400}) {
+      for (int t = 0; t < (size > 1000 ? 6 : 30); ++t) {
+        RowCase rc;
+        if (!random_row(rng, size, max_gradient, &rc)) continue;
+        ++rows;
+        for (int c = 0; c < 3; ++c) {
+          const std::vector<int64_t> v = row_values(rc, c, 0, rc.length - 1);
+          for (int32_t n = 0; n < rc.length; ++n) {
+            const int32_t an = int32_t(rc.a + rc.da * uint32_t(n)), bn = int32_t(rc.b + rc.db * uint32_t(n));
+            const i128 diff = i128(v[n]) * (i128(1) << 66) - exact_p(rc.ch[c], an, bn);
+            const double units = double(diff) / 0x1p66;  // units of 2^-32 grey
+            const double ratio = std::abs(units) / fd_bound(n % zienkiewicz_fd_restart);
+            worst = std::max(worst, ratio);
+            worst_units = std::max(worst_units, std::abs(units));
+            REQUIRE(ratio <= 1.0);
+          }
+        }
+      }
+    }
+  }
+  INFO("rows " << rows << ", largest error " << worst_units << " units of 2^-32, " << worst << " of the bound");
+  CHECK(rows > 100);
+  WARN("largest forward-difference error " << worst_units << " x 2^-32 grey (" << worst << " of the bound)");
+}
+
+TEST_CASE("coefficients and steps at the bit budget: no overflow, still within the bound") {
+  std::mt19937 rng(23);
+  const int64_t big = ZienkiewiczChannel::max_fd_coefficient - 1;
+  for (int t = 0; t < 200; ++t) {
+    RowCase rc;
+    for (auto& ch : rc.ch) {
+      int64_t* p[10] = {&ch.p00, &ch.p01, &ch.p02, &ch.p03, &ch.p10, &ch.p11, &ch.p12, &ch.p20, &ch.p21, &ch.p30};
+      for (int64_t* q : p) *q = (rng() % 2 ? big : -big) >> (rng() % 4 == 0 ? 10 : 0);
+      REQUIRE(ch.fits_rows());
+    }
+    ZienkiewiczChannel too_big = rc.ch[0];
+    too_big.p21 = ZienkiewiczChannel::max_fd_coefficient;
+    CHECK_FALSE(too_big.setup_rows(0, 0));
+    // Steps at the budget's limit (a two-pixel row from vertex 0 to vertex 1) or those of a row
+    // of `length` pixels with weights from 1 to 0.
+    const bool extreme = t % 4 == 0;
+    const int32_t length = extreme ? 2 : 3 + int32_t(rng() % 300);
+    const int32_t step = extreme ? int32_t(1) << 30 : int32_t((1 << 30) / (length - 1));
+    for (auto& ch : rc.ch) {
+      REQUIRE(ch.setup_rows(-step, step));
+      ZienkiewiczChannel over = ch;
+      CHECK_FALSE(over.setup_rows(-step - (extreme ? 1 : 0x7fffffff - step), step));
+    }
+    rc.a = 1u << 30;
+    rc.b = 0;
+    rc.da = uint32_t(-step);
+    rc.db = uint32_t(step);
+    rc.length = length;
+    for (int c = 0; c < 3; ++c) {
+      const std::vector<int64_t> v = row_values(rc, c, 0, rc.length - 1);
+      for (int32_t n = 0; n < rc.length; ++n) {
+        const int32_t an = int32_t(rc.a + rc.da * uint32_t(n)), bn = int32_t(rc.b + rc.db * uint32_t(n));
+        const i128 diff = i128(v[n]) * (i128(1) << 66) - exact_p(rc.ch[c], an, bn);
+        REQUIRE(std::abs(double(diff) / 0x1p66) <= fd_bound(n % zienkiewicz_fd_restart));
+      }
+    }
+  }
+}
+
+TEST_CASE("a pixel's value does not depend on where its span starts") {
+  std::mt19937 rng(29);
+  int rows = 0;
+  for (int t = 0; t < 60; ++t) {
+    RowCase rc;
+    if (!random_row(rng, t % 2 ? 400 : 1500, 50, &rc)) continue;
+    ++rows;
+    for (int c = 0; c < 3; ++c) {
+      const std::vector<int64_t> full = row_values(rc, c, 0, rc.length - 1);
+      for (int k = 0; k < 40; ++k) {
+        const int32_t n0 = int32_t(rng() % uint32_t(rc.length));
+        const int32_t n1 = n0 + int32_t(rng() % uint32_t(rc.length - n0));
+        const std::vector<int64_t> part = row_values(rc, c, n0, n1);
+        for (int32_t n = n0; n <= n1; ++n) REQUIRE(part[n - n0] == full[n]);
+      }
+      // Tiles of every width from 1 to 70 pixels, in order along the row.
+      for (int32_t w = 1; w <= 70; ++w)
+        for (int32_t n0 = 0; n0 < rc.length; n0 += w) {
+          const int32_t n1 = std::min(rc.length - 1, n0 + w - 1);
+          const std::vector<int64_t> part = row_values(rc, c, n0, n1);
+          for (int32_t n = n0; n <= n1; ++n) REQUIRE(part[n - n0] == full[n]);
+        }
+    }
+  }
+  CHECK(rows > 20);
+}
