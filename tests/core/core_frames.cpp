@@ -2,7 +2,9 @@
 // renders the 512 x 512 benchmark scene (bench_support.h) repeatedly, for instruction counts
 // under callgrind (tests/core/callgrind_core.sh counts only inside tristream::core::render).
 // Also prints the fastest and the median frame's wall time (the fastest is the least disturbed
-// by other processes: a quick check on a busy machine; bench_core is the benchmark).
+// by other processes: a quick check on a busy machine; bench_core is the benchmark). With
+// TS_FRAME_TIMES set in the environment it first prints every frame's time in order (on this
+// virtual machine they come in fast and slow phases, about 1.5x apart, whatever else runs).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -34,6 +36,8 @@ int main(int argc, char** argv) {
     renderer.render(frame);
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }
+  if (std::getenv("TS_FRAME_TIMES"))
+    for (double m : ms) std::printf("%.3f\n", m);
   std::sort(ms.begin(), ms.end());
   std::printf("%d frames of %dx%d, RAM %zu bytes, ms per frame: fastest %.3f, median %.3f\n", frames, frame.width,
               frame.height, renderer.tile_buffer_bytes() + renderer.workspace_bytes(), ms.front(), ms[ms.size() / 2]);
