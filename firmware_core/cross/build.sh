@@ -9,14 +9,18 @@ build=${1:-$root/build-cross}
 cmake -S "$root/firmware_core/cross" -B "$build/firmware" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/arm-none-eabi.cmake" \
   -DTRISTREAM_CROSS=firmware -DCMAKE_BUILD_TYPE=MinSizeRel >/dev/null
 cmake --build "$build/firmware" -j2
-elf=$build/firmware/firmware_demo.elf
-echo "== firmware_core for Cortex-M4 (-Os), library and demo image:"
-arm-none-eabi-size -t "$build/firmware/ts_core/libts_core.a" | tail -1 | awk '{print "libts_core.a: text " $1 " data " $2 " bss " $3}'
-arm-none-eabi-size "$elf"
-forbidden=$(arm-none-eabi-nm "$elf" | awk '{print $NF}' |
-  grep -E '^_?(m|c|re)alloc(_r)?$|^_?free(_r)?$|^_Zn[wa]j|^_Zd[la]Pv' || true)
-if [ -n "$forbidden" ]; then
-  echo "error: the firmware image links an allocator: $forbidden" >&2
-  exit 1
-fi
+echo "== firmware_core for Cortex-M4 (-Os), library and demo image (the image includes the demo blob):"
+arm-none-eabi-size -t "$build/firmware/ts_core/libts_core.a" | tail -1 |
+  awk '{print "libts_core.a (all formats and methods): text " $1 " data " $2 " bss " $3}'
+arm-none-eabi-size -t "$build/firmware/libts_core_minimal.a" | tail -1 |
+  awk '{print "libts_core_minimal.a (TS_PIXEL_FORMATS=0x08 TS_METHODS=0x2: RGB565 BE, zienkiewicz): text " $1 " data " $2 " bss " $3}'
+for elf in "$build/firmware/firmware_demo.elf" "$build/firmware/firmware_demo_minimal.elf"; do
+  arm-none-eabi-size "$elf"
+  forbidden=$(arm-none-eabi-nm "$elf" | awk '{print $NF}' |
+    grep -E '^_?(m|c|re)alloc(_r)?$|^_?free(_r)?$|^_Zn[wa]j|^_Zd[la]Pv' || true)
+  if [ -n "$forbidden" ]; then
+    echo "error: $elf links an allocator: $forbidden" >&2
+    exit 1
+  fi
+done
 echo "no heap allocator linked"

@@ -27,6 +27,7 @@ const char* status_text(Status s) {
     case Status::unsorted: return "triangles not sorted by top row";
     case Status::bad_params: return "invalid render parameters";
     case Status::buffer_too_small: return "buffer too small";
+    case Status::not_compiled: return "pixel format or method not compiled into this core (config.h)";
   }
   return "unknown status";
 }

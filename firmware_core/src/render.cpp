@@ -52,6 +52,8 @@ Status resolve(const Blob& blob, const RenderParams& p, Resolved* r) {
   if (r->tile_w > r->view.width()) r->tile_w = r->view.width();
   if (r->tile_h > r->view.height()) r->tile_h = r->view.height();
   if (bytes_per_pixel(p.format) == 0) return Status::bad_params;
+  if (!(config::pixel_formats >> int(p.format) & 1) || !(config::methods >> int(blob.method) & 1))
+    return Status::not_compiled;
   r->format = p.format;
   r->map.identity = r->out_w == blob.width && r->out_h == blob.height;
   r->map.nx = r->out_w - 1;
@@ -696,12 +698,17 @@ template <int Channels, typename Writer>
 void draw_with(const Blob& blob, int layer_index, int first_channel, const ActiveSet& list, const Mapping& map,
                const Rect& rect, const Writer& writer, int step) {
   const BlobLayer* layer = &blob.layers[layer_index];
+  // Only the methods compiled in (resolve rejects the others before any tile is drawn).
   if (blob.method == Method::bilinear) {
-    BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
-    draw_layer(list, map, rect, s);
+    if constexpr (config::methods & 1) {
+      BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
+      draw_layer(list, map, rect, s);
+    }
   } else {
-    ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, {}, 0};
-    draw_layer(list, map, rect, s);
+    if constexpr (config::methods & 2) {
+      ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, {}, 0};
+      draw_layer(list, map, rect, s);
+    }
   }
 }
 
@@ -785,14 +792,24 @@ void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, Ac
 using TileRenderer = void (*)(const Blob&, const RenderParams&, const Mapping&, ActiveSet*, const Rect&, uint8_t*,
                               int32_t, int16_t*);
 
+template <PixelFormat F>
+constexpr TileRenderer compiled_renderer() {
+  if constexpr (config::pixel_formats >> int(F) & 1) {
+    return render_tile<F>;
+  } else {
+    return nullptr;
+  }
+}
+
+// The tile function of a format; null for a format not compiled in (resolve rejects those).
 TileRenderer tile_renderer(PixelFormat f) {
   switch (f) {
-    case PixelFormat::l8: return render_tile<PixelFormat::l8>;
-    case PixelFormat::rgb888: return render_tile<PixelFormat::rgb888>;
-    case PixelFormat::rgb565_le: return render_tile<PixelFormat::rgb565_le>;
-    case PixelFormat::rgb565_be: return render_tile<PixelFormat::rgb565_be>;
-    case PixelFormat::xrgb8888: return render_tile<PixelFormat::xrgb8888>;
-    case PixelFormat::coverage8: return render_tile<PixelFormat::coverage8>;
+    case PixelFormat::l8: return compiled_renderer<PixelFormat::l8>();
+    case PixelFormat::rgb888: return compiled_renderer<PixelFormat::rgb888>();
+    case PixelFormat::rgb565_le: return compiled_renderer<PixelFormat::rgb565_le>();
+    case PixelFormat::rgb565_be: return compiled_renderer<PixelFormat::rgb565_be>();
+    case PixelFormat::xrgb8888: return compiled_renderer<PixelFormat::xrgb8888>();
+    case PixelFormat::coverage8: return compiled_renderer<PixelFormat::coverage8>();
   }
   return nullptr;
 }

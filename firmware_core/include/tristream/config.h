@@ -32,6 +32,20 @@
 #define TS_CHECK_HEADER_ON_RENDER 1
 #endif
 
+// Pixel formats compiled into the core, one bit per PixelFormat value: bit 0 L8, 1 RGB888,
+// 2 RGB565 little-endian, 3 RGB565 big-endian, 4 XRGB8888, 5 coverage counts (tests). Firmware
+// that drives one display saves the flash of the other formats' code; asking for a format that
+// is not compiled in returns Status::not_compiled.
+#ifndef TS_PIXEL_FORMATS
+#define TS_PIXEL_FORMATS 0x3F
+#endif
+
+// Interpolation methods compiled in: bit 0 bilinear, bit 1 zienkiewicz. A blob of another
+// method gives Status::not_compiled when rendered.
+#ifndef TS_METHODS
+#define TS_METHODS 0x3
+#endif
+
 // 1: find the covered columns of small triangles with SSE2 (x86-64 hosts), four columns at a time;
 // 0: column by column (the only choice on other targets). The pixels are the same either way.
 #ifndef TS_USE_SSE2
@@ -49,9 +63,13 @@ inline constexpr int subpixel_bits = TS_SUBPIXEL_BITS;
 inline constexpr int max_dimension = TS_MAX_DIMENSION;
 inline constexpr int gradient_frac_bits = TS_GRADIENT_FRAC_BITS;
 inline constexpr int32_t max_gradient = TS_MAX_GRADIENT;
+inline constexpr uint32_t pixel_formats = TS_PIXEL_FORMATS;
+inline constexpr uint32_t methods = TS_METHODS;
 
 static_assert(subpixel_bits >= 0 && subpixel_bits <= 8, "sub-pixel bits out of the supported range");
 static_assert(max_dimension >= 2 && max_dimension <= 4096, "max dimension out of the supported range");
+static_assert(pixel_formats != 0 && pixel_formats <= 0x3F, "TS_PIXEL_FORMATS: bits 0..5, at least one");
+static_assert(methods != 0 && methods <= 0x3, "TS_METHODS: bits 0..1, at least one");
 static_assert(gradient_frac_bits >= 0 && gradient_frac_bits <= 16, "gradient fraction bits out of range");
 static_assert(int64_t(max_gradient) << gradient_frac_bits < (int64_t(1) << 31), "gradients must fit int32");
 

@@ -21,6 +21,7 @@ enum class [[nodiscard]] Status : uint8_t {
   unsorted,             // triangles not sorted by their top row
   bad_params,           // render parameters invalid (size, viewport, tile, format)
   buffer_too_small,     // tile buffer or workspace smaller than required
+  not_compiled,         // pixel format or method left out of this build (TS_PIXEL_FORMATS, TS_METHODS)
 };
 
 // A short English description, for logs.
