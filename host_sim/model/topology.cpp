@@ -1,5 +1,7 @@
 #include "model/topology.h"
 
+#include <vector>
+
 namespace tristream {
 
 Topology build_topology(const Mesh& mesh) {
@@ -7,35 +9,44 @@ Topology build_topology(const Mesh& mesh) {
   const std::size_t nt = mesh.triangles.size();
   const std::size_t nv = mesh.points.size();
 
-  // Vertex fans by counting sort.
+  // Vertex fans by counting sort; beside each fan entry, what matching needs of it: the
+  // triangle's vertices after and before the fan's vertex, and the edge's index. Matching an
+  // edge then reads only the fan's own packed entries, not each fan triangle's vertices.
   topo.vertex_start.assign(nv + 1, 0);
   for (const Triangle& tri : mesh.triangles)
-    for (std::uint32_t v : tri.v) ++topo.vertex_start[v + 1];
+    for (const std::uint32_t v : tri.v) ++topo.vertex_start[v + 1];
   for (std::size_t v = 0; v < nv; ++v) topo.vertex_start[v + 1] += topo.vertex_start[v];
   topo.vertex_triangles.resize(topo.vertex_start[nv]);
-  std::vector<std::uint32_t> fill(topo.vertex_start.begin(), topo.vertex_start.end() - 1);
-  for (std::uint32_t t = 0; t < nt; ++t)
-    for (std::uint32_t v : mesh.triangles[t].v) topo.vertex_triangles[fill[v]++] = t;
-
-  // The neighbour across edge (a, b) of t is the other triangle of a's fan that has edge (a, b).
-  topo.neighbour.assign(3 * nt, no_neighbour);
-  for (std::uint32_t t = 0; t < nt; ++t)
-    for (int e = 0; e < 3; ++e) {
-      if (topo.neighbour[3 * t + e] != no_neighbour) continue;
-      const std::uint32_t a = mesh.triangles[t].v[e], b = mesh.triangles[t].v[(e + 1) % 3];
-      for (std::uint32_t k = topo.vertex_start[a]; k < topo.vertex_start[a + 1]; ++k) {
-        const std::uint32_t u = topo.vertex_triangles[k];
-        if (u == t) continue;
-        const auto& uv = mesh.triangles[u].v;
-        for (int f = 0; f < 3; ++f) {
-          const std::uint32_t p = uv[f], q = uv[(f + 1) % 3];
-          if ((p == b && q == a) || (p == a && q == b)) {
-            topo.neighbour[3 * t + e] = u;
-            topo.neighbour[3 * u + f] = t;
-          }
-        }
+  struct FanEntry {
+    std::uint32_t next, prev, edge;
+  };
+  std::vector<FanEntry> fan(topo.vertex_start[nv]);
+  {
+    std::vector<std::uint32_t> fill(topo.vertex_start.begin(), topo.vertex_start.end() - 1);
+    for (std::uint32_t t = 0; t < nt; ++t) {
+      const auto& v = mesh.triangles[t].v;
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const std::uint32_t k = fill[v[e]]++;
+        topo.vertex_triangles[k] = t;
+        fan[k] = {v[e == 2 ? 0 : e + 1], v[e == 0 ? 2 : e - 1], e};
       }
     }
+  }
+
+  // Edge e = (a, b) of t is found in a's fan: the other entry whose triangle has the edge
+  // {a, b}, that is, whose vertex after or before a is b.
+  topo.neighbour.assign(3 * nt, no_neighbour);
+  for (std::size_t a = 0; a < nv; ++a) {
+    const std::uint32_t b0 = topo.vertex_start[a], b1 = topo.vertex_start[a + 1];
+    for (std::uint32_t k = b0; k < b1; ++k) {
+      const std::uint32_t b = fan[k].next;
+      for (std::uint32_t m = b0; m < b1; ++m)
+        if (m != k && (fan[m].prev == b || fan[m].next == b)) {
+          topo.neighbour[3 * std::size_t(topo.vertex_triangles[k]) + fan[k].edge] = topo.vertex_triangles[m];
+          break;
+        }
+    }
+  }
   return topo;
 }
 

@@ -8,7 +8,6 @@
 #include <random>
 #include <vector>
 
-#include "reference/methods/fan_topology.h"
 #include "reference/methods/natural.h"
 #include "reference/render.h"
 #include "../support/random_mesh.h"
@@ -279,29 +278,4 @@ TEST_CASE("natural: the row sweep gives every pixel the coordinates of a per-poi
     });
     CHECK(std::count(visits.begin(), visits.end(), 1) == w * h);
   }
-}
-
-TEST_CASE("natural: build_fan_topology equals build_topology") {
-  auto same = [](const Mesh& mesh) {
-    const Topology a = build_topology(mesh), b = build_fan_topology(mesh);
-    CHECK(a.vertex_start == b.vertex_start);
-    CHECK(a.vertex_triangles == b.vertex_triangles);
-    CHECK(a.neighbour == b.neighbour);
-  };
-  for (std::uint32_t seed = 1; seed <= 4; ++seed) {
-    same(random_lattice_mesh(60, 45, 300, seed, 0, 1));
-    same(random_lattice_mesh(60, 45, 300, seed, 200, 1));  // not Delaunay
-  }
-  // Holes and boundary edges: every third triangle removed; one triangle with the other
-  // winding (build_topology matches edges in either direction); an unused vertex.
-  Mesh mesh = random_lattice_mesh(40, 30, 150, 9, 0, 1);
-  std::vector<Triangle> kept;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (t % 3 != 1) kept.push_back(mesh.triangles[t]);
-  mesh.triangles = kept;
-  std::swap(mesh.triangles[5].v[0], mesh.triangles[5].v[1]);
-  mesh.points.push_back({100, 100});
-  mesh.values.push_back(0);
-  same(mesh);
-  same(Mesh{});
 }

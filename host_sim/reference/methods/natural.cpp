@@ -6,7 +6,7 @@
 
 #include "geometry/delaunay.h"
 #include "geometry/predicates.h"
-#include "reference/methods/fan_topology.h"
+#include "model/topology.h"
 
 namespace tristream {
 namespace {
@@ -41,7 +41,7 @@ constexpr double circle_filter = 32 * std::numeric_limits<double>::epsilon();
 SibsonCoordinates::SibsonCoordinates(std::span<const Point> points) {
   mesh_.points.assign(points.begin(), points.end());
   mesh_.triangles = delaunay_triangulation(points);
-  topo_ = build_fan_topology(mesh_);
+  topo_ = build_topology(mesh_);
   prepare();
 }
 
@@ -635,7 +635,7 @@ bool covers_rectangle(const Mesh& mesh, double xmax, double ymax) {
 void render_natural(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
   const PixelMapping map(domain_width, domain_height, out.width, out.height);
   const double xmax = domain_width - 1, ymax = domain_height - 1;
-  const Topology topo = build_fan_topology(mesh);
+  const Topology topo = build_topology(mesh);
   const bool full = covers_rectangle(mesh, xmax, ymax);
   // A mesh that covers the rectangle (its hull) and is locally Delaunay is a Delaunay
   // triangulation of its vertices, and is used as is; otherwise one is built.

@@ -8,9 +8,9 @@
 
 #include "geometry/delaunay.h"
 #include "geometry/predicates.h"
+#include "model/topology.h"
 #include "reference/coverage.h"
 #include "reference/gradients.h"
-#include "reference/methods/fan_topology.h"
 #include "reference/methods/natural.h"
 #include "reference/methods/zienkiewicz.h"
 
@@ -158,7 +158,7 @@ VoronoiDiagram::VoronoiDiagram(std::span<const Point> points) : sites_(points.si
   mesh_.points.push_back({cx - s, cy + s});
   mesh_.points.push_back({cx + s, cy + s});
   mesh_.triangles = delaunay_triangulation(mesh_.points);
-  topo_ = build_fan_topology(mesh_);
+  topo_ = build_topology(mesh_);
 
   std::vector<Point> centre(mesh_.triangles.size());
   for (std::size_t t = 0; t < centre.size(); ++t) {
@@ -365,7 +365,7 @@ void meyer_coordinates(std::span<const Point> polygon, const Point& p, std::vect
 
 void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
   const PixelMapping map(domain_width, domain_height, out.width, out.height);
-  const Topology topo = build_fan_topology(mesh);
+  const Topology topo = build_topology(mesh);
   const double xmax = domain_width - 1, ymax = domain_height - 1;
   // The domain's pixels: all of them when the mesh covers the rectangle, otherwise those the
   // mesh's coverage rule assigns (with their triangle, for the bilinear pre-fill).
