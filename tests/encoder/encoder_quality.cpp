@@ -30,6 +30,16 @@ using namespace tristream;
 
 namespace {
 
+// Reads `path` into `img`; false, with a SKIPPED line on stderr, when the image is absent.
+bool read_if_present(const std::string& path, Image& img) {
+  if (!std::filesystem::exists(path)) {
+    std::fprintf(stderr, "encoder_quality: SKIPPED %s (absent)\n", path.c_str());
+    return false;
+  }
+  img = read_image(path);
+  return true;
+}
+
 struct Row {
   std::string label;
   Triangulation tri;
@@ -131,11 +141,8 @@ int sweep(std::vector<std::string> args) {
   std::vector<std::vector<std::vector<double>>> gains(chosen.size(), std::vector<std::vector<double>>(percents.size()));
   std::vector<double> seconds(chosen.size(), 0);
   for (const std::string& path : paths) {
-    if (!std::filesystem::exists(path)) {
-      std::fprintf(stderr, "encoder_quality: SKIPPED %s (absent)\n", path.c_str());
-      continue;
-    }
-    const Image img = read_image(path);
+    Image img;
+    if (!read_if_present(path, img)) continue;
     const std::string name = std::filesystem::path(path).filename().string();
     const std::size_t pixels = std::size_t(img.width) * img.height;
     for (std::size_t k = 0; k < percents.size(); ++k) {
@@ -187,11 +194,8 @@ int main(int argc, char** argv) {
   std::printf("| image | %% pixels | vertices | sampling | bilinear PSNR | bilinear SSIM | zienkiewicz PSNR | "
               "zienkiewicz SSIM | encode s |\n|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& path : paths) {
-    if (!std::filesystem::exists(path)) {
-      std::fprintf(stderr, "encoder_quality: SKIPPED %s (absent)\n", path.c_str());
-      continue;
-    }
-    const Image img = read_image(path);
+    Image img;
+    if (!read_if_present(path, img)) continue;
     const std::string name = std::filesystem::path(path).filename().string();
     const std::size_t pixels = std::size_t(img.width) * img.height;
     for (double percent : {0.5, 1.0, 2.0, 5.0}) {

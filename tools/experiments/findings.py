@@ -98,33 +98,12 @@ def grey_findings(grey_rows):
                                 f"cases.",
                         "verdict": verdict(worst / total)})
     # Ranking by mean rank over cases.
-    present = sorted({r["method"] for r in rows if not r["variant"]})
-    thesis_methods = [m for m in THESIS_RANKING if m in present]
     for metric, name in (("psnr", "PSNR"), ("ssim", "SSIM")):
-        ranks = mean_ranks(rows, metric, thesis_methods)
-        if len(ranks) < 2:
-            continue
-        ours = sorted(ranks, key=ranks.get)
-        expected = [m for m in THESIS_RANKING if m in ranks]
-        pairs = agree = 0
-        disagreements = []
-        for i in range(len(expected)):
-            for j in range(i + 1, len(expected)):
-                pairs += 1
-                a, b = expected[i], expected[j]
-                if ranks[a] <= ranks[b]:
-                    agree += 1
-                else:
-                    disagreements.append(f"{b} ahead of {a}")
-        missing = [m for m in THESIS_RANKING if m not in ranks]
-        text = (f"Mean rank by {name} over the greyscale cases: "
-                + ", ".join(f"{m} {ranks[m]:.2f}" for m in ours)
-                + f". {agree} of {pairs} pairs in the thesis's order"
-                + (f"; reversed: {', '.join(disagreements)}" if disagreements else "")
-                + (f". Not built, so not ranked: {', '.join(missing)}" if missing else "") + ".")
-        out.append({"topic": f"Ranking of the methods ({name})",
-                    "thesis": "Zienkiewicz >= bilinear > natural neighbour > Bezier > Coons > Voronoi.",
-                    "here": text, "verdict": verdict(agree / pairs if pairs else None)})
+        f = ranking_finding(rows, metric, name, "greyscale cases",
+                            "Zienkiewicz >= bilinear > natural neighbour > Bezier > Coons > Voronoi.",
+                            topic=f"Ranking of the methods ({name})")
+        if f:
+            out.append(f)
     # 30 dB thresholds.
     for nominal, claim in ((5000, "PSNR reaches 30 dB at about 5,000 vertices (Fruits, figure 6.11)"),
                            (10000, "with 10,000 vertices PSNR usually goes over 30 dB")):
@@ -201,7 +180,7 @@ def grey_findings(grey_rows):
     return out
 
 
-def ranking_finding(rows, metric, name, scope, thesis_text):
+def ranking_finding(rows, metric, name, scope, thesis_text, topic=None):
     present = sorted({r["method"] for r in rows if not r["variant"]})
     ranks = mean_ranks(rows, metric, [m for m in THESIS_RANKING if m in present])
     if len(ranks) < 2:
@@ -222,7 +201,8 @@ def ranking_finding(rows, metric, name, scope, thesis_text):
             + f". {agree} of {pairs} pairs in the thesis's order"
             + (f"; reversed: {', '.join(reversed_pairs)}" if reversed_pairs else "")
             + (f". Not built, so not ranked: {', '.join(missing)}" if missing else "") + ".")
-    return {"topic": f"Ranking of the methods, {scope.split(' (')[0]} ({name})", "thesis": thesis_text,
+    topic = topic or f"Ranking of the methods, {scope.split(' (')[0]} ({name})"
+    return {"topic": topic, "thesis": thesis_text,
             "here": text, "verdict": verdict(agree / pairs if pairs else None)}
 
 
