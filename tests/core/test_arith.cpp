@@ -13,6 +13,12 @@ namespace {
 
 __extension__ typedef unsigned __int128 u128;
 
+// The references: plain division.
+std::int64_t floor_div64(std::int64_t n, std::int64_t d) {
+  const std::int64_t q = n / d;
+  return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+std::int64_t round_div(std::int64_t n, std::int64_t d) { return floor_div64(2 * n + d, 2 * d); }
 std::int64_t reference_floor(std::int64_t n, std::int64_t d) { return floor_div64(n, d); }
 
 }  // namespace

@@ -4,12 +4,6 @@
 
 namespace tristream::core::detail {
 
-// floor(n / d) for d > 0, always in 64 bits (for dividends that rarely fit 32 bits).
-inline int64_t floor_div64(int64_t n, int64_t d) {
-  int64_t q = n / d;
-  return (n % d != 0 && n < 0) ? q - 1 : q;
-}
-
 // floor(n / d) for d > 0.
 inline int64_t floor_div(int64_t n, int64_t d) {
   if (n == int64_t(int32_t(n)) && d == int64_t(int32_t(d))) {
@@ -21,10 +15,6 @@ inline int64_t floor_div(int64_t n, int64_t d) {
   int64_t q = n / d;
   return (n % d != 0 && n < 0) ? q - 1 : q;
 }
-
-// n / d rounded to nearest (halves up) for d > 0; |n| < 2^62.
-// Its dividends (gradients and weights scaled by 2^8 or 2^30) hardly ever fit 32 bits.
-inline int64_t round_div(int64_t n, int64_t d) { return floor_div64(2 * n + d, 2 * d); }
 
 // High 64 bits of the 128-bit product a * b, from four 32 x 32 -> 64 products (targets without
 // a 128-bit type, such as Cortex-M; the result is the same everywhere).
@@ -47,8 +37,8 @@ inline uint64_t mulhi_u64(uint64_t a, uint64_t b) {
 // Exact division by one divisor d (0 < d < 2^62) used several times: the reciprocal
 // m = floor((2^64 - 1) / d) is one division, then every quotient is a high multiply and at most
 // one correction: 2^64 - m d <= d, so n / d - n m / 2^64 <= n / 2^64 < 1 and floor(n m / 2^64)
-// is floor(n / d) or one less, for any n < 2^64. Same results as floor_div64 and round_div, bit
-// for bit (tested).
+// is floor(n / d) or one less, for any n < 2^64. Same quotients as a division, bit for bit
+// (tested against plain division).
 class Divider {
  public:
   explicit Divider(int64_t d) : d_(uint64_t(d)), m_(~uint64_t(0) / uint64_t(d)) {}
@@ -71,7 +61,7 @@ class Divider {
   uint64_t m_;
 };
 
-// round_div(n, d) for many n and one d: floor((2n + d) / (2d)).
+// n / d rounded to nearest (halves up), for many n and one d: floor((2n + d) / (2d)).
 class RoundingDivider {
  public:
   explicit RoundingDivider(int64_t d) : half_(d), div_(2 * d) {}
