@@ -54,35 +54,18 @@ BezierPatch::BezierPatch(const PatchControl& control) {
   second_derivative_ = std::max({second(p200, p101, p002), second(p020, p011, p002), second(p200, p110, p020)});
 }
 
-bool BezierPatch::solve(double x, double y, double& a, double& b) const {
-  const XY& kaa = pos_[3];
-  const XY& kab = pos_[4];
-  const XY& kbb = pos_[5];
-  double px, py, xa, xb, ya, yb;
-  position(a, b, px, py, xa, xb, ya, yb);
-  XY r{x - px, y - py};
-  if (std::fabs(r[0]) + std::fabs(r[1]) < detail::kExactResidual) return true;  // as CoonsPatch::solve
-  XY ja{xa, ya}, jb{xb, yb};  // columns of the Jacobian
-  double ca = a, cb = b;
-  for (int iteration = 0; iteration < detail::kNewtonIterations; ++iteration) {
-    const double det = ja[0] * jb[1] - jb[0] * ja[1];
-    if (!(std::fabs(det) > 1e-300)) return false;
-    const double da = (jb[1] * r[0] - jb[0] * r[1]) / det;
-    const double db = (ja[0] * r[1] - ja[1] * r[0]) / det;
-    ca += da, cb += db;
-    if (!(std::fabs(ca - a) + std::fabs(cb - b) < 0.25)) return false;
-    if (std::fabs(da) + std::fabs(db) < detail::kNewtonStep) {
-      a = ca, b = cb;
-      return true;
-    }
-    r = -(kaa * (da * da) + kab * (da * db) + kbb * (db * db));
-    ja += 2 * da * kaa + db * kab;
-    jb += da * kab + 2 * db * kbb;
-  }
-  return false;
+bool BezierPatch::unfolded() const {
+  // The determinant is quadratic: Bernstein coefficients from the corners and edge middles.
+  const double d1 = detail::jacobian_determinant(*this, 1, 0), d2 = detail::jacobian_determinant(*this, 0, 1);
+  const double d3 = detail::jacobian_determinant(*this, 0, 0);
+  const double b[6] = {d1, d2, d3, 2 * detail::jacobian_determinant(*this, 0.5, 0.5) - (d1 + d2) / 2,
+                       2 * detail::jacobian_determinant(*this, 0, 0.5) - (d2 + d3) / 2,
+                       2 * detail::jacobian_determinant(*this, 0.5, 0) - (d1 + d3) / 2};
+  constexpr bool corner[6] = {true, true, true, false, false, false};
+  return detail::one_sign(b, 6, corner);
 }
 
-int BezierPatch::subdivisions() const { return detail::subdivisions_for(second_derivative_, second_derivative_); }
+int BezierPatch::subdivisions() const { return detail::subdivisions_for(second_derivative_); }
 
 void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
   // The patch lies in the convex hull of its control points: skip it when that misses the image.

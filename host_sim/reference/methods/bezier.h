@@ -11,6 +11,7 @@
 //   the value is the mean of the patches over the pixel, or bilinear where no patch reaches.
 // Border triangles (fewer than three neighbours) have no patch (§4.2); a mesh without
 // interior triangles renders as bilinear. Pixels outside the domain stay NaN.
+#include <utility>
 #include <vector>
 
 #include "reference/methods/patch_control.h"
@@ -51,7 +52,7 @@ class BezierPatch {
   // is quadratic, so after a step d the residual is exactly -(k_aa d_a^2 + k_ab d_a d_b +
   // k_bb d_b^2) and the Jacobian grows by the Hessian times d: one evaluation, then cheap
   // steps, until a step is shorter than detail::kNewtonStep (patch_raster.h). Returns false,
-  // leaving (a, b) alone, when the Jacobian is singular, the iteration moves 0.25 away or does
+  // leaving (a, b) alone, when the Jacobian is singular, the iteration moves detail::kNewtonReach away or does
   // not settle in kNewtonIterations steps (beside a fold, see patch_raster.h).
   bool solve(double x, double y, double& a, double& b) const;
   // The closed parameter domain a, b, c >= 0, widened by detail::kDomainTolerance.
@@ -59,13 +60,30 @@ class BezierPatch {
     constexpr double e = detail::kDomainTolerance;
     return a >= -e && b >= -e && 1 - a - b >= -e;
   }
+  // The sides of the parameter domain for the exact variant's rows (patch_scan.h): side k
+  // (b = 0, a = 0, c = 0) at f in [0, 1] has parameters side(k, f).
+  static constexpr int kSides = 3;
+  static std::pair<double, double> side(int k, double f) {
+    return k == 0 ? std::pair{f, 0.0} : k == 1 ? std::pair{0.0, f} : std::pair{f, 1 - f};
+  }
+  // True when the Jacobian determinant provably keeps one sign over the domain (patch_scan.h).
+  bool unfolded() const;
+  // For the exact variant (patch_raster.h): true, with no cells, when unfolded(); false
+  // otherwise (the patch takes the tessellation).
+  bool fold_cells(std::vector<detail::FoldCell>& cells) const {
+    cells.clear();
+    return unfolded();
+  }
   // Subdivisions n per side for the exact variant (patch_raster.h): the second derivatives
   // along the three grid directions are 2 (P200 - 2 P101 + P002), 2 (P020 - 2 P011 + P002)
-  // and 2 (P200 - 2 P110 + P020), constant, and each is also a boundary curve's.
+  // and 2 (P200 - 2 P110 + P020), constant.
   int subdivisions() const;
   // Tessellates the patch (subdivisions() per side, node (i, j) at a = i / n, b = j / n) and
   // calls visit(x, y, a, b) for every pixel of the width x height image that a micro-triangle
-  // covers, with the micro-triangle's linear guess of its parameters (patch_raster.h).
+  // covers, with the micro-triangle's linear guess of its parameters, then for the pixels
+  // near each boundary arc beyond its chord (detail::visit_boundary_side), guessed from the
+  // chord: the candidates of patch_raster.h, every pixel of the patch among them, some
+  // more than once.
   template <class Visit>
   void tessellate(int width, int height, std::vector<detail::MicroVertex>& node, Visit&& visit) const;
 
@@ -91,12 +109,51 @@ void BezierPatch::tessellate(int width, int height, std::vector<detail::MicroVer
     }
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n - j; ++i) {
+      // Its edges on the domain's boundary own their points: a pixel on a chord gets this guess.
+      const unsigned boundary = (j == 0 ? 1u : 0u) | (i + 1 + j == n ? 2u : 0u) | (i == 0 ? 4u : 0u);
       detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j)], node[index(i, j + 1)], width, height,
-                                       visit);
+                                       visit, boundary);
       if (i + 1 < n - j)
         detail::rasterize_micro_triangle(node[index(i + 1, j)], node[index(i + 1, j + 1)], node[index(i, j + 1)], width,
                                          height, visit);
     }
+  for (int k = 0; k < kSides; ++k)
+    detail::visit_boundary_side(*this, n, [k](double f) { return side(k, f); }, width, height, visit);
+}
+
+inline bool BezierPatch::solve(double x, double y, double& a, double& b) const {
+  const XY& kaa = pos_[3];
+  const XY& kab = pos_[4];
+  const XY& kbb = pos_[5];
+  double px, py, xa, xb, ya, yb;
+  position(a, b, px, py, xa, xb, ya, yb);
+  XY r{x - px, y - py};
+  if (std::fabs(r[0]) + std::fabs(r[1]) < detail::kExactResidual) return true;  // as CoonsPatch::solve
+  XY ja{xa, ya}, jb{xb, yb};  // columns of the Jacobian
+  double ca = a, cb = b;
+  for (int iteration = 0; iteration < detail::kNewtonIterations; ++iteration) {
+    const double det = ja[0] * jb[1] - jb[0] * ja[1];
+    if (!(std::fabs(det) > 1e-300)) return false;
+    const double da = (jb[1] * r[0] - jb[0] * r[1]) / det;
+    const double db = (ja[0] * r[1] - ja[1] * r[0]) / det;
+    ca += da, cb += db;
+    if (!(std::fabs(ca - a) + std::fabs(cb - b) < detail::kNewtonReach)) return false;
+    if (std::fabs(da) + std::fabs(db) < detail::kNewtonStep) {
+      a = ca, b = cb;
+      return true;
+    }
+    r = -(kaa * (da * da) + kab * (da * db) + kbb * (db * db));
+    // The residual left is exact (the map is quadratic): the next step, J^-1 r, is at most
+    // |r| (sum of |J|'s entries) / |det|. Where that is below kSolveError, stop here.
+    const double norm = std::fabs(ja[0]) + std::fabs(ja[1]) + std::fabs(jb[0]) + std::fabs(jb[1]);
+    if ((std::fabs(r[0]) + std::fabs(r[1])) * norm < detail::kSolveError * std::fabs(det)) {
+      a = ca, b = cb;
+      return true;
+    }
+    ja += 2 * da * kaa + db * kab;
+    jb += da * kab + 2 * db * kbb;
+  }
+  return false;
 }
 
 void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out);

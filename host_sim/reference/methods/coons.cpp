@@ -72,6 +72,20 @@ CoonsPatch::CoonsPatch(const PatchControl& control) {
   for (int i = 0; i < 8; ++i) pos_[i] = XY{x_.*coefficient[i], y_.*coefficient[i]};
 }
 
+std::array<double, 3> CoonsPatch::second_derivatives() const {
+  // P_uu = 2 kuu + 2 v kuuv, P_vv = 2 kvv + 2 u kuvv and P_uv = kuv + 2 u kuuv + 2 v kuvv are
+  // affine, so their largest norms over the square are at its corners.
+  // Largest squared norms first, one square root each (hypot per corner cost more than the rest).
+  auto norm2 = [](double x, double y) { return x * x + y * y; };
+  double kuu = 0, kvv = 0, kuv = 0;
+  for (double v : {0.0, 1.0}) kuu = std::max(kuu, norm2(2 * (x_.kuu + v * x_.kuuv), 2 * (y_.kuu + v * y_.kuuv)));
+  for (double u : {0.0, 1.0}) kvv = std::max(kvv, norm2(2 * (x_.kvv + u * x_.kuvv), 2 * (y_.kvv + u * y_.kuvv)));
+  for (double u : {0.0, 1.0})
+    for (double v : {0.0, 1.0})
+      kuv = std::max(kuv, norm2(x_.kuv + 2 * u * x_.kuuv + 2 * v * x_.kuvv, y_.kuv + 2 * u * y_.kuuv + 2 * v * y_.kuvv));
+  return {std::sqrt(kuu), std::sqrt(kvv), std::sqrt(kuv)};
+}
+
 bool CoonsPatch::solve(double x, double y, double& u, double& v) const {
   const XY target{x, y};
   double cu = u, cv = v;
@@ -88,7 +102,7 @@ bool CoonsPatch::solve(double x, double y, double& u, double& v) const {
     const double inverse = 1 / det;
     const double du = (pv[1] * r[0] - pv[0] * r[1]) * inverse, dv = (pu[0] * r[1] - pu[1] * r[0]) * inverse;
     cu += du, cv += dv;
-    if (!(std::fabs(cu - u) + std::fabs(cv - v) < 0.25)) return false;
+    if (!(std::fabs(cu - u) + std::fabs(cv - v) < detail::kNewtonReach)) return false;
     if (std::fabs(du) + std::fabs(dv) < detail::kNewtonStep) {
       u = cu, v = cv;
       return true;
@@ -111,19 +125,49 @@ void CoonsPatch::Component::expand() {
   kuvv = a2.a - a1.a;
 }
 
+bool CoonsPatch::fold_cells(std::vector<detail::FoldCell>& cells) const {
+  cells.clear();
+  // Bernstein coefficients on the whole square: the determinant (degree 3 in u and in v)
+  // from its values on the grid of thirds, the position (degree 2) from the grid of halves,
+  // each converted along u, then along v.
+  detail::TensorCell cell;
+  double f[4][4];
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) f[i][j] = detail::jacobian_determinant(*this, i / 3.0, j / 3.0);
+  for (int j = 0; j < 4; ++j) {
+    const double column[4] = {f[0][j], f[1][j], f[2][j], f[3][j]};
+    double converted[4];
+    detail::cubic_bernstein(column, converted);
+    for (int i = 0; i < 4; ++i) f[i][j] = converted[i];
+  }
+  for (int i = 0; i < 4; ++i) detail::cubic_bernstein(f[i], cell.det[i]);
+  double px[3][3], py[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Point p = position(i / 2.0, j / 2.0);
+      px[i][j] = p.x, py[i][j] = p.y;
+    }
+  auto quadratic_bernstein = [](double f0, double f1, double f2, double* b, int stride) {
+    b[0] = f0, b[stride] = 2 * f1 - (f0 + f2) / 2, b[2 * stride] = f2;
+  };
+  for (double (*grid)[3] : {px, py}) {
+    for (int j = 0; j < 3; ++j) {
+      double column[3];
+      quadratic_bernstein(grid[0][j], grid[1][j], grid[2][j], column, 1);
+      for (int i = 0; i < 3; ++i) grid[i][j] = column[i];
+    }
+  }
+  for (int i = 0; i < 3; ++i) {
+    quadratic_bernstein(px[i][0], px[i][1], px[i][2], cell.x[i], 1);
+    quadratic_bernstein(py[i][0], py[i][1], py[i][2], cell.y[i], 1);
+  }
+  detail::find_fold_cells(cell, 0, [this](double u, double v) { return position(u, v); }, cells);
+  return true;
+}
+
 std::array<int, 2> CoonsPatch::subdivisions() const {
-  // P_uu = 2 kuu + 2 v kuuv, P_vv = 2 kvv + 2 u kuvv and P_uv = kuv + 2 u kuuv + 2 v kuvv are
-  // affine, so their largest norms over the square are at its corners.
-  // Largest squared norms first, one square root each (hypot per corner cost more than the rest).
-  auto norm2 = [](double x, double y) { return x * x + y * y; };
-  double kuu = 0, kvv = 0, kuv = 0;
-  for (double v : {0.0, 1.0}) kuu = std::max(kuu, norm2(2 * (x_.kuu + v * x_.kuuv), 2 * (y_.kuu + v * y_.kuuv)));
-  for (double u : {0.0, 1.0}) kvv = std::max(kvv, norm2(2 * (x_.kvv + u * x_.kuvv), 2 * (y_.kvv + u * y_.kuvv)));
-  for (double u : {0.0, 1.0})
-    for (double v : {0.0, 1.0})
-      kuv = std::max(kuv, norm2(x_.kuv + 2 * u * x_.kuuv + 2 * v * x_.kuvv, y_.kuv + 2 * u * y_.kuuv + 2 * v * y_.kuvv));
-  kuu = std::sqrt(kuu), kvv = std::sqrt(kvv), kuv = std::sqrt(kuv);
-  return {detail::subdivisions_for(kuu, 2 * (kuu + kuv)), detail::subdivisions_for(kvv, 2 * (kvv + kuv))};
+  const auto [kuu, kvv, kuv] = second_derivatives();
+  return {detail::subdivisions_for(2 * (kuu + kuv)), detail::subdivisions_for(2 * (kvv + kuv))};
 }
 
 void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {

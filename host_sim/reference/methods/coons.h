@@ -24,6 +24,7 @@
 // the default rasterizes each patch exactly (methods/patch_raster.h).
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "reference/methods/patch_control.h"
@@ -33,15 +34,6 @@
 namespace tristream {
 
 inline constexpr double kCoonsThesisStep = 0.007;
-
-// curve(t) = (a t + b) t + c through s (t = 0), m (t = 1/2) and e (t = 1).
-struct Parabola {
-  double a = 0, b = 0, c = 0;
-
-  static Parabola through(double s, double m, double e) { return {2 * s + 2 * e - 4 * m, 4 * m - 3 * s - e, s}; }
-  double operator()(double t) const { return (a * t + b) * t + c; }
-  double derivative(double t) const { return 2 * a * t + b; }
-};
 
 class CoonsPatch {
  public:
@@ -78,7 +70,7 @@ class CoonsPatch {
   }
   // Solves position(u, v) = (x, y) by Newton's method from (u, v) near the solution, until a
   // step is shorter than detail::kNewtonStep (patch_raster.h). Returns false, leaving (u, v)
-  // alone, when the Jacobian is singular, the iteration moves 0.25 away or does not settle in
+  // alone, when the Jacobian is singular, the iteration moves detail::kNewtonReach away or does not settle in
   // kNewtonIterations steps (beside a fold, see patch_raster.h).
   bool solve(double x, double y, double& u, double& v) const;
   // The closed parameter domain [0, 1]^2, widened by detail::kDomainTolerance.
@@ -86,16 +78,26 @@ class CoonsPatch {
     constexpr double e = detail::kDomainTolerance;
     return u >= -e && v >= -e && u <= 1 + e && v <= 1 + e;
   }
-  // Subdivisions (nu, nv) for the exact variant (patch_raster.h). Over the square |P_uu| <= Kuu
-  // (also the curvature of the boundary curves along u), |P_vv| <= Kvv, |P_uv| <= Kuv, each the
-  // largest at a corner (they are affine). A micro-triangle edge d (steps hu = 1/nu,
-  // hv = 1/nv) has |d' H d| <= (Kuu + Kuv) hu^2 + (Kvv + Kuv) hv^2, so each side takes twice
-  // its share as the interior bound.
+  // The sides of the parameter domain for the exact variant's rows (patch_scan.h): side k
+  // (v = 0, v = 1, u = 0, u = 1) at f in [0, 1] has parameters side(k, f).
+  static constexpr int kSides = 4;
+  static std::pair<double, double> side(int k, double f) {
+    return k < 2 ? std::pair{f, double(k)} : std::pair{double(k - 2), f};
+  }
+  // For the exact variant (patch_raster.h): the squares of the domain, down to an eighth of
+  // its side, where the Jacobian determinant may vanish, with boxes holding their images
+  // (detail::find_fold_cells); none when the patch provably does not fold. Always true.
+  bool fold_cells(std::vector<detail::FoldCell>& cells) const;
+  // Subdivisions (nu, nv) for the exact variant (patch_raster.h). Over the square |P_uu| <= Kuu,
+  // |P_vv| <= Kvv, |P_uv| <= Kuv, each the largest at a corner (they are affine). A
+  // micro-triangle edge d (steps hu = 1/nu, hv = 1/nv) has |d' H d| <= (Kuu + Kuv) hu^2 +
+  // (Kvv + Kuv) hv^2, so each side takes twice its share as its bound.
   std::array<int, 2> subdivisions() const;
   // Tessellates the patch (subdivisions(), node (i, j) at u = i / nu, v = j / nv, each grid
   // cell split along (i, j)-(i+1, j+1)) and calls visit(x, y, u, v) for every pixel of the
   // width x height image that a micro-triangle covers, with the micro-triangle's linear guess
-  // of its parameters (patch_raster.h).
+  // of its parameters, then for the pixels near each boundary arc beyond its chord
+  // (detail::visit_boundary_side), guessed from the chord: the candidates of patch_raster.h.
   template <class Visit>
   void tessellate(int width, int height, std::vector<detail::MicroVertex>& node, Visit&& visit) const;
 
@@ -123,6 +125,8 @@ class CoonsPatch {
   using XY = detail::XY;
   Component x_, y_;                // position
   XY pos_[8];                      // x_ and y_ monomial coefficients as pairs
+  // Bounds of |P_uu|, |P_vv|, |P_uv| over the square (the largest at a corner: they are affine).
+  std::array<double, 3> second_derivatives() const;
   std::vector<Component> value_;  // one per value channel
 };
 
@@ -139,14 +143,19 @@ void CoonsPatch::tessellate(int width, int height, std::vector<detail::MicroVert
       if (!detail::snap(p.x, p.y, u, v, node[index(i, j)])) return;  // absurd coordinates: no patch
       x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
     }
-  if (x1 < 0 || y1 < 0 || x0 > width - 1 || y0 > height - 1) return;
+  // Off the image, the arcs too: an arc leaves its chord by at most Kuu / (8 nu^2) <= 3/8
+  // pixel (or Kvv / (8 nv^2)), by subdivisions().
+  if (x1 < -1 || y1 < -1 || x0 > width || y0 > height) return;
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
+      // Edges on the domain's boundary own their points: a pixel on a chord gets this guess.
       detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j)], node[index(i + 1, j + 1)], width,
-                                       height, visit);
+                                       height, visit, (j == 0 ? 1u : 0u) | (i + 1 == nu ? 2u : 0u));
       detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j + 1)], node[index(i, j + 1)], width,
-                                       height, visit);
+                                       height, visit, (j + 1 == nv ? 2u : 0u) | (i == 0 ? 4u : 0u));
     }
+  for (int k = 0; k < kSides; ++k)
+    detail::visit_boundary_side(*this, k < 2 ? nu : nv, [k](double f) { return side(k, f); }, width, height, visit);
 }
 
 void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out);

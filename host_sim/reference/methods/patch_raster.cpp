@@ -9,7 +9,8 @@ PatchCanvas::PatchCanvas(const Field& prefill)
     : prefill_(prefill),
       inside_(std::size_t(prefill.width) * prefill.height, 0),
       count_(std::size_t(prefill.width) * prefill.height, 0),
-      sum_(std::size_t(prefill.width) * prefill.height * prefill.channels, 0.0) {
+      sum_(std::size_t(prefill.width) * prefill.height * prefill.channels, 0.0),
+      claim_(std::size_t(prefill.width) * prefill.height, 0) {
   for (std::size_t p = 0; p < inside_.size(); ++p) {
     bool covered = prefill.channels > 0;
     for (int c = 0; c < prefill.channels; ++c) covered = covered && !std::isnan(prefill.v[p * prefill.channels + c]);

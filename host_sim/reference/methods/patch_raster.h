@@ -7,41 +7,44 @@
 //   (pixel (i, j) samples the point (i, j), so its cell is centred there; the thesis's integer
 //   truncation assumed pixels at their corners), add it there unless it is off the image or
 //   outside the domain; the bilinear pre-fill counts as one more sample in every pixel.
-// - exact (the default): tessellate the patch's parameter domain uniformly, rasterize the
-//   micro-triangles with exact integer edge tests and a top-left tie rule (each pixel is
-//   covered once per layer of the surface; a fold gives more layers), and evaluate the
-//   surface at the pixel itself: the micro-triangle gives the parameters by linear
-//   interpolation, Newton's method on the patch's position makes them exact. So a pixel's
-//   value is that of the surface point above its sample point. A pixel whose parameters fall
-//   outside the patch's closed parameter domain, or which Newton cannot place (beside a fold
-//   of the patch, where the tessellation's fold line is off), is not counted; so the
-//   tessellation only decides the coverage of pixels between a boundary curve and its chord,
-//   which stays within kBoundaryTolerance of the curve, and of pixels on the boundary curve
-//   (its tie rule). Its interior stays within about kGuessTolerance
-//   of the patch (Newton's start). Both follow from bounds on the position's second
-//   derivatives, so a nearly affine patch is one or two micro-triangles. Work per covered
-//   pixel and patch: one Newton solve (bezier: one position evaluation and closed-form
-//   steps; coons: two to four evaluations); per patch: the micro-triangles, a few per
-//   pixel at most. A domain pixel no patch covers keeps the bilinear value.
+// - exact (the default): every pixel whose sample point is the image of a point of the
+//   patch's closed parameter domain counts once for the patch, with the surface's value at
+//   that point: Newton's method on the patch's position places the pixel from a start, and
+//   it counts when the solution lies in the closed domain (widened by kDomainTolerance).
+//   Candidates and starts come one of two ways:
+//   - by rows (patch_scan.h), for every Coons patch and every Bezier patch that provably
+//     does not fold: each pixel between the leftmost and rightmost crossing of its row with
+//     the boundary curves (and with boxes around the fold, where a Coons patch folds), each
+//     once, started from the pixel before it or from a crossing;
+//   - by a coarse tessellation (rasterize_tessellated), for a Bezier patch that may fold:
+//     its micro-triangles, rasterized with exact integer edge tests, give the pixels inside
+//     the tessellation's polygon with a linear guess good to kGuessTolerance pixels; between
+//     each boundary chord and its curve (a parabola: it lies in the triangle of the chord
+//     and the curve's control point, see visit_boundary_arc) the pixels near that triangle
+//     give the rest, guessed from the chord. A stamp per pixel (PatchCanvas::claim) keeps a
+//     pixel from counting twice for one patch, so these candidates may overlap.
+//   Where a patch folds (its Jacobian changes sign) a pixel with preimages in two layers
+//   still counts once, with the layer Newton reaches first; a pixel beside a fold, where
+//   Newton does not converge from any start it is given, is not counted. Work per
+//   candidate pixel and patch: one Newton solve (bezier: one position evaluation and
+//   closed-form steps; coons: two to four evaluations). A domain pixel no patch covers
+//   keeps the bilinear value.
 //
 // Coverage on the boundary. Pixels whose preimage lies on a patch's parameter boundary are
 // common (the patch corners are mesh vertices, so pixel centres on a mesh of integer
-// vertices; straight boundary curves run through pixel centres). Their membership used to
-// be decided by the last bits of Newton's result against a 1e-12 domain test, so any change
-// of the solver's arithmetic flipped pixels (the Horner form of the Coons position flipped
-// 120 of 262,144 by up to 31 levels), and about 6,400 of the ~20,000 on-boundary samples of
-// a 13,000-vertex grey image were dropped at random. Now the domain is closed and widened by
-// kDomainTolerance (1e-8 in the parameters), and Newton runs until its step is below
-// kNewtonStep, leaving errors below 1e-12 where it converges quadratically; measured on
-// the 13,000-vertex boat, peppers and kodim23 encodings, solutions on the boundary lie
-// within 1e-11 of it and all others at least 1e-7 away, so the band decides nothing but the
-// boundary itself. Where the Jacobian is singular on the boundary Newton converges only
-// linearly (the Coons corner M, where the split curve runs straight through, is always
-// such a point; it is a tessellation node, and a start that already solves the equation
-// to kExactResidual is kept as it is, so a pixel on it is placed exactly). A pixel on the
-// boundary counts when the tessellation's tie rule gives it to one of the patch's
-// micro-triangles: a deterministic integer decision. tests/methods/test_patches.cpp checks
-// each patch's counts against an independent long double inversion, and that moving
+// vertices; straight boundary curves run through pixel centres). Their membership must not
+// hang on the last bits of Newton's result (a 1e-12 domain test once flipped 120 of 262,144
+// pixels by up to 31 levels when the solver's arithmetic changed). So the domain is closed
+// and widened by kDomainTolerance (1e-8 in the parameters), and Newton runs until its step
+// is below kNewtonStep, leaving errors below 1e-12 where it converges quadratically;
+// measured on the 13,000-vertex boat, peppers and kodim23 encodings, solutions on the
+// boundary lie within 1e-11 of it and all others at least 1e-7 away, so the band decides
+// nothing but the boundary itself. Where the Jacobian is singular on the boundary Newton
+// converges only linearly (the Coons corner M, where the split curve runs straight
+// through, is always such a point; a start that already solves the equation to
+// kExactResidual is kept as it is, so a pixel on it is placed exactly).
+// tests/methods/test_patches.cpp checks each patch's counts against an independent long
+// double inversion (both ways; exactly where the patch does not fold), and that moving
 // Newton's start does not change any decision.
 //
 // The bilinear field (pre-fill and domain) comes from bilinear_prefill below.
@@ -57,6 +60,7 @@
 #include "common/errors.h"
 #include "model/topology.h"
 #include "reference/methods/patch_control.h"
+#include "reference/methods/patch_scan.h"
 #include "reference/render.h"
 
 namespace tristream::detail {
@@ -102,6 +106,12 @@ class PatchCanvas {
 
   std::uint32_t count(int i, int j) const { return count_[std::size_t(j) * prefill_.width + i]; }
 
+  // The exact variant's stamps: begin_patch() starts a patch, claim(p) marks pixel p as
+  // counted for it, claimed(p) asks. (2^32 patches before a stamp repeats.)
+  void begin_patch() { ++patch_; }
+  bool claimed(std::size_t p) const { return claim_[p] == patch_; }
+  void claim(std::size_t p) { claim_[p] = patch_; }
+
   // thesis: (pre-fill + sum) / (count + 1) in every domain pixel (§4.2).
   void resolve_thesis(Field& out) const;
   // exact: sum / count where some patch landed, the pre-fill elsewhere in the domain.
@@ -112,21 +122,25 @@ class PatchCanvas {
   std::vector<std::uint8_t> inside_;
   std::vector<std::uint32_t> count_;
   std::vector<double> sum_;
+  std::vector<std::uint32_t> claim_;
+  std::uint32_t patch_ = 0;
 };
 
 // Coverage decisions use positions snapped to 1/256 output pixel. Bit budget: a patch is
-// skipped unless every node is within +-2^20 pixels, so fixed-point coordinates are below
+// skipped unless every node is within +-2^20 pixels (kMaxPatchCoordinate), so fixed-point coordinates are below
 // 2^28, differences below 2^29 and the edge functions (products of two differences, summed)
 // below 2^59, also when stepped across a bounding box: int64 is exact.
 inline constexpr int kSubpixelBits = 8;
 inline constexpr double kSubpixelScale = 1 << kSubpixelBits;
-inline constexpr double kMaxPatchCoordinate = 1 << 20;
-// Distances in output pixels between a patch and its tessellation. A chord of a quadratic
-// curve with second derivative K and parameter step h deviates by at most K h^2 / 8; the
-// linear interpolant of a quadratic map over a triangle with edge vectors d_k (parameter
-// space) deviates by at most max_k |d_k' H d_k| / 6 (H the second derivative).
-inline constexpr double kBoundaryTolerance = 1.0 / 8;
+// Distance in output pixels between a patch and its tessellation, which bounds the error of
+// Newton's start: the linear interpolant of a quadratic map over a triangle with edge
+// vectors d_k (parameter space) deviates by at most max_k |d_k' H d_k| / 6 (H the second
+// derivative).
 inline constexpr double kGuessTolerance = 1.0;
+// Candidates of a boundary arc (visit_boundary_arc) reach this far, in output pixels,
+// beyond the triangle that holds the arc: a pixel on the curve is then a candidate whatever
+// the rounding of the triangle's corners.
+inline constexpr double kArcMargin = 1.0 / 256;
 // Newton's method (BezierPatch::solve, CoonsPatch::solve) stops after a step shorter than
 // kNewtonStep in the parameters (sum of both): where it converges quadratically the error
 // left is then about |P''| / |P'| kNewtonStep^2, below 1e-12. A stop on the residual instead
@@ -134,6 +148,13 @@ inline constexpr double kGuessTolerance = 1.0;
 // parameter errors of about its square root), so the step rules; it may take up to
 // kNewtonIterations steps.
 inline constexpr double kNewtonStep = 1e-7;
+// BezierPatch::solve also stops once the error left after its step, estimated from the
+// exact residual there, is below kSolveError in the parameters: the same accuracy, often an
+// iteration earlier.
+inline constexpr double kSolveError = 1e-12;
+// Newton gives up when it moves farther than kNewtonReach (sum of both parameters) from its
+// start: the domain's size, since a start may be a pixel from a thin patch's solution.
+inline constexpr double kNewtonReach = 1.0;
 inline constexpr int kNewtonIterations = 12;
 // A start whose residual is below kExactResidual pixels is taken as the solution as it is.
 inline constexpr double kExactResidual = 1e-12;
@@ -143,12 +164,11 @@ inline constexpr double kDomainTolerance = 1e-8;
 // Subdivisions per patch side are capped (the tessellation may then deviate more).
 inline constexpr int kMaxSubdivisions = 1024;
 
-// Subdivisions n of a parameter side for second-derivative bounds `boundary` (along the
-// boundary curves) and `interior` (max |d' H d| over the micro-triangle edge directions d
-// scaled to the whole side): n^2 >= boundary / (8 kBoundaryTolerance) and
+// Subdivisions n of a parameter side for the second-derivative bound `interior` (max
+// |d' H d| over the micro-triangle edge directions d scaled to the whole side):
 // n^2 >= interior / (6 kGuessTolerance), at least 1.
-inline int subdivisions_for(double boundary, double interior) {
-  const double n = std::ceil(std::sqrt(std::max(boundary / (8 * kBoundaryTolerance), interior / (6 * kGuessTolerance))));
+inline int subdivisions_for(double interior) {
+  const double n = std::ceil(std::sqrt(interior / (6 * kGuessTolerance)));
   return n < 1 ? 1 : n > kMaxSubdivisions ? kMaxSubdivisions : int(n);
 }
 
@@ -250,6 +270,65 @@ void rasterize_micro_triangle(const MicroVertex& a, const MicroVertex& b, const 
   }
 }
 
+// Calls visit(i, j, s, t) for every pixel (i, j) of the width x height image whose sample
+// point lies within kArcMargin of the triangle (p, c, q), c = 2 m - (p + q) / 2: the control
+// point of the parabola with ends p, q and middle point m. The arc lies in that triangle, so
+// every pixel between the arc and its chord p-q, or on either, is visited (some more near
+// them too). (s, t) is a guess of the pixel's parameters: those of p, (ps, pt), and of q,
+// (qs, qt), interpolated at the pixel's projection on the chord. Rows are cut from the
+// triangle in floating point; the margin absorbs its rounding.
+template <class Visit>
+void visit_boundary_arc(Point p, Point m, Point q, double ps, double pt, double qs, double qt, int width, int height,
+                        Visit&& visit) {
+  const double vx[3] = {p.x, 2 * m.x - 0.5 * (p.x + q.x), q.x};
+  const double vy[3] = {p.y, 2 * m.y - 0.5 * (p.y + q.y), q.y};
+  for (int k = 0; k < 3; ++k)
+    if (!(std::fabs(vx[k]) <= 4 * kMaxPatchCoordinate && std::fabs(vy[k]) <= 4 * kMaxPatchCoordinate)) return;
+  const double e = kArcMargin;
+  const double y_lo = std::min({vy[0], vy[1], vy[2]}) - e, y_hi = std::max({vy[0], vy[1], vy[2]}) + e;
+  const int j0 = std::max(0, int(std::ceil(y_lo))), j1 = std::min(height - 1, int(std::floor(y_hi)));
+  const double dx = q.x - p.x, dy = q.y - p.y, chord2 = dx * dx + dy * dy;
+  for (int j = j0; j <= j1; ++j) {
+    // x range of the triangle within the slab j - e <= y <= j + e: that of its edges' parts there.
+    double x_lo = 1e300, x_hi = -1e300;
+    for (int k = 0; k < 3; ++k) {
+      const double ax = vx[k], ay = vy[k], bx = vx[(k + 1) % 3], by = vy[(k + 1) % 3];
+      if (std::max(ay, by) < j - e || std::min(ay, by) > j + e) continue;
+      double f0 = 0, f1 = 1;
+      if (by != ay) {
+        double fa = (j - e - ay) / (by - ay), fb = (j + e - ay) / (by - ay);
+        if (fa > fb) std::swap(fa, fb);
+        f0 = std::max(f0, fa), f1 = std::min(f1, fb);
+        if (f0 > f1) continue;
+      }
+      const double x0 = ax + f0 * (bx - ax), x1 = ax + f1 * (bx - ax);
+      x_lo = std::min({x_lo, x0, x1}), x_hi = std::max({x_hi, x0, x1});
+    }
+    if (x_lo > x_hi) continue;
+    const int i0 = std::max(0, int(std::ceil(x_lo - e))), i1 = std::min(width - 1, int(std::floor(x_hi + e)));
+    for (int i = i0; i <= i1; ++i) {
+      const double f = chord2 > 0 ? std::clamp(((i - p.x) * dx + (j - p.y) * dy) / chord2, 0.0, 1.0) : 0.0;
+      visit(i, j, ps + f * (qs - ps), pt + f * (qt - pt));
+    }
+  }
+}
+
+// The boundary arcs of one side of a patch's parameter domain, n chords: side(f) gives the
+// parameters (s, t) at f in [0, 1]; chord k runs from side(k / n) to side((k + 1) / n), its
+// arc's middle is side((k + 1/2) / n). Each goes to visit_boundary_arc.
+template <class Patch, class Side, class Visit>
+void visit_boundary_side(const Patch& patch, int n, Side&& side, int width, int height, Visit&& visit) {
+  auto [s0, t0] = side(0.0);
+  Point p0 = patch.position(s0, t0);
+  for (int k = 0; k < n; ++k) {
+    const auto [s1, t1] = side(double(k + 1) / n);
+    const auto [sm, tm] = side((k + 0.5) / n);
+    const Point p1 = patch.position(s1, t1);
+    visit_boundary_arc(p0, patch.position(sm, tm), p1, s0, t0, s1, t1, width, height, visit);
+    p0 = p1, s0 = s1, t0 = t1;
+  }
+}
+
 // The bilinear field of `mesh` at the output size of `out`, as render_bilinear gives it (same
 // coverage: domain boundary inclusive, top-left ties; same values up to rounding): the
 // patches' pre-fill and domain. Fast path with exact integer edge tests when the output size
@@ -259,21 +338,60 @@ void rasterize_micro_triangle(const MicroVertex& a, const MicroVertex& b, const 
 void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, int domain_height,
                       const RenderOptions& options, Field& out);
 
-// The exact variant for one patch: every pixel its tessellation covers (patch.tessellate),
-// placed by patch.solve and kept when in the closed domain (patch.in_domain), adds the
-// patch's values there to `canvas`. `value` holds one double per channel.
+// The exact variant for any patch: each candidate pixel of patch.tessellate, placed by
+// patch.solve from its guess and kept when in the closed domain (patch.in_domain), adds the
+// patch's values there to `canvas`, once per pixel (the canvas's stamps). `value` holds one
+// double per channel.
 template <class Patch>
-void rasterize_exact(const Patch& patch, std::vector<double>& value, PatchCanvas& canvas,
-                     std::vector<MicroVertex>& node) {
+void rasterize_tessellated(const Patch& patch, std::vector<double>& value, PatchCanvas& canvas,
+                           std::vector<MicroVertex>& node) {
   double* out = value.data();
+  canvas.begin_patch();
   patch.tessellate(canvas.width(), canvas.height(), node, [&](int x, int y, double s, double t) {
     const std::size_t p = canvas.index(x, y);
-    if (!canvas.inside(p)) return;
+    if (!canvas.inside(p) || canvas.claimed(p)) return;
     if (!patch.solve(x, y, s, t)) return;
-    if (!patch.in_domain(s, t)) return;  // outside the patch, inside a boundary chord
+    if (!patch.in_domain(s, t)) return;  // outside the patch: between a chord and its arc, or a margin
+    canvas.claim(p);
     patch.values(s, t, out);
     canvas.add_inside(p, out);
   });
+}
+
+// The same by rows (patch_scan.h), each candidate once, for a patch whose fold, if any,
+// `folds` holds.
+template <class Patch>
+void rasterize_rows(const Patch& patch, const std::vector<FoldCell>& folds, std::vector<double>& value,
+                    PatchCanvas& canvas, ScanScratch& scan) {
+  double* out = value.data();
+  scan_rows(patch, folds, canvas.width(), canvas.height(), scan, [&](int x, int y, double& s, double& t) {
+    if (!patch.solve(x, y, s, t)) return Placed::none;
+    if (!patch.in_domain(s, t)) return Placed::outside;
+    const std::size_t p = canvas.index(x, y);
+    if (canvas.inside(p)) {
+      patch.values(s, t, out);
+      canvas.add_inside(p, out);
+    }
+    return Placed::inside;
+  });
+}
+
+// Scratch of the exact variant, reused from patch to patch.
+struct PatchScratch {
+  std::vector<MicroVertex> node;
+  ScanScratch scan;
+  std::vector<FoldCell> folds;
+};
+
+// The exact variant for one patch: by rows where its fold is bounded (patch.fold_cells: a
+// Coons patch always, a Bezier patch when it provably does not fold), else by its
+// tessellation.
+template <class Patch>
+void rasterize_exact(const Patch& patch, std::vector<double>& value, PatchCanvas& canvas, PatchScratch& scratch) {
+  if (patch.fold_cells(scratch.folds))
+    rasterize_rows(patch, scratch.folds, value, canvas, scratch.scan);
+  else
+    rasterize_tessellated(patch, value, canvas, scratch.node);
 }
 
 // The render loop of the patch methods: the bilinear pre-fill, then for each triangle with
@@ -292,7 +410,7 @@ void render_patches(std::string_view method, const Mesh& mesh, int domain_width,
   PatchCanvas canvas(prefill);
 
   PatchControl control;
-  std::vector<MicroVertex> nodes;
+  PatchScratch scratch;
   std::vector<double> value(std::size_t(std::max(mesh.value_count, 1)));
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     if (!patch_control(mesh, topo, t, map, control) || !accept(control)) continue;
@@ -300,7 +418,7 @@ void render_patches(std::string_view method, const Mesh& mesh, int domain_width,
     if (thesis)
       splat(patch, control.channels, canvas);
     else
-      rasterize(patch, value, canvas, nodes);
+      rasterize(patch, value, canvas, scratch);
   }
   if (thesis)
     canvas.resolve_thesis(out);

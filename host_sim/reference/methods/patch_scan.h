@@ -1,0 +1,376 @@
+#pragma once
+// Private to the patch methods (bezier, coons): the candidates of the exact variant for a
+// patch that does not fold, row by row between its boundary curves (patch_raster.h has the
+// rest of the exact variant and the tessellation used for the other patches).
+//
+// Why rows suffice. Where the Jacobian keeps one sign the patch maps interior points to
+// interior points, so the boundary of its image lies on its boundary curves. A pixel whose
+// sample point the patch covers therefore has a boundary curve on its row to its left and
+// to its right: it lies between the row's leftmost and rightmost crossing of the boundary.
+// The boundary curves are parabolas (bezier: three, coons: four), so the crossings of row j
+// are roots of quadratics, computed in floating point with a margin (kRowTolerance in y,
+// kSpanMargin in x) that keeps a pixel on a curve among the candidates.
+//
+// Starts for Newton. Each crossing's parameters are known (a point of a side of the
+// parameter domain); the first pixel after a crossing starts from them, moved to the pixel
+// through the inverse Jacobian there; the next pixels extrapolate the last two solutions.
+// The starts are a pixel or less from the solutions and second-order accurate, so Newton
+// mostly takes two or three steps.
+//
+// Is it unfolded? PatchJacobian below bounds the Jacobian determinant's sign by its
+// Bernstein coefficients (the determinant lies in their convex hull): all of one sign
+// prove it. Otherwise the patch takes the tessellation.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "reference/render.h"
+
+namespace tristream {
+
+// curve(t) = (a t + b) t + c through s (t = 0), m (t = 1/2) and e (t = 1).
+struct Parabola {
+  double a = 0, b = 0, c = 0;
+
+  static Parabola through(double s, double m, double e) { return {2 * s + 2 * e - 4 * m, 4 * m - 3 * s - e, s}; }
+  double operator()(double t) const { return (a * t + b) * t + c; }
+  double derivative(double t) const { return 2 * a * t + b; }
+};
+
+}  // namespace tristream
+
+namespace tristream::detail {
+
+// A patch is skipped unless its positions stay within +-kMaxPatchCoordinate output pixels
+// (the bit budget of patch_raster.h's fixed point).
+inline constexpr double kMaxPatchCoordinate = 1 << 20;
+
+// A row crossing of the boundary: its x and the patch parameters there.
+// A start for the pixels of a row: a boundary crossing (y is the row) or the middle of a
+// fold cell: its position and its parameters.
+struct RowCrossing {
+  double x, y, s, t;
+};
+
+// The crossings of one row (the first kMaxRowCrossings of them: enough for the guesses) and
+// the span between the leftmost and rightmost of all.
+struct RowCrossings {
+  static constexpr int kMaxRowCrossings = 20;
+  int count = 0;
+  double x_min = 1e300, x_max = -1e300;
+  RowCrossing crossing[kMaxRowCrossings];
+
+  void clear() { count = 0, x_min = 1e300, x_max = -1e300; }
+
+  void add(double x, double y, double s, double t) {
+    x_min = std::min(x_min, x), x_max = std::max(x_max, x);
+    if (count < kMaxRowCrossings) crossing[count++] = {x, y, s, t};
+  }
+};
+
+// Scratch of scan_rows, reused from patch to patch.
+struct ScanScratch {
+  std::vector<RowCrossings> rows;
+};
+
+// Rows closer than this (output pixels) to a boundary curve's extreme or flat part count as
+// crossing it there; crossings reach kSpanMargin further out in x.
+inline constexpr double kRowTolerance = 1e-9;
+inline constexpr double kSpanMargin = 1e-7;
+
+// A boundary curve: position (x(f), y(f)) for f in [0, 1], parameters (s, t) = (s0 + f ds,
+// t0 + f dt).
+struct BoundaryArc {
+  Parabola x, y;
+  double s0 = 0, t0 = 0, ds = 0, dt = 0;
+};
+
+// Adds the crossings of `arc` with rows j0..j1 to rows[j - j0].
+inline void add_arc_crossings(const BoundaryArc& arc, int j0, int j1, std::vector<RowCrossings>& rows) {
+  const Parabola& y = arc.y;
+  auto add = [&](int j, double f) {
+    rows[std::size_t(j - j0)].add(arc.x(f), j, arc.s0 + f * arc.ds, arc.t0 + f * arc.dt);
+  };
+  // Extremes of y over [0, 1]: its ends and its vertex; of x: its vertex (for flat stretches).
+  const double fy = y.a != 0 ? -y.b / (2 * y.a) : -1, fx = arc.x.a != 0 ? -arc.x.b / (2 * arc.x.a) : -1;
+  const bool y_vertex = fy > 0 && fy < 1, x_vertex = fx > 0 && fx < 1;
+  double lo = std::min(y.c, y(1)), hi = std::max(y.c, y(1));
+  if (y_vertex) lo = std::min(lo, y(fy)), hi = std::max(hi, y(fy));
+  const int first = std::max(j0, int(std::ceil(lo - kRowTolerance)));
+  const int last = std::min(j1, int(std::floor(hi + kRowTolerance)));
+  for (int j = first; j <= last; ++j) {
+    // Roots of y(f) = j in [0, 1] (stable quadratic formula), and the points of the curve
+    // within kRowTolerance of the row among its ends and vertices (tangent or flat rows).
+    const double a = y.a, b = y.b, c = y.c - j;
+    if (std::fabs(c) <= kRowTolerance) add(j, 0);
+    if (std::fabs(a + b + c) <= kRowTolerance) add(j, 1);
+    if (y_vertex && std::fabs(y(fy) - j) <= kRowTolerance) add(j, fy);
+    if (x_vertex && std::fabs(y(fx) - j) <= kRowTolerance) add(j, fx);
+    if (a == 0) {
+      if (b != 0) {
+        const double f = -c / b;
+        if (f >= 0 && f <= 1) add(j, f);
+      }
+      continue;
+    }
+    const double disc = b * b - 4 * a * c;
+    if (disc < 0) continue;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    const double f1 = q / a, f2 = q != 0 ? c / q : f1;
+    if (f1 >= 0 && f1 <= 1) add(j, f1);
+    if (f2 >= 0 && f2 <= 1 && f2 != f1) add(j, f2);
+  }
+}
+
+// What a start made of a pixel: Newton found no solution, one outside the patch's domain,
+// or one inside (the pixel counted).
+enum class Placed { none, outside, inside };
+
+// A part of the parameter domain where a patch may fold: a box that holds its image, and
+// its middle (position and parameters) as a start. The boundary of a folded patch's image
+// lies on its boundary curves or on the image of its fold (where the Jacobian determinant
+// vanishes), so the rows' spans take these boxes in too.
+struct FoldCell {
+  double x_lo, x_hi, y_lo, y_hi;
+  RowCrossing middle;
+};
+
+// Calls visit(i, j, s, t) for each pixel (i, j) of the width x height image between the
+// leftmost and rightmost crossing of its row with the boundary of `patch` or with a box of
+// `folds` (which must hold the patch's fold: none where it does not fold), with a start
+// (s, t) for Newton passed by reference: visit returns what it made of the pixel (Placed),
+// with (s, t) the solution unless none.
+template <class Patch, class Visit>
+void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width, int height, ScanScratch& scratch,
+               Visit&& visit) {
+  std::vector<RowCrossings>& rows = scratch.rows;
+  std::array<BoundaryArc, Patch::kSides> arcs;
+  double y_lo = 1e300, y_hi = -1e300;
+  for (int k = 0; k < Patch::kSides; ++k) {
+    BoundaryArc& arc = arcs[std::size_t(k)];
+    const auto [s0, t0] = Patch::side(k, 0.0);
+    const auto [s1, t1] = Patch::side(k, 1.0);
+    const auto [sm, tm] = Patch::side(k, 0.5);
+    const Point p0 = patch.position(s0, t0), pm = patch.position(sm, tm), p1 = patch.position(s1, t1);
+    for (const Point& p : {p0, pm, p1})
+      if (!(std::fabs(p.x) <= kMaxPatchCoordinate && std::fabs(p.y) <= kMaxPatchCoordinate)) return;
+    arc.x = Parabola::through(p0.x, pm.x, p1.x);
+    arc.y = Parabola::through(p0.y, pm.y, p1.y);
+    arc.s0 = s0, arc.t0 = t0, arc.ds = s1 - s0, arc.dt = t1 - t0;
+    // The curve lies in the triangle of its ends and control point 2 pm - (p0 + p1) / 2.
+    const double cy = 2 * pm.y - 0.5 * (p0.y + p1.y);
+    y_lo = std::min({y_lo, p0.y, p1.y, cy}), y_hi = std::max({y_hi, p0.y, p1.y, cy});
+  }
+  for (const FoldCell& cell : folds) y_lo = std::min(y_lo, cell.y_lo), y_hi = std::max(y_hi, cell.y_hi);
+  const int j0 = std::max(0, int(std::ceil(y_lo - 1))), j1 = std::min(height - 1, int(std::floor(y_hi + 1)));
+  if (j0 > j1) return;
+  rows.resize(std::size_t(j1 - j0 + 1));
+  for (RowCrossings& row : rows) row.clear();
+  for (const FoldCell& cell : folds) {
+    const int first = std::max(j0, int(std::ceil(cell.y_lo - kRowTolerance)));
+    const int last = std::min(j1, int(std::floor(cell.y_hi + kRowTolerance)));
+    for (int j = first; j <= last; ++j) {
+      RowCrossings& row = rows[std::size_t(j - j0)];
+      row.x_min = std::min(row.x_min, cell.x_lo), row.x_max = std::max(row.x_max, cell.x_hi);
+      row.add(std::clamp(cell.middle.x, cell.x_lo, cell.x_hi), cell.middle.y, cell.middle.s, cell.middle.t);
+    }
+  }
+  for (const BoundaryArc& arc : arcs) add_arc_crossings(arc, j0, j1, rows);
+
+  // The last resort, for a pixel no other start placed: the nearest of a grid of points of
+  // the patch (made once per patch, when first needed).
+  constexpr int kGrid = 8;
+  std::array<double, 4> grid[(kGrid + 1) * (kGrid + 1)];
+  int grid_size = 0;
+  auto from_grid = [&](int i, int j, double& gs, double& gt) {
+    if (grid_size == 0)
+      for (int a = 0; a <= kGrid; ++a)
+        for (int b = 0; b <= kGrid; ++b)
+          if (patch.in_domain(double(a) / kGrid, double(b) / kGrid)) {
+            const Point p = patch.position(double(a) / kGrid, double(b) / kGrid);
+            grid[grid_size++] = {p.x, p.y, double(a) / kGrid, double(b) / kGrid};
+          }
+    double best = 1e300;
+    for (int k = 0; k < grid_size; ++k) {
+      const double d = std::fabs(grid[k][0] - i) + std::fabs(grid[k][1] - j);
+      if (d < best) best = d, gs = grid[k][2], gt = grid[k][3];
+    }
+  };
+
+  // A start settles a pixel when the patch covers it from there or, for a patch that does
+  // not fold, when Newton finds a solution at all: outside the domain it is then the only one.
+  // Where the patch folds, a pixel may have a preimage outside the domain besides one in
+  // it, so the other starts are tried too.
+  auto settles = [&folds](Placed placed) {
+    return placed == Placed::inside || (placed == Placed::outside && folds.empty());
+  };
+  constexpr int kGridStart = -2;
+
+  for (int j = j0; j <= j1; ++j) {
+    RowCrossings& row = rows[std::size_t(j - j0)];
+    if (row.count == 0) continue;
+    RowCrossing* crossing = row.crossing;
+    const int count = row.count;
+    std::sort(crossing, crossing + count, [](const RowCrossing& p, const RowCrossing& q) { return p.x < q.x; });
+    const int i0 = std::max(0, int(std::ceil(row.x_min - kSpanMargin)));
+    const int i1 = std::min(width - 1, int(std::floor(row.x_max + kSpanMargin)));
+
+    // Start at crossing k moved to column i through the inverse Jacobian there; false where
+    // the Jacobian is singular (the Coons corner M) unless the pixel is on the crossing.
+    // (ds, dt) becomes J^-1 (1, 0) there: the step to the next pixel.
+    auto from_crossing = [&](int k, int i, double& gs, double& gt, double& ds, double& dt) {
+      const RowCrossing& c = crossing[k];
+      double px, py, xs, xt, ys, yt;
+      patch.position(c.s, c.t, px, py, xs, xt, ys, yt);
+      const double det = xs * yt - xt * ys;
+      const bool regular = std::fabs(det) > 1e-9 * (std::fabs(xs * yt) + std::fabs(xt * ys));
+      ds = regular ? yt / det : 0, dt = regular ? -ys / det : 0;
+      const double ex = regular ? -xt / det : 0, et = regular ? xs / det : 0;  // J^-1 (0, 1)
+      gs = c.s + (i - c.x) * ds + (j - c.y) * ex, gt = c.t + (i - c.x) * dt + (j - c.y) * et;
+      return regular || (i == c.x && j == c.y);
+    };
+    int next = 0;            // the first crossing right of the pixel
+    bool continued = false;  // the last pixel was solved at (s, t), (ds, dt) apart from the one before
+    double s = 0, t = 0, ds = 0, dt = 0, dds = 0, ddt = 0;  // and (dds, ddt) the difference of those steps
+    for (int i = i0; i <= i1; ++i) {
+      bool passed = false;
+      while (next < count && crossing[next].x <= i + kSpanMargin) ++next, passed = true;
+      double ns, nt;
+      if (continued && !passed) {
+        // The common case: the last three solutions extrapolated (two at a stretch's start).
+        ns = s + ds + dds, nt = t + dt + ddt;
+        const Placed placed = visit(i, j, ns, nt);
+        if (settles(placed)) {
+          dds = ns - s - ds, ddt = nt - t - dt, ds = ns - s, dt = nt - t, s = ns, t = nt;
+          continue;
+        }
+      }
+      // A new stretch, or the extrapolation did not settle the pixel: the nearer crossing,
+      // the other, the grid; the last solution found continues the row.
+      dds = 0, ddt = 0;
+      const int left = next - 1, right = next < count ? next : -1;
+      const bool left_first = right < 0 || (left >= 0 && i - crossing[left].x <= crossing[right].x - i);
+      const int order[3] = {left_first ? left : right, left_first ? right : left, kGridStart};
+      continued = false;
+      for (int k : order) {
+        double cds = 0, cdt = 0;
+        if (k == kGridStart) {
+          if (continued) continue;  // only where no other start found a solution
+          from_grid(i, j, ns, nt);
+        } else if (k < 0 || !from_crossing(k, i, ns, nt, cds, cdt)) {
+          continue;
+        }
+        const Placed placed = visit(i, j, ns, nt);
+        if (placed == Placed::none) continue;
+        continued = true, s = ns, t = nt, ds = cds, dt = cdt;
+        if (settles(placed)) break;
+      }
+    }
+  }
+}
+
+// Sign of the Jacobian determinant of a patch over its domain from Bernstein coefficients.
+// Bezier: the determinant is quadratic on the triangle: its six coefficients from the values
+// at the corners and edge middles. Coons: it has degree 3 in u and in v: sixteen
+// coefficients from the values on the 4 x 4 grid of thirds. The coefficients at the domain's
+// corners are the determinant there and may vanish (the Coons corner M always does): the
+// others, all of one sign, keep the determinant away from 0 everywhere else. True for that.
+inline bool one_sign(const double* b, int n, const bool* corner) {
+  double scale = 0;
+  for (int k = 0; k < n; ++k) scale = std::max(scale, std::fabs(b[k]));
+  const double floor = 1e-9 * scale;
+  bool positive = true, negative = true;
+  for (int k = 0; k < n; ++k) {
+    positive = positive && (b[k] > floor || (corner[k] && b[k] >= -floor));
+    negative = negative && (b[k] < -floor || (corner[k] && b[k] <= floor));
+  }
+  return scale > 0 && (positive || negative);
+}
+
+template <class Patch>
+double jacobian_determinant(const Patch& patch, double s, double t) {
+  double x, y, xs, xt, ys, yt;
+  patch.position(s, t, x, y, xs, xt, ys, yt);
+  return xs * yt - xt * ys;
+}
+
+// Cubic Bernstein coefficients from the values at 0, 1/3, 2/3, 1.
+inline void cubic_bernstein(const double f[4], double b[4]) {
+  b[0] = f[0], b[3] = f[3];
+  b[1] = (-5 * f[0] + 18 * f[1] - 9 * f[2] + 2 * f[3]) / 6;
+  b[2] = (2 * f[0] - 9 * f[1] + 18 * f[2] - 5 * f[3]) / 6;
+}
+
+// Bernstein coefficients b[0..n] on [0, 1] split at 1/2 into those on [0, 1/2] (lo) and on
+// [1/2, 1] (hi): de Casteljau's algorithm. `stride` steps from one coefficient to the next.
+inline void halve_bernstein(const double* b, int n, int stride, double* lo, double* hi) {
+  double work[4];
+  for (int k = 0; k <= n; ++k) work[k] = b[k * stride];
+  lo[0] = work[0], hi[n * stride] = work[n];
+  for (int r = 1; r <= n; ++r) {
+    for (int k = 0; k + r <= n; ++k) work[k] = 0.5 * (work[k] + work[k + 1]);
+    lo[r * stride] = work[0], hi[(n - r) * stride] = work[n - r];
+  }
+}
+
+// A square of a tensor-product patch's parameter domain with the Bernstein coefficients, on
+// that square, of its Jacobian determinant (degree 3 x 3) and position (degree 2 x 2).
+struct TensorCell {
+  double det[4][4];
+  double x[3][3], y[3][3];
+  double u0 = 0, v0 = 0, size = 1;
+};
+
+// Appends to `out` the squares of `cell`, halved down to kFoldDepth times, on which the
+// determinant may vanish (its coefficients are not all of one sign, see one_sign; the
+// domain's corners may vanish), each with the box of its position's coefficients (the
+// convex hull holds the image) and its middle. middle(u, v) gives the position there.
+inline constexpr int kFoldDepth = 2;
+template <class Middle>
+void find_fold_cells(const TensorCell& cell, int depth, Middle&& middle, std::vector<FoldCell>& out) {
+  auto domain_corner = [](double u, double v) { return (u == 0 || u == 1) && (v == 0 || v == 1); };
+  const double u1 = cell.u0 + cell.size, v1 = cell.v0 + cell.size;
+  bool corner[16] = {};
+  corner[0] = domain_corner(cell.u0, cell.v0), corner[3] = domain_corner(cell.u0, v1);
+  corner[12] = domain_corner(u1, cell.v0), corner[15] = domain_corner(u1, v1);
+  if (one_sign(&cell.det[0][0], 16, corner)) return;
+  if (depth == kFoldDepth) {
+    FoldCell fold{1e300, -1e300, 1e300, -1e300, {}};
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) {
+        fold.x_lo = std::min(fold.x_lo, cell.x[i][k]), fold.x_hi = std::max(fold.x_hi, cell.x[i][k]);
+        fold.y_lo = std::min(fold.y_lo, cell.y[i][k]), fold.y_hi = std::max(fold.y_hi, cell.y[i][k]);
+      }
+    const double u = cell.u0 + cell.size / 2, v = cell.v0 + cell.size / 2;
+    const Point p = middle(u, v);
+    fold.middle = {p.x, p.y, u, v};
+    out.push_back(fold);
+    return;
+  }
+  // Halve along u (the first index), then each half along v.
+  TensorCell half[2], quarter[4];
+  for (int k = 0; k < 4; ++k) halve_bernstein(&cell.det[0][k], 3, 4, &half[0].det[0][k], &half[1].det[0][k]);
+  for (int k = 0; k < 3; ++k) {
+    halve_bernstein(&cell.x[0][k], 2, 3, &half[0].x[0][k], &half[1].x[0][k]);
+    halve_bernstein(&cell.y[0][k], 2, 3, &half[0].y[0][k], &half[1].y[0][k]);
+  }
+  for (int h = 0; h < 2; ++h) {
+    TensorCell& lo = quarter[2 * h];
+    TensorCell& hi = quarter[2 * h + 1];
+    for (int i = 0; i < 4; ++i) halve_bernstein(half[h].det[i], 3, 1, lo.det[i], hi.det[i]);
+    for (int i = 0; i < 3; ++i) {
+      halve_bernstein(half[h].x[i], 2, 1, lo.x[i], hi.x[i]);
+      halve_bernstein(half[h].y[i], 2, 1, lo.y[i], hi.y[i]);
+    }
+    lo.size = hi.size = cell.size / 2;
+    lo.u0 = hi.u0 = cell.u0 + h * cell.size / 2;
+    lo.v0 = cell.v0, hi.v0 = cell.v0 + cell.size / 2;
+  }
+  for (const TensorCell& q : quarter) find_fold_cells(q, depth + 1, middle, out);
+}
+
+}  // namespace tristream::detail
