@@ -311,3 +311,42 @@ TEST_CASE("patch membership does not depend on the solver's start", "[bezier][co
   CHECK(singular < candidates / 100);
   CHECK(other_root < candidates / 1000);
 }
+
+// The fold cells of a Coons patch (patch_scan.h) must hold its fold: where the Jacobian
+// determinant changes sign between neighbouring samples of a fine grid, the image there lies
+// in some cell's box (widened by the image of a grid step), and a patch without cells has
+// no sign change at all.
+TEST_CASE("coons fold cells hold the fold", "[coons]") {
+  const Mesh mesh = testing::random_lattice_mesh(64, 48, 200, 33, 20);
+  const Topology topo = build_topology(mesh);
+  const PixelMapping map(64, 48, 64, 48);
+  std::vector<detail::FoldCell> cells;
+  int folded = 0, crossings = 0;
+  const int n = 48;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    PatchControl control;
+    if (!patch_control(mesh, topo, t, map, control)) continue;
+    const CoonsPatch patch(control);
+    REQUIRE(patch.fold_cells(cells));
+    folded += !cells.empty();
+    auto det = [&](int i, int j) { return detail::jacobian_determinant(patch, double(i) / n, double(j) / n); };
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j)
+        for (auto [di, dj] : {std::pair{1, 0}, std::pair{0, 1}}) {
+          if (i + di > n || j + dj > n) continue;
+          if (!((det(i, j) > 0 && det(i + di, j + dj) < 0) || (det(i, j) < 0 && det(i + di, j + dj) > 0))) continue;
+          ++crossings;
+          INFO("patch " << t << " between (" << i << ", " << j << ") and (" << i + di << ", " << j + dj << ")");
+          REQUIRE(!cells.empty());
+          const Point a = patch.position(double(i) / n, double(j) / n);
+          const Point b = patch.position(double(i + di) / n, double(j + dj) / n);
+          const double reach = std::hypot(a.x - b.x, a.y - b.y);
+          bool held = false;
+          for (const detail::FoldCell& c : cells)
+            held = held || (a.x >= c.x_lo - reach && a.x <= c.x_hi + reach && a.y >= c.y_lo - reach && a.y <= c.y_hi + reach);
+          REQUIRE(held);
+        }
+  }
+  CHECK(folded > 10);
+  CHECK(crossings > 100);
+}

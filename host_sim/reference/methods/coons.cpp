@@ -127,40 +127,46 @@ void CoonsPatch::Component::expand() {
 
 bool CoonsPatch::fold_cells(std::vector<detail::FoldCell>& cells) const {
   cells.clear();
-  // Bernstein coefficients on the whole square: the determinant (degree 3 in u and in v)
-  // from its values on the grid of thirds, the position (degree 2) from the grid of halves,
-  // each converted along u, then along v.
-  detail::TensorCell cell;
-  double f[4][4];
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) f[i][j] = detail::jacobian_determinant(*this, i / 3.0, j / 3.0);
-  for (int j = 0; j < 4; ++j) {
-    const double column[4] = {f[0][j], f[1][j], f[2][j], f[3][j]};
-    double converted[4];
-    detail::cubic_bernstein(column, converted);
-    for (int i = 0; i < 4; ++i) f[i][j] = converted[i];
-  }
-  for (int i = 0; i < 4; ++i) detail::cubic_bernstein(f[i], cell.det[i]);
-  double px[3][3], py[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const Point p = position(i / 2.0, j / 2.0);
-      px[i][j] = p.x, py[i][j] = p.y;
-    }
-  auto quadratic_bernstein = [](double f0, double f1, double f2, double* b, int stride) {
-    b[0] = f0, b[stride] = 2 * f1 - (f0 + f2) / 2, b[2 * stride] = f2;
+  // Monomial coefficients m[i][j] of u^i v^j: the position's (degree 2 in each), its
+  // partial derivatives', and the Jacobian determinant's (degree 3 in each).
+  auto monomials = [](const Component& c, double (&m)[3][3]) {
+    m[0][0] = c.k, m[1][0] = c.ku, m[0][1] = c.kv, m[1][1] = c.kuv, m[2][0] = c.kuu, m[0][2] = c.kvv;
+    m[2][1] = c.kuuv, m[1][2] = c.kuvv, m[2][2] = 0;
   };
-  for (double (*grid)[3] : {px, py}) {
-    for (int j = 0; j < 3; ++j) {
-      double column[3];
-      quadratic_bernstein(grid[0][j], grid[1][j], grid[2][j], column, 1);
-      for (int i = 0; i < 3; ++i) grid[i][j] = column[i];
+  double mx[3][3], my[3][3];
+  monomials(x_, mx), monomials(y_, my);
+  auto d_u = [](const double (&m)[3][3], double (&d)[3][3]) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) d[i][j] = i < 2 ? (i + 1) * m[i + 1][j] : 0;
+  };
+  auto d_v = [](const double (&m)[3][3], double (&d)[3][3]) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) d[i][j] = j < 2 ? (j + 1) * m[i][j + 1] : 0;
+  };
+  double xu[3][3], xv[3][3], yu[3][3], yv[3][3];
+  d_u(mx, xu), d_v(mx, xv), d_u(my, yu), d_v(my, yv);
+  // x_u y_v - x_v y_u: x_u and y_u have degree (1, 2), x_v and y_v degree (2, 1).
+  double det[4][4] = {};
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 2; ++l) det[i + k][j + l] += xu[i][j] * yv[k][l] - yu[i][j] * xv[k][l];
+  // Monomials to Bernstein coefficients on [0, 1] along each index: b_i = sum over k <= i
+  // of C(i, k) / C(n, k) m_k.
+  auto to_bernstein = [](const double* m, int n, int stride, double* b) {
+    static constexpr double kChoose[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
+    double out[4];
+    for (int i = 0; i <= n; ++i) {
+      out[i] = 0;
+      for (int k = 0; k <= i; ++k) out[i] += kChoose[i][k] / kChoose[n][k] * m[k * stride];
     }
-  }
-  for (int i = 0; i < 3; ++i) {
-    quadratic_bernstein(px[i][0], px[i][1], px[i][2], cell.x[i], 1);
-    quadratic_bernstein(py[i][0], py[i][1], py[i][2], cell.y[i], 1);
-  }
+    for (int i = 0; i <= n; ++i) b[i * stride] = out[i];
+  };
+  detail::TensorCell cell;
+  for (int j = 0; j < 4; ++j) to_bernstein(&det[0][j], 3, 4, &det[0][j]);
+  for (int i = 0; i < 4; ++i) to_bernstein(det[i], 3, 1, cell.det[i]);
+  for (int j = 0; j < 3; ++j) to_bernstein(&mx[0][j], 2, 3, &mx[0][j]), to_bernstein(&my[0][j], 2, 3, &my[0][j]);
+  for (int i = 0; i < 3; ++i) to_bernstein(mx[i], 2, 1, cell.x[i]), to_bernstein(my[i], 2, 1, cell.y[i]);
   detail::find_fold_cells(cell, 0, [this](double u, double v) { return position(u, v); }, cells);
   return true;
 }

@@ -181,12 +181,12 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
   }
   for (const BoundaryArc& arc : arcs) add_arc_crossings(arc, j0, j1, rows);
 
-  // The last resort, for a pixel no other start placed: the nearest of a grid of points of
-  // the patch (made once per patch, when first needed).
-  constexpr int kGrid = 8;
+  // The last resort, for a pixel no other start placed: the two nearest points of a grid
+  // over the domain (made once per patch, when first needed), nearer first.
+  constexpr int kGrid = 4;
   std::array<double, 4> grid[(kGrid + 1) * (kGrid + 1)];
   int grid_size = 0;
-  auto from_grid = [&](int i, int j, double& gs, double& gt) {
+  auto from_grid = [&](int i, int j, double (&gs)[2], double (&gt)[2]) {
     if (grid_size == 0)
       for (int a = 0; a <= kGrid; ++a)
         for (int b = 0; b <= kGrid; ++b)
@@ -194,11 +194,16 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
             const Point p = patch.position(double(a) / kGrid, double(b) / kGrid);
             grid[grid_size++] = {p.x, p.y, double(a) / kGrid, double(b) / kGrid};
           }
-    double best = 1e300;
+    double best[2] = {1e300, 1e300};
+    int index[2] = {0, 0};
     for (int k = 0; k < grid_size; ++k) {
       const double d = std::fabs(grid[k][0] - i) + std::fabs(grid[k][1] - j);
-      if (d < best) best = d, gs = grid[k][2], gt = grid[k][3];
+      if (d < best[1]) {
+        best[1] = d, index[1] = k;
+        if (d < best[0]) std::swap(best[0], best[1]), std::swap(index[0], index[1]);
+      }
     }
+    for (int r = 0; r < 2; ++r) gs[r] = grid[index[r]][2], gt[r] = grid[index[r]][3];
   };
 
   // A start settles a pixel when the patch covers it from there or, for a patch that does
@@ -208,7 +213,7 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
   auto settles = [&folds](Placed placed) {
     return placed == Placed::inside || (placed == Placed::outside && folds.empty());
   };
-  constexpr int kGridStart = -2;
+  constexpr int kGridStart = -2;  // and -3: the grid's two starts
 
   for (int j = j0; j <= j1; ++j) {
     RowCrossings& row = rows[std::size_t(j - j0)];
@@ -254,13 +259,15 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
       dds = 0, ddt = 0;
       const int left = next - 1, right = next < count ? next : -1;
       const bool left_first = right < 0 || (left >= 0 && i - crossing[left].x <= crossing[right].x - i);
-      const int order[3] = {left_first ? left : right, left_first ? right : left, kGridStart};
+      const int order[4] = {left_first ? left : right, left_first ? right : left, kGridStart, kGridStart - 1};
       continued = false;
+      double grid_s[2], grid_t[2];
       for (int k : order) {
         double cds = 0, cdt = 0;
-        if (k == kGridStart) {
+        if (k <= kGridStart) {
           if (continued) continue;  // only where no other start found a solution
-          from_grid(i, j, ns, nt);
+          if (k == kGridStart) from_grid(i, j, grid_s, grid_t);
+          ns = grid_s[kGridStart - k], nt = grid_t[kGridStart - k];
         } else if (k < 0 || !from_crossing(k, i, ns, nt, cds, cdt)) {
           continue;
         }
@@ -276,19 +283,19 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
 // Sign of the Jacobian determinant of a patch over its domain from Bernstein coefficients.
 // Bezier: the determinant is quadratic on the triangle: its six coefficients from the values
 // at the corners and edge middles. Coons: it has degree 3 in u and in v: sixteen
-// coefficients from the values on the 4 x 4 grid of thirds. The coefficients at the domain's
+// coefficients from its monomials (CoonsPatch::fold_cells). The coefficients at the domain's
 // corners are the determinant there and may vanish (the Coons corner M always does): the
 // others, all of one sign, keep the determinant away from 0 everywhere else. True for that.
 inline bool one_sign(const double* b, int n, const bool* corner) {
   double scale = 0;
   for (int k = 0; k < n; ++k) scale = std::max(scale, std::fabs(b[k]));
   const double floor = 1e-9 * scale;
-  bool positive = true, negative = true;
-  for (int k = 0; k < n; ++k) {
+  bool positive = scale > 0, negative = scale > 0;
+  for (int k = 0; k < n && (positive || negative); ++k) {
     positive = positive && (b[k] > floor || (corner[k] && b[k] >= -floor));
     negative = negative && (b[k] < -floor || (corner[k] && b[k] <= floor));
   }
-  return scale > 0 && (positive || negative);
+  return positive || negative;
 }
 
 template <class Patch>
@@ -296,13 +303,6 @@ double jacobian_determinant(const Patch& patch, double s, double t) {
   double x, y, xs, xt, ys, yt;
   patch.position(s, t, x, y, xs, xt, ys, yt);
   return xs * yt - xt * ys;
-}
-
-// Cubic Bernstein coefficients from the values at 0, 1/3, 2/3, 1.
-inline void cubic_bernstein(const double f[4], double b[4]) {
-  b[0] = f[0], b[3] = f[3];
-  b[1] = (-5 * f[0] + 18 * f[1] - 9 * f[2] + 2 * f[3]) / 6;
-  b[2] = (2 * f[0] - 9 * f[1] + 18 * f[2] - 5 * f[3]) / 6;
 }
 
 // Bernstein coefficients b[0..n] on [0, 1] split at 1/2 into those on [0, 1/2] (lo) and on
