@@ -221,7 +221,8 @@ TEST_CASE("patch methods reject an unknown variant", "[bezier][coons]") {
   for (const char* method : {"bezier", "coons"}) CHECK_THROWS_AS(render(tri, method, "fast"), UsageError);
 }
 
-// The exact variant's coverage guarantee rests on this: micro-triangles that tile a region,
+// The bilinear pre-fill, and the tessellated candidates of the exact variant (Bezier patches
+// that may fold), rest on this: micro-triangles that tile a region,
 // with nodes anywhere (also exactly on pixel centres, so ties happen on edges and at nodes),
 // cover each pixel sample point of the region exactly once, in either winding.
 TEST_CASE("micro-triangles of a tiling cover each pixel exactly once", "[bezier][coons]") {
