@@ -148,7 +148,6 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
   Tally tally;
   Field prefill(width, height, 1);
   std::fill(prefill.v.begin(), prefill.v.end(), 0.0);
-  std::vector<double> value(1);
   std::vector<detail::MicroVertex> nodes;
   detail::ScanScratch rows;
   std::vector<detail::FoldCell> fold_cells;
@@ -166,11 +165,11 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
     if (patch.fold_cells(fold_cells)) {
       ++tally.by_rows;
       tally.folded_by_rows += folded;
-      detail::rasterize_rows(patch, fold_cells, value, canvas, rows);
+      detail::rasterize_rows(patch, fold_cells, canvas, rows);
     } else {
-      detail::rasterize_tessellated(patch, value, canvas, nodes);
+      detail::rasterize_tessellated(patch, canvas, nodes);
     }
-    detail::rasterize_tessellated(patch, value, tessellated, nodes);
+    detail::rasterize_tessellated(patch, tessellated, nodes);
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     for (int i = 0; i <= 32; ++i)
       for (int j = 0; j <= 32; ++j) {

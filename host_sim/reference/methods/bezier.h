@@ -48,6 +48,11 @@ class BezierPatch {
     const detail::Quadratic2* q = value_.data();
     for (std::size_t c = 0, n = value_.size(); c < n; ++c) out[c] = q[c](a, b);
   }
+  // The same added to sum[0..channels).
+  void add_values(double a, double b, double* sum) const {
+    const detail::Quadratic2* q = value_.data();
+    for (std::size_t c = 0, n = value_.size(); c < n; ++c) sum[c] += q[c](a, b);
+  }
   // Solves position(a, b) = (x, y) by Newton's method from (a, b) near the solution. The map
   // is quadratic, so after a step d the residual is exactly -(k_aa d_a^2 + k_ab d_a d_b +
   // k_bb d_b^2) and the Jacobian grows by the Hessian times d: one evaluation, then cheap

@@ -68,6 +68,11 @@ class CoonsPatch {
     const Component* q = value_.data();
     for (std::size_t c = 0, n = value_.size(); c < n; ++c) out[c] = q[c].at(u, v);
   }
+  // The same added to sum[0..channels).
+  void add_values(double u, double v, double* sum) const {
+    const Component* q = value_.data();
+    for (std::size_t c = 0, n = value_.size(); c < n; ++c) sum[c] += q[c].at(u, v);
+  }
   // Solves position(u, v) = (x, y) by Newton's method from (u, v) near the solution, until a
   // step is shorter than detail::kNewtonStep (patch_raster.h). Returns false, leaving (u, v)
   // alone, when the Jacobian is singular, the iteration moves detail::kNewtonReach away or does not settle in

@@ -103,6 +103,12 @@ class PatchCanvas {
     double* s = sum_.data() + p * prefill_.channels;
     for (int c = 0, n = prefill_.channels; c < n; ++c) s[c] += values[c];
   }
+  // The same with the values of `patch` at (s, t) (Patch::add_values).
+  template <class Patch>
+  void add_inside(std::size_t p, const Patch& patch, double s, double t) {
+    ++count_[p];
+    patch.add_values(s, t, sum_.data() + p * prefill_.channels);
+  }
 
   std::uint32_t count(int i, int j) const { return count_[std::size_t(j) * prefill_.width + i]; }
 
@@ -340,12 +346,9 @@ void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, 
 
 // The exact variant for any patch: each candidate pixel of patch.tessellate, placed by
 // patch.solve from its guess and kept when in the closed domain (patch.in_domain), adds the
-// patch's values there to `canvas`, once per pixel (the canvas's stamps). `value` holds one
-// double per channel.
+// patch's values there to `canvas`, once per pixel (the canvas's stamps).
 template <class Patch>
-void rasterize_tessellated(const Patch& patch, std::vector<double>& value, PatchCanvas& canvas,
-                           std::vector<MicroVertex>& node) {
-  double* out = value.data();
+void rasterize_tessellated(const Patch& patch, PatchCanvas& canvas, std::vector<MicroVertex>& node) {
   canvas.begin_patch();
   patch.tessellate(canvas.width(), canvas.height(), node, [&](int x, int y, double s, double t) {
     const std::size_t p = canvas.index(x, y);
@@ -353,25 +356,19 @@ void rasterize_tessellated(const Patch& patch, std::vector<double>& value, Patch
     if (!patch.solve(x, y, s, t)) return;
     if (!patch.in_domain(s, t)) return;  // outside the patch: between a chord and its arc, or a margin
     canvas.claim(p);
-    patch.values(s, t, out);
-    canvas.add_inside(p, out);
+    canvas.add_inside(p, patch, s, t);
   });
 }
 
 // The same by rows (patch_scan.h), each candidate once, for a patch whose fold, if any,
 // `folds` holds.
 template <class Patch>
-void rasterize_rows(const Patch& patch, const std::vector<FoldCell>& folds, std::vector<double>& value,
-                    PatchCanvas& canvas, ScanScratch& scan) {
-  double* out = value.data();
+void rasterize_rows(const Patch& patch, const std::vector<FoldCell>& folds, PatchCanvas& canvas, ScanScratch& scan) {
   scan_rows(patch, folds, canvas.width(), canvas.height(), scan, [&](int x, int y, double& s, double& t) {
     if (!patch.solve(x, y, s, t)) return Placed::none;
     if (!patch.in_domain(s, t)) return Placed::outside;
     const std::size_t p = canvas.index(x, y);
-    if (canvas.inside(p)) {
-      patch.values(s, t, out);
-      canvas.add_inside(p, out);
-    }
+    if (canvas.inside(p)) canvas.add_inside(p, patch, s, t);
     return Placed::inside;
   });
 }
@@ -387,11 +384,11 @@ struct PatchScratch {
 // Coons patch always, a Bezier patch when it provably does not fold), else by its
 // tessellation.
 template <class Patch>
-void rasterize_exact(const Patch& patch, std::vector<double>& value, PatchCanvas& canvas, PatchScratch& scratch) {
+void rasterize_exact(const Patch& patch, PatchCanvas& canvas, PatchScratch& scratch) {
   if (patch.fold_cells(scratch.folds))
-    rasterize_rows(patch, scratch.folds, value, canvas, scratch.scan);
+    rasterize_rows(patch, scratch.folds, canvas, scratch.scan);
   else
-    rasterize_tessellated(patch, value, canvas, scratch.node);
+    rasterize_tessellated(patch, canvas, scratch.node);
 }
 
 // The render loop of the patch methods: the bilinear pre-fill, then for each triangle with
@@ -411,14 +408,13 @@ void render_patches(std::string_view method, const Mesh& mesh, int domain_width,
 
   PatchControl control;
   PatchScratch scratch;
-  std::vector<double> value(std::size_t(std::max(mesh.value_count, 1)));
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     if (!patch_control(mesh, topo, t, map, control) || !accept(control)) continue;
     const Patch patch(control);
     if (thesis)
       splat(patch, control.channels, canvas);
     else
-      rasterize(patch, value, canvas, scratch);
+      rasterize(patch, canvas, scratch);
   }
   if (thesis)
     canvas.resolve_thesis(out);

@@ -220,7 +220,8 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
     if (row.count == 0) continue;
     RowCrossing* crossing = row.crossing;
     const int count = row.count;
-    std::sort(crossing, crossing + count, [](const RowCrossing& p, const RowCrossing& q) { return p.x < q.x; });
+    for (int k = 1; k < count; ++k)  // insertion sort by x: a row has a few crossings
+      for (int m = k; m > 0 && crossing[m].x < crossing[m - 1].x; --m) std::swap(crossing[m], crossing[m - 1]);
     const int i0 = std::max(0, int(std::ceil(row.x_min - kSpanMargin)));
     const int i1 = std::min(width - 1, int(std::floor(row.x_max + kSpanMargin)));
 
