@@ -57,8 +57,9 @@ class BezierPatch {
   // is quadratic, so after a step d the residual is exactly -(k_aa d_a^2 + k_ab d_a d_b +
   // k_bb d_b^2) and the Jacobian grows by the Hessian times d: one evaluation, then cheap
   // steps, until a step is shorter than detail::kNewtonStep (patch_raster.h). Returns false,
-  // leaving (a, b) alone, when the Jacobian is singular, the iteration moves detail::kNewtonReach away or does
-  // not settle in kNewtonIterations steps (beside a fold, see patch_raster.h).
+  // leaving (a, b) alone, when the Jacobian is singular, the solution lies detail::kNewtonReach
+  // or more from the start, or Newton does not settle in kNewtonIterations steps (beside a
+  // fold, see patch_raster.h).
   bool solve(double x, double y, double& a, double& b) const;
   // The closed parameter domain a, b, c >= 0, widened by detail::kDomainTolerance.
   static bool in_domain(double a, double b) {
@@ -133,7 +134,6 @@ inline bool BezierPatch::solve(double x, double y, double& a, double& b) const {
   double px, py, xa, xb, ya, yb;
   position(a, b, px, py, xa, xb, ya, yb);
   XY r{x - px, y - py};
-  if (std::fabs(r[0]) + std::fabs(r[1]) < detail::kExactResidual) return true;  // as CoonsPatch::solve
   XY ja{xa, ya}, jb{xb, yb};  // columns of the Jacobian
   double ca = a, cb = b;
   for (int iteration = 0; iteration < detail::kNewtonIterations; ++iteration) {
@@ -142,19 +142,13 @@ inline bool BezierPatch::solve(double x, double y, double& a, double& b) const {
     const double da = (jb[1] * r[0] - jb[0] * r[1]) / det;
     const double db = (ja[0] * r[1] - ja[1] * r[0]) / det;
     ca += da, cb += db;
-    if (!(std::fabs(ca - a) + std::fabs(cb - b) < detail::kNewtonReach)) return false;
     if (std::fabs(da) + std::fabs(db) < detail::kNewtonStep) {
+      // Far from the start is another solution than the one sought (beside a fold).
+      if (!(std::fabs(ca - a) + std::fabs(cb - b) < detail::kNewtonReach)) return false;
       a = ca, b = cb;
       return true;
     }
     r = -(kaa * (da * da) + kab * (da * db) + kbb * (db * db));
-    // The residual left is exact (the map is quadratic): the next step, J^-1 r, is at most
-    // |r| (sum of |J|'s entries) / |det|. Where that is below kSolveError, stop here.
-    const double norm = std::fabs(ja[0]) + std::fabs(ja[1]) + std::fabs(jb[0]) + std::fabs(jb[1]);
-    if ((std::fabs(r[0]) + std::fabs(r[1])) * norm < detail::kSolveError * std::fabs(det)) {
-      a = ca, b = cb;
-      return true;
-    }
     ja += 2 * da * kaa + db * kab;
     jb += da * kab + 2 * db * kbb;
   }

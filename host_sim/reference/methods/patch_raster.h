@@ -154,10 +154,6 @@ inline constexpr double kArcMargin = 1.0 / 256;
 // parameter errors of about its square root), so the step rules; it may take up to
 // kNewtonIterations steps.
 inline constexpr double kNewtonStep = 1e-7;
-// BezierPatch::solve also stops once the error left after its step, estimated from the
-// exact residual there, is below kSolveError in the parameters: the same accuracy, often an
-// iteration earlier.
-inline constexpr double kSolveError = 1e-12;
 // Newton gives up when it moves farther than kNewtonReach (sum of both parameters) from its
 // start: the domain's size, since a start may be a pixel from a thin patch's solution.
 inline constexpr double kNewtonReach = 1.0;
