@@ -127,6 +127,65 @@ struct DirectWriter {
         store_rgb<F>(p, uint8_t(r >> s), uint8_t(g >> s), uint8_t(b >> s), x, y, dither);
     }
   }
+#if TS_USE_SSE2
+  // Pixels x0..x1 of row y from the three q16_16 values in lanes 0..2 of v (rounding offset
+  // included), stepped by the lanes of dv: a pixel is one vector addition, its bytes come from
+  // saturating packs, which clamp int32(v) >> 16 to [0, 255] exactly as clamp_u8 does (the
+  // shifted value fits int16), so no range check is needed.
+  void put_span_lanes(uint8_t* p, int32_t x0, int32_t x1, int32_t y, const uint32_t* v, const uint32_t* dv) const {
+    constexpr int bpp = bytes_per_pixel(F);
+    constexpr bool bgr = F == PixelFormat::xrgb8888;  // lanes in memory order: B, G, R, then 0xFF
+    constexpr bool is_rgb565 = F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be;
+    __m128i value = bgr ? _mm_setr_epi32(int32_t(v[2]), int32_t(v[1]), int32_t(v[0]), 0xFF << 16)
+                        : _mm_setr_epi32(int32_t(v[0]), int32_t(v[1]), int32_t(v[2]), 0);
+    const __m128i step = bgr ? _mm_setr_epi32(int32_t(dv[2]), int32_t(dv[1]), int32_t(dv[0]), 0)
+                             : _mm_setr_epi32(int32_t(dv[0]), int32_t(dv[1]), int32_t(dv[2]), 0);
+    auto bytes = [](__m128i w) {
+      const __m128i t = _mm_srai_epi32(w, q16_16::frac_bits);
+      const __m128i t16 = _mm_packs_epi32(t, t);
+      return uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(t16, t16)));
+    };
+    if constexpr (F == PixelFormat::rgb888) {
+      // Four bytes per pixel but the last: the fourth is the next pixel's first, written next.
+      for (int32_t x = x0; x < x1; ++x, p += bpp, value = _mm_add_epi32(value, step)) {
+        const uint32_t u = bytes(value);
+        memcpy(p, &u, 4);
+      }
+      const uint32_t u = bytes(value);
+      p[0] = uint8_t(u);
+      p[1] = uint8_t(u >> 8);
+      p[2] = uint8_t(u >> 16);
+    } else if constexpr (F == PixelFormat::xrgb8888) {
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, value = _mm_add_epi32(value, step)) {
+        const uint32_t u = bytes(value);
+        memcpy(p, &u, 4);
+      }
+    } else if (is_rgb565 && !dither) {
+      // pack565 in lanes: clamp_u8, v * max + 127 (at most 255 * 63 + 127), divided by 255 as
+      // (t * 0x8081) >> 23 (exact for t <= 16313; test_formats checks every 8-bit value), then the
+      // fields placed by one multiply-add: lane 0 R * 2^11 + G * 2^5, lane 1 B.
+      const __m128i zero = _mm_setzero_si128(), max8 = _mm_set1_epi16(255), offset = _mm_set1_epi16(127);
+      const __m128i scale = _mm_setr_epi16(31, 63, 31, 0, 0, 0, 0, 0);
+      const __m128i div255 = _mm_set1_epi16(int16_t(0x8081));
+      const __m128i place = _mm_setr_epi16(1 << 11, 1 << 5, 1, 0, 0, 0, 0, 0);
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, value = _mm_add_epi32(value, step)) {
+        const __m128i t = _mm_srai_epi32(value, q16_16::frac_bits);
+        __m128i c = _mm_min_epi16(_mm_max_epi16(_mm_packs_epi32(t, t), zero), max8);
+        c = _mm_add_epi16(_mm_mullo_epi16(c, scale), offset);
+        c = _mm_madd_epi16(_mm_srli_epi16(_mm_mulhi_epu16(c, div255), 7), place);
+        const uint32_t w = uint32_t(_mm_cvtsi128_si32(_mm_add_epi32(c, _mm_srli_epi64(c, 32))));
+        constexpr int lo = F == PixelFormat::rgb565_le ? 0 : 1;
+        p[lo] = uint8_t(w);
+        p[1 - lo] = uint8_t(w >> 8);
+      }
+    } else {
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, value = _mm_add_epi32(value, step)) {
+        const uint32_t u = bytes(value);
+        store_rgb<F>(p, uint8_t(u), uint8_t(u >> 8), uint8_t(u >> 16), x, y, dither);
+      }
+    }
+  }
+#endif
   void put(uint8_t* p, int32_t x, int32_t y, const int32_t* v) const {
     if constexpr (F == PixelFormat::coverage8) {
       store_rgb<F>(p, 0, 0, 0, x, y, false);
@@ -198,6 +257,12 @@ struct BilinearShader {
       // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded into
       // the start value (covered pixels hold values far from the int32 limits).
       for (int c = 0; c < Channels; ++c) v[c] += 1u << (q16_16::frac_bits - 1);
+#if TS_USE_SSE2
+      if constexpr (Channels == 3) {
+        writer.put_span_lanes(p, x0, x1, y, v, dv);
+        return;
+      }
+#endif
       // Values are linear along the span, so when both ends round into [0, 255] every pixel
       // does: no clamping (the exact values of covered pixels are far from the int32 limits).
       uint32_t out_of_range = 0;
