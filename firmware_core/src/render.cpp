@@ -438,9 +438,12 @@ static_assert(2 * (int64_t(64) << config::subpixel_bits) * (int64_t(64) << confi
 // cost more than the rest of a small triangle's rows; elsewhere column by column, stopping at the
 // first uncovered column after the covered ones (a row's covered columns are contiguous).
 #if TS_USE_SSE2
+// Groups: vectors of four columns per edge, as many as the box needs (at most 3 for boxes below 12
+// columns), so the whole state stays in registers.
+template <int Groups>
 class RowMasks {
  public:
-  RowMasks(const int32_t* row, const int32_t* a, const int32_t* b) {
+  __attribute__((always_inline)) RowMasks(const int32_t* row, const int32_t* a, const int32_t* b) {
     for (int k = 0; k < 3; ++k) {
       const __m128i ak = _mm_set1_epi32(a[k]);
       const __m128i four_a = _mm_slli_epi32(ak, 2);
@@ -448,31 +451,34 @@ class RowMasks {
       __m128i e = _mm_add_epi32(_mm_set1_epi32(row[k]), _mm_and_si128(ak, _mm_set_epi32(-1, -1, -1, 0)));
       e = _mm_add_epi32(e, _mm_and_si128(ak, _mm_set_epi32(-1, -1, 0, 0)));
       e = _mm_add_epi32(e, _mm_and_si128(ak, _mm_set_epi32(-1, 0, 0, 0)));
-      for (int j = 0; j < 4; ++j) {
+      for (int j = 0; j < Groups; ++j) {
         e_[k][j] = e;
         e = _mm_add_epi32(e, four_a);
       }
       b_[k] = _mm_set1_epi32(b[k]);
     }
   }
-  uint32_t covered() const {
+  __attribute__((always_inline)) uint32_t covered() const {
     __m128i any_negative[4];
-    for (int j = 0; j < 4; ++j) any_negative[j] = _mm_or_si128(_mm_or_si128(e_[0][j], e_[1][j]), e_[2][j]);
+    for (int j = 0; j < Groups; ++j) any_negative[j] = _mm_or_si128(_mm_or_si128(e_[0][j], e_[1][j]), e_[2][j]);
+    // Columns past the groups: negative (not covered).
+    for (int j = Groups; j < 4; ++j) any_negative[j] = _mm_set1_epi32(-1);
     // Saturating packs keep each lane's sign: 16 signs in 16 bytes, one bit each by movemask.
     const __m128i lo = _mm_packs_epi32(any_negative[0], any_negative[1]);
     const __m128i hi = _mm_packs_epi32(any_negative[2], any_negative[3]);
     return ~uint32_t(_mm_movemask_epi8(_mm_packs_epi16(lo, hi))) & 0xFFFFu;
   }
-  void next_row() {
+  __attribute__((always_inline)) void next_row() {
     for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 4; ++j) e_[k][j] = _mm_add_epi32(e_[k][j], b_[k]);
+      for (int j = 0; j < Groups; ++j) e_[k][j] = _mm_add_epi32(e_[k][j], b_[k]);
   }
 
  private:
-  __m128i e_[3][4];
+  __m128i e_[3][Groups];
   __m128i b_[3];
 };
 #else
+template <int Groups>
 class RowMasks {
  public:
   RowMasks(const int32_t* row, const int32_t* a, const int32_t* b) {
@@ -497,6 +503,10 @@ class RowMasks {
 };
 #endif
 
+template <int Groups, typename Shader>
+void scan_rows(const TriangleView& tv, const Edge* edges, int64_t area2, int32_t left, uint32_t box, const int32_t* row,
+               const int32_t* a, const int32_t* b, int32_t y0, int32_t y1, int32_t cx0, int32_t cx1, Shader& shader);
+
 // Rows y0..y1 (already clipped) of a triangle whose pixel box has columns left..right: each row
 // is scanned over the whole box, so xs is the row's first covered pixel even when the clip
 // (columns cx0..cx1) cuts the span.
@@ -511,8 +521,23 @@ void scan_small(const TriangleView& tv, const Edge* edges, int64_t area2, int32_
     row[k] = int32_t(edges[k].a * left + edges[k].b * y0 + edges[k].c);
   }
   const uint32_t box = (2u << (right - left)) - 1;  // covered columns at most; right - left < 16
-  static_assert(scan_max_extent <= 16, "scan rows are 16-bit masks");
-  RowMasks masks(row, a, b);
+  static_assert(scan_max_extent <= 12, "scan rows are at most three groups of four columns");
+#if TS_USE_SSE2
+  switch ((right - left) / 4) {
+    case 0: return scan_rows<1>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
+    case 1: return scan_rows<2>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
+    default: return scan_rows<3>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
+  }
+#else
+  scan_rows<1>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);  // one copy: Groups unused
+#endif
+}
+
+// The rows of scan_small with masks of Groups * 4 columns (the box's width at most).
+template <int Groups, typename Shader>
+void scan_rows(const TriangleView& tv, const Edge* edges, int64_t area2, int32_t left, uint32_t box, const int32_t* row,
+               const int32_t* a, const int32_t* b, int32_t y0, int32_t y1, int32_t cx0, int32_t cx1, Shader& shader) {
+  RowMasks<Groups> masks(row, a, b);
   bool started = false;
   for (int32_t y = y0; y <= y1; ++y, masks.next_row()) {
     const uint32_t mask = masks.covered() & box;
