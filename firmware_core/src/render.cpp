@@ -652,9 +652,10 @@ struct ActiveSet {
   void set_at(uint32_t p) { words[p / 32] |= 1u << (p % 32); }
   void clear_at(uint32_t p) { words[p / 32] &= ~(1u << (p % 32)); }
 
-  // Calls f(t) for every live triangle t of the window, in order, a word of bits at a time.
+  // Calls f(t, w) for the live triangles of the window a word at a time, in order: bit i of w
+  // (nonzero) is triangle t + i.
   template <typename F>
-  void for_each_live(F&& f) const {
+  void for_each_live_word(F&& f) const {
     uint32_t t = base, p = base < cursor ? pos(base) : 0;
     while (t < cursor) {
       uint32_t w = words[p / 32] >> (p % 32);
@@ -663,14 +664,18 @@ struct ActiveSet {
         span = cursor - t;
         w &= (1u << span) - 1;  // span < 32 here
       }
-      while (w) {
-        f(t + uint32_t(__builtin_ctz(w)));
-        w &= w - 1;
-      }
+      if (w) f(t, w);
       t += span;
       p += span;
       if (p == capacity) p = 0;
     }
+  }
+  // Calls f(t) for every live triangle t of the window, in order.
+  template <typename F>
+  void for_each_live(F&& f) const {
+    for_each_live_word([&](uint32_t t, uint32_t w) {
+      for (; w; w &= w - 1) f(t + uint32_t(__builtin_ctz(w)));
+    });
   }
 
   void reset() {
@@ -764,26 +769,38 @@ struct ColumnWindow {
       : lo(first_at_least(map, rect.x0 * (1 << config::subpixel_bits))),
         hi(first_at_least(map, (rect.x1 - 1) * (1 << config::subpixel_bits) + 1)) {}
 
-  bool misses(const BlobLayer& layer, uint32_t t) const {
-    const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
-    const int32_t x0 = load_u16(layer.positions + 4 * size_t(load_u16(p)));
-    const int32_t x1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)));
-    const int32_t x2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)));
-    // One sign test, not two comparisons: compilers turn (max < lo) | (min >= hi) into two
-    // branches, and the first is taken for a share of the triangles that grows along the band
-    // (unpredictable in the middle tiles), while the whole test is rarely false.
-    return ((max3(x0, x1, x2) - lo) | (hi - 1 - min3(x0, x1, x2))) < 0;
+  // The triangles t + i (bit i of live) whose columns meet the tile, as bits. A loop without
+  // branches on the data and without calls (so its pointers and bounds stay in registers): the
+  // test is one sign, not (max < lo) | (min >= hi), which compilers turn into two branches, the
+  // first taken for a share of the triangles that grows along the band (unpredictable in the
+  // middle tiles).
+  uint32_t meeting(const BlobLayer& layer, uint32_t t, uint32_t live) const {
+    const uint8_t* const triangles = layer.triangles + size_t(t) * blob_triangle_size;
+    const uint8_t* const positions = layer.positions;
+    const int32_t low = lo, high = hi - 1;
+    uint32_t hits = 0;
+    for (; live; live &= live - 1) {
+      const uint32_t i = uint32_t(__builtin_ctz(live));
+      const uint8_t* p = triangles + size_t(i) * blob_triangle_size;
+      const int32_t x0 = load_u16(positions + 4 * size_t(load_u16(p)));
+      const int32_t x1 = load_u16(positions + 4 * size_t(load_u16(p + 2)));
+      const int32_t x2 = load_u16(positions + 4 * size_t(load_u16(p + 4)));
+      const int32_t outside = (max3(x0, x1, x2) - low) | (high - min3(x0, x1, x2));  // < 0: misses
+      hits |= uint32_t(outside >= 0) << i;
+    }
+    return hits;
   }
 };
 
 template <typename Shader>
 void draw_layer(const ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
   const ColumnWindow columns(map, rect);
-  set.for_each_live([&](uint32_t t) {
-    if (columns.misses(*set.layer, t)) return;
-    TriangleView tv;
-    load_triangle(*set.layer, t, map, &tv);
-    rasterize(tv, rect, shader);
+  set.for_each_live_word([&](uint32_t t, uint32_t live) {
+    for (uint32_t hits = columns.meeting(*set.layer, t, live); hits; hits &= hits - 1) {
+      TriangleView tv;
+      load_triangle(*set.layer, t + uint32_t(__builtin_ctz(hits)), map, &tv);
+      rasterize(tv, rect, shader);
+    }
   });
 }
 
