@@ -423,7 +423,9 @@ struct Corner {
 // Small triangles: the rows and columns of their pixel box (at most this many) are scanned
 // with the three edge functions stepped in int32, instead of the span steppers and their
 // divisions. Both paths test the same exact predicate, so they cover the same pixels.
-constexpr int32_t scan_max_extent = 12;
+// With SSE2 a row of a 16-column box costs about as much as the span steppers' row, without their
+// setup; the column scan of other targets pays per column.
+constexpr int32_t scan_max_extent = TS_USE_SSE2 ? 16 : 12;
 static_assert(scan_max_extent <= 62, "the scan path's int32 edge values need boxes below 64 pixels");
 
 // Edge values on the pixel box of a triangle whose box is below 64 x 64 pixels: for a pixel x of
@@ -438,7 +440,7 @@ static_assert(2 * (int64_t(64) << config::subpixel_bits) * (int64_t(64) << confi
 // cost more than the rest of a small triangle's rows; elsewhere column by column, stopping at the
 // first uncovered column after the covered ones (a row's covered columns are contiguous).
 #if TS_USE_SSE2
-// Groups: vectors of four columns per edge, as many as the box needs (at most 3 for boxes below 12
+// Groups: vectors of four columns per edge, as many as the box needs (at most 4 for boxes below 16
 // columns), so the whole state stays in registers.
 template <int Groups>
 class RowMasks {
@@ -521,12 +523,13 @@ void scan_small(const TriangleView& tv, const Edge* edges, int64_t area2, int32_
     row[k] = int32_t(edges[k].a * left + edges[k].b * y0 + edges[k].c);
   }
   const uint32_t box = (2u << (right - left)) - 1;  // covered columns at most; right - left < 16
-  static_assert(scan_max_extent <= 12, "scan rows are at most three groups of four columns");
+  static_assert(scan_max_extent <= 16, "scan rows are at most four groups of four columns");
 #if TS_USE_SSE2
   switch ((right - left) / 4) {
     case 0: return scan_rows<1>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
     case 1: return scan_rows<2>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
-    default: return scan_rows<3>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
+    case 2: return scan_rows<3>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
+    default: return scan_rows<4>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
   }
 #else
   scan_rows<1>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);  // one copy: Groups unused
