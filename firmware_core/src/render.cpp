@@ -91,6 +91,16 @@ inline void row_extent(const BlobLayer& layer, uint32_t t, const Mapping& map, i
   *bottom = position_fx::from_raw(map.y(max3(y0, y1, y2))).floor_to_int();
 }
 
+#if TS_USE_SSE2
+// Lane by lane, the low 32 bits of v * k (SSE2 has no 32-bit lane product: two 32 x 32 -> 64
+// products of the even and the odd lanes).
+inline __m128i mullo_lanes(__m128i v, uint32_t k) {
+  const __m128i kk = _mm_set1_epi32(int32_t(k));
+  const __m128i even = _mm_mul_epu32(v, kk), odd = _mm_mul_epu32(_mm_srli_epi64(v, 32), kk);
+  return _mm_unpacklo_epi32(_mm_shuffle_epi32(even, _MM_SHUFFLE(0, 0, 2, 0)), _mm_shuffle_epi32(odd, _MM_SHUFFLE(0, 0, 2, 0)));
+}
+#endif
+
 // Pixel writers. A writer receives q24_8 channel values of one covered pixel.
 template <PixelFormat F, int Channels, bool YCbCr>
 struct DirectWriter {
@@ -132,14 +142,16 @@ struct DirectWriter {
   // included), stepped by the lanes of dv: a pixel is one vector addition, its bytes come from
   // saturating packs, which clamp int32(v) >> 16 to [0, 255] exactly as clamp_u8 does (the
   // shifted value fits int16), so no range check is needed.
-  void put_span_lanes(uint8_t* p, int32_t x0, int32_t x1, int32_t y, const uint32_t* v, const uint32_t* dv) const {
+  // The lanes of put_span_lanes from channels 0, 1, 2: in memory order (B, G, R and 0xFF in lane
+  // 3 for a value, 0 for a step, for XRGB8888).
+  static __m128i lanes(uint32_t c0, uint32_t c1, uint32_t c2, bool value) {
+    constexpr bool bgr = F == PixelFormat::xrgb8888;
+    return bgr ? _mm_setr_epi32(int32_t(c2), int32_t(c1), int32_t(c0), value ? 0xFF << 16 : 0)
+               : _mm_setr_epi32(int32_t(c0), int32_t(c1), int32_t(c2), 0);
+  }
+  void put_span_lanes(uint8_t* p, int32_t x0, int32_t x1, int32_t y, __m128i value, __m128i step) const {
     constexpr int bpp = bytes_per_pixel(F);
-    constexpr bool bgr = F == PixelFormat::xrgb8888;  // lanes in memory order: B, G, R, then 0xFF
     constexpr bool is_rgb565 = F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be;
-    __m128i value = bgr ? _mm_setr_epi32(int32_t(v[2]), int32_t(v[1]), int32_t(v[0]), 0xFF << 16)
-                        : _mm_setr_epi32(int32_t(v[0]), int32_t(v[1]), int32_t(v[2]), 0);
-    const __m128i step = bgr ? _mm_setr_epi32(int32_t(dv[2]), int32_t(dv[1]), int32_t(dv[0]), 0)
-                             : _mm_setr_epi32(int32_t(dv[0]), int32_t(dv[1]), int32_t(dv[2]), 0);
     auto bytes = [](__m128i w) {
       const __m128i t = _mm_srai_epi32(w, q16_16::frac_bits);
       const __m128i t16 = _mm_packs_epi32(t, t);
@@ -233,6 +245,12 @@ struct BilinearShader {
   int bpp;
   BilinearChannel ch[Channels];
   int32_t xr = 0, yr = 0;
+#if TS_USE_SSE2
+  // RGB to a writer that takes rounded values: the channels' values (rounding offset included),
+  // steps per column and per row in the writer's lanes.
+  static constexpr bool in_lanes = Channels == 3 && Writer::takes_rounded;
+  __m128i lane_ref{}, lane_dx{}, lane_dy{};
+#endif
 
   void begin(const TriangleView& tv, const Edge* e, int64_t area2) {
     const RoundingDivider by_area2(area2);
@@ -245,8 +263,27 @@ struct BilinearShader {
       const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
       ch[c].setup(e, e_ref, by_area2, v3);
     }
+#if TS_USE_SSE2
+    if constexpr (in_lanes) {
+      // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded in.
+      constexpr uint32_t half = 1u << (q16_16::frac_bits - 1);
+      lane_ref = Writer::lanes(uint32_t(ch[0].v_ref) + half, uint32_t(ch[1].v_ref) + half, uint32_t(ch[2].v_ref) + half,
+                               true);
+      lane_dx = Writer::lanes(uint32_t(ch[0].dvdx), uint32_t(ch[1].dvdx), uint32_t(ch[2].dvdx), false);
+      lane_dy = Writer::lanes(uint32_t(ch[0].dvdy), uint32_t(ch[1].dvdy), uint32_t(ch[2].dvdy), false);
+    }
+#endif
   }
   void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {
+#if TS_USE_SSE2
+    if constexpr (in_lanes) {
+      // BilinearChannel::at in lanes: the same sums modulo 2^32.
+      const __m128i v = _mm_add_epi32(lane_ref, _mm_add_epi32(mullo_lanes(lane_dx, uint32_t(x0 - xr)),
+                                                              mullo_lanes(lane_dy, uint32_t(y - yr))));
+      writer.put_span_lanes(writer.at(x0, y), x0, x1, y, v, lane_dx);
+      return;
+    }
+#endif
     uint32_t v[Channels], dv[Channels];
     for (int c = 0; c < Channels; ++c) {
       v[c] = ch[c].at(x0, y, xr, yr);
@@ -257,12 +294,6 @@ struct BilinearShader {
       // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded into
       // the start value (covered pixels hold values far from the int32 limits).
       for (int c = 0; c < Channels; ++c) v[c] += 1u << (q16_16::frac_bits - 1);
-#if TS_USE_SSE2
-      if constexpr (Channels == 3) {
-        writer.put_span_lanes(p, x0, x1, y, v, dv);
-        return;
-      }
-#endif
       // Values are linear along the span, so when both ends round into [0, 255] every pixel
       // does: no clamping (the exact values of covered pixels are far from the int32 limits).
       uint32_t out_of_range = 0;
