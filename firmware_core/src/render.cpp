@@ -684,7 +684,6 @@ struct ActiveSet {
   uint32_t next(uint32_t p) const { return p + 1 == capacity ? 0 : p + 1; }
   bool test_at(uint32_t p) const { return (words[p / 32] >> (p % 32)) & 1u; }
   void set_at(uint32_t p) { words[p / 32] |= 1u << (p % 32); }
-  void clear_at(uint32_t p) { words[p / 32] &= ~(1u << (p % 32)); }
 
   // Calls f(t, w) for the live triangles of the window a word at a time, in order: bit i of w
   // (nonzero) is triangle t + i.
@@ -704,13 +703,6 @@ struct ActiveSet {
       if (p == capacity) p = 0;
     }
   }
-  // Calls f(t) for every live triangle t of the window, in order.
-  template <typename F>
-  void for_each_live(F&& f) const {
-    for_each_live_word([&](uint32_t t, uint32_t w) {
-      for (; w; w &= w - 1) f(t + uint32_t(__builtin_ctz(w)));
-    });
-  }
 
   void reset() {
     for (uint32_t i = 0; i < capacity / 32; ++i) words[i] = 0;
@@ -720,22 +712,44 @@ struct ActiveSet {
   // False when the window would exceed the capacity.
   bool advance(const Mapping& map, int32_t y0, int32_t y1) {
     if (base < cursor) {
-      for_each_live([&](uint32_t t) {
-        int32_t top, bottom;
-        row_extent(*layer, t, map, &top, &bottom);
-        if (bottom < y0) clear_at(pos(t));
-      });
-      uint32_t p = pos(base);
+      // A word of the bitmap at a time: the ended triangles' bits collected without branches on
+      // the data, then cleared at once (no division per triangle for its bit position).
+      uint32_t t = base, p = pos(base);
+      const uint8_t* const triangles = layer->triangles;
+      const uint8_t* const positions = layer->positions;
+      while (t < cursor) {
+        const uint32_t shift = p % 32;
+        uint32_t span = 32 - shift, w = words[p / 32] >> shift;
+        if (span > cursor - t) {
+          span = cursor - t;
+          w &= (1u << span) - 1;  // span < 32 here
+        }
+        uint32_t ended = 0;
+        for (; w; w &= w - 1) {
+          const uint32_t i = uint32_t(__builtin_ctz(w));
+          const uint8_t* q = triangles + size_t(t + i) * blob_triangle_size;
+          const int32_t ya = load_u16(positions + 4 * size_t(load_u16(q)) + 2);
+          const int32_t yb = load_u16(positions + 4 * size_t(load_u16(q + 2)) + 2);
+          const int32_t yc = load_u16(positions + 4 * size_t(load_u16(q + 4)) + 2);
+          const int32_t bottom = position_fx::from_raw(map.y(max3(ya, yb, yc))).floor_to_int();  // as row_extent
+          ended |= uint32_t(bottom < y0) << i;
+        }
+        words[p / 32] &= ~(ended << shift);
+        t += span;
+        p += span;
+        if (p == capacity) p = 0;
+      }
+      p = pos(base);
       while (base < cursor && !test_at(p)) ++base, p = next(p);
     }
-    while (cursor < layer->triangle_count) {
+    for (uint32_t p = cursor < layer->triangle_count ? pos(cursor) : 0; cursor < layer->triangle_count; p = next(p)) {
       int32_t top, bottom;
       row_extent(*layer, cursor, map, &top, &bottom);
       if (top > y1) break;
       const bool live = bottom >= y0 && top <= bottom;
       if (live) {
         if (cursor - base >= capacity) return false;
-        set_at(pos(cursor));
+        set_at(p);
       } else if (base == cursor) {
         ++base;
       }
