@@ -685,8 +685,8 @@ struct ActiveSet {
   bool test_at(uint32_t p) const { return (words[p / 32] >> (p % 32)) & 1u; }
   void set_at(uint32_t p) { words[p / 32] |= 1u << (p % 32); }
 
-  // Calls f(t, w) for the live triangles of the window a word at a time, in order: bit i of w
-  // (nonzero) is triangle t + i.
+  // Calls f(t, w, span) for the live triangles of the window a word at a time, in order: bit i of
+  // w (nonzero) is triangle t + i, and triangles t .. t + span - 1 are in the window (span <= 32).
   template <typename F>
   void for_each_live_word(F&& f) const {
     uint32_t t = base, p = base < cursor ? pos(base) : 0;
@@ -697,7 +697,7 @@ struct ActiveSet {
         span = cursor - t;
         w &= (1u << span) - 1;  // span < 32 here
       }
-      if (w) f(t, w);
+      if (w) f(t, w, span);
       t += span;
       p += span;
       if (p == capacity) p = 0;
@@ -822,11 +822,29 @@ struct ColumnWindow {
   // test is one sign, not (max < lo) | (min >= hi), which compilers turn into two branches, the
   // first taken for a share of the triangles that grows along the band (unpredictable in the
   // middle tiles).
-  uint32_t meeting(const BlobLayer& layer, uint32_t t, uint32_t live) const {
+  uint32_t meeting(const BlobLayer& layer, uint32_t t, uint32_t live, uint32_t span) const {
     const uint8_t* const triangles = layer.triangles + size_t(t) * blob_triangle_size;
     const uint8_t* const positions = layer.positions;
     const int32_t low = lo, high = hi - 1;
     uint32_t hits = 0;
+#if TS_USE_SSE2
+    if (span == 32) {
+      // Bytes of the word with two live triangles or more: all eight triangles in 16-bit lanes
+      // (they are in the window, so their records are valid), the other bytes one by one below.
+      uint32_t rest = 0;
+      for (int g = 0; g < 4; ++g) {
+        const uint32_t byte = (live >> (8 * g)) & 0xFFu;
+        if (byte & (byte - 1)) {
+          hits |= (meeting8(triangles + size_t(8 * g) * blob_triangle_size, positions) & byte) << (8 * g);
+        } else {
+          rest |= byte << (8 * g);
+        }
+      }
+      live = rest;
+    }
+#else
+    (void)span;
+#endif
     for (; live; live &= live - 1) {
       const uint32_t i = uint32_t(__builtin_ctz(live));
       const uint8_t* p = triangles + size_t(i) * blob_triangle_size;
@@ -838,13 +856,33 @@ struct ColumnWindow {
     }
     return hits;
   }
+#if TS_USE_SSE2
+  // Bit j: triangle j of the eight records at p meets the columns. Coordinates (16 bits) and
+  // bounds are compared as signed 16-bit lanes after flipping the top bit (the order of the
+  // unsigned values); the bounds are clamped to 16 bits only in the direction that keeps more
+  // triangles (a triangle kept in error is clipped away exactly by rasterize, one missed would be
+  // wrong): min(lo, 65535) for max < lo, max(hi - 1, 0) for min > hi - 1.
+  uint32_t meeting8(const uint8_t* p, const uint8_t* positions) const {
+    auto x = [&](int j, int k) {
+      return int16_t(load_u16(positions + 4 * size_t(load_u16(p + j * blob_triangle_size + 2 * k))) ^ 0x8000);
+    };
+    __m128i v[3];
+    for (int k = 0; k < 3; ++k) v[k] = _mm_setr_epi16(x(0, k), x(1, k), x(2, k), x(3, k), x(4, k), x(5, k), x(6, k), x(7, k));
+    const __m128i mn = _mm_min_epi16(_mm_min_epi16(v[0], v[1]), v[2]);
+    const __m128i mx = _mm_max_epi16(_mm_max_epi16(v[0], v[1]), v[2]);
+    const int32_t low = lo < 65535 ? lo : 65535, high = hi - 1 > 0 ? hi - 1 : 0;
+    const __m128i outside = _mm_or_si128(_mm_cmpgt_epi16(_mm_set1_epi16(int16_t(low ^ 0x8000)), mx),
+                                         _mm_cmpgt_epi16(mn, _mm_set1_epi16(int16_t(high ^ 0x8000))));
+    return ~uint32_t(_mm_movemask_epi8(_mm_packs_epi16(outside, outside))) & 0xFFu;
+  }
+#endif
 };
 
 template <typename Shader>
 void draw_layer(const ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
   const ColumnWindow columns(map, rect);
-  set.for_each_live_word([&](uint32_t t, uint32_t live) {
-    for (uint32_t hits = columns.meeting(*set.layer, t, live); hits; hits &= hits - 1) {
+  set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span) {
+    for (uint32_t hits = columns.meeting(*set.layer, t, live, span); hits; hits &= hits - 1) {
       TriangleView tv;
       load_triangle(*set.layer, t + uint32_t(__builtin_ctz(hits)), map, &tv);
       rasterize(tv, rect, shader);
