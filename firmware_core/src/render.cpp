@@ -863,11 +863,20 @@ struct ColumnWindow {
   // triangles (a triangle kept in error is clipped away exactly by rasterize, one missed would be
   // wrong): min(lo, 65535) for max < lo, max(hi - 1, 0) for min > hi - 1.
   uint32_t meeting8(const uint8_t* p, const uint8_t* positions) const {
-    auto x = [&](int j, int k) {
-      return int16_t(load_u16(positions + 4 * size_t(load_u16(p + j * blob_triangle_size + 2 * k))) ^ 0x8000);
-    };
+    auto x = [&](int j, int k) { return int(load_u16(positions + 4 * size_t(load_u16(p + j * blob_triangle_size + 2 * k)))); };
+    const __m128i top_bit = _mm_set1_epi16(int16_t(0x8000));
     __m128i v[3];
-    for (int k = 0; k < 3; ++k) v[k] = _mm_setr_epi16(x(0, k), x(1, k), x(2, k), x(3, k), x(4, k), x(5, k), x(6, k), x(7, k));
+    for (int k = 0; k < 3; ++k) {
+      __m128i w = _mm_cvtsi32_si128(x(0, k));
+      w = _mm_insert_epi16(w, x(1, k), 1);
+      w = _mm_insert_epi16(w, x(2, k), 2);
+      w = _mm_insert_epi16(w, x(3, k), 3);
+      w = _mm_insert_epi16(w, x(4, k), 4);
+      w = _mm_insert_epi16(w, x(5, k), 5);
+      w = _mm_insert_epi16(w, x(6, k), 6);
+      w = _mm_insert_epi16(w, x(7, k), 7);
+      v[k] = _mm_xor_si128(w, top_bit);
+    }
     const __m128i mn = _mm_min_epi16(_mm_min_epi16(v[0], v[1]), v[2]);
     const __m128i mx = _mm_max_epi16(_mm_max_epi16(v[0], v[1]), v[2]);
     const int32_t low = lo < 65535 ? lo : 65535, high = hi - 1 > 0 ? hi - 1 : 0;
