@@ -149,6 +149,50 @@ struct DirectWriter {
     return bgr ? _mm_setr_epi32(int32_t(c2), int32_t(c1), int32_t(c0), value ? 0xFF << 16 : 0)
                : _mm_setr_epi32(int32_t(c0), int32_t(c1), int32_t(c2), 0);
   }
+  // Channels 0, 1, 2 in lanes 0, 1, 2 to the lanes of put_lanes.
+  static __m128i ordered(__m128i rgb) {
+    if constexpr (F == PixelFormat::xrgb8888) return _mm_shuffle_epi32(rgb, _MM_SHUFFLE(3, 0, 1, 2));
+    return rgb;
+  }
+  // pack565 in lanes of rounded int32 R, G, B (not dithered): clamp_u8, v * max + 127 (at most
+  // 255 * 63 + 127), divided by 255 as (t * 0x8081) >> 23 (exact for t <= 16313; test_formats
+  // checks every 8-bit value), then the fields placed by one multiply-add: lane 0 R * 2^11 + G * 2^5,
+  // lane 1 B.
+  static void put565(uint8_t* p, __m128i q) {
+    const __m128i scale = _mm_setr_epi16(31, 63, 31, 0, 0, 0, 0, 0);
+    const __m128i place = _mm_setr_epi16(1 << 11, 1 << 5, 1, 0, 0, 0, 0, 0);
+    __m128i c = _mm_min_epi16(_mm_max_epi16(_mm_packs_epi32(q, q), _mm_setzero_si128()), _mm_set1_epi16(255));
+    c = _mm_add_epi16(_mm_mullo_epi16(c, scale), _mm_set1_epi16(127));
+    c = _mm_madd_epi16(_mm_srli_epi16(_mm_mulhi_epu16(c, _mm_set1_epi16(int16_t(0x8081))), 7), place);
+    const uint32_t w = uint32_t(_mm_cvtsi128_si32(_mm_add_epi32(c, _mm_srli_epi64(c, 32))));
+    constexpr int lo = F == PixelFormat::rgb565_le ? 0 : 1;
+    p[lo] = uint8_t(w);
+    p[1 - lo] = uint8_t(w >> 8);
+  }
+  // One pixel at p from rounded int32 channel values in the lanes of put_span_lanes (unclamped:
+  // the saturating packs clamp exactly as clamp_u8). wide: RGB888 may write the byte after the
+  // pixel (the next pixel's, written later).
+  void put_lanes(uint8_t* p, __m128i q, int32_t x, int32_t y, bool wide) const {
+    constexpr bool is_rgb565 = F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be;
+    const __m128i q16 = _mm_packs_epi32(q, q);
+    uint32_t u = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(q16, q16)));
+    if constexpr (F == PixelFormat::rgb888) {
+      if (wide) {
+        memcpy(p, &u, 4);
+      } else {
+        p[0] = uint8_t(u);
+        p[1] = uint8_t(u >> 8);
+        p[2] = uint8_t(u >> 16);
+      }
+    } else if constexpr (F == PixelFormat::xrgb8888) {
+      u |= 0xFF000000u;
+      memcpy(p, &u, 4);
+    } else if (is_rgb565 && !dither) {
+      put565(p, q);
+    } else {
+      store_rgb<F>(p, uint8_t(u), uint8_t(u >> 8), uint8_t(u >> 16), x, y, dither);
+    }
+  }
   void put_span_lanes(uint8_t* p, int32_t x0, int32_t x1, int32_t y, __m128i value, __m128i step) const {
     constexpr int bpp = bytes_per_pixel(F);
     constexpr bool is_rgb565 = F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be;
@@ -173,23 +217,8 @@ struct DirectWriter {
         memcpy(p, &u, 4);
       }
     } else if (is_rgb565 && !dither) {
-      // pack565 in lanes: clamp_u8, v * max + 127 (at most 255 * 63 + 127), divided by 255 as
-      // (t * 0x8081) >> 23 (exact for t <= 16313; test_formats checks every 8-bit value), then the
-      // fields placed by one multiply-add: lane 0 R * 2^11 + G * 2^5, lane 1 B.
-      const __m128i zero = _mm_setzero_si128(), max8 = _mm_set1_epi16(255), offset = _mm_set1_epi16(127);
-      const __m128i scale = _mm_setr_epi16(31, 63, 31, 0, 0, 0, 0, 0);
-      const __m128i div255 = _mm_set1_epi16(int16_t(0x8081));
-      const __m128i place = _mm_setr_epi16(1 << 11, 1 << 5, 1, 0, 0, 0, 0, 0);
-      for (int32_t x = x0; x <= x1; ++x, p += bpp, value = _mm_add_epi32(value, step)) {
-        const __m128i t = _mm_srai_epi32(value, q16_16::frac_bits);
-        __m128i c = _mm_min_epi16(_mm_max_epi16(_mm_packs_epi32(t, t), zero), max8);
-        c = _mm_add_epi16(_mm_mullo_epi16(c, scale), offset);
-        c = _mm_madd_epi16(_mm_srli_epi16(_mm_mulhi_epu16(c, div255), 7), place);
-        const uint32_t w = uint32_t(_mm_cvtsi128_si32(_mm_add_epi32(c, _mm_srli_epi64(c, 32))));
-        constexpr int lo = F == PixelFormat::rgb565_le ? 0 : 1;
-        p[lo] = uint8_t(w);
-        p[1 - lo] = uint8_t(w >> 8);
-      }
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, value = _mm_add_epi32(value, step))
+        put565(p, _mm_srai_epi32(value, q16_16::frac_bits));
     } else {
       for (int32_t x = x0; x <= x1; ++x, p += bpp, value = _mm_add_epi32(value, step)) {
         const uint32_t u = bytes(value);
@@ -416,6 +445,33 @@ struct ZienkiewiczShader {
     constexpr int vf = ZienkiewiczChannel::value_frac_bits;
     auto* p = writer.at(x0, y);
     const int step = bpp;  // a local: the pixel stores could alias the member
+#if TS_USE_SSE2
+    if constexpr (Writer::takes_rounded && Channels == 3) {
+      // The three channels' values and differences in 64-bit lanes (channels 0, 1 in one vector,
+      // 2 in another): six additions a pixel, the rounded values are the high words.
+      const int32_t last = x1 - xs;
+      zienkiewicz_row_chunks<3>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, last, uint64_t(1) << (vf - 1),
+                                [&](int32_t n, int32_t end, const CubicSteps* s) {
+                                  auto pair = [](uint64_t c0, uint64_t c1) {
+                                    return _mm_set_epi64x(int64_t(c1), int64_t(c0));
+                                  };
+                                  __m128i v01 = pair(s[0].v, s[1].v), v2 = pair(s[2].v, 0);
+                                  __m128i d01 = pair(s[0].d1, s[1].d1), d2 = pair(s[2].d1, 0);
+                                  __m128i e01 = pair(s[0].d2, s[1].d2), e2 = pair(s[2].d2, 0);
+                                  const __m128i f01 = pair(s[0].d3, s[1].d3), f2 = pair(s[2].d3, 0);
+                                  for (; n <= end; ++n) {
+                                    const __m128i q = _mm_unpacklo_epi64(_mm_shuffle_epi32(v01, _MM_SHUFFLE(3, 1, 3, 1)),
+                                                                         _mm_shuffle_epi32(v2, _MM_SHUFFLE(1, 1, 1, 1)));
+                                    writer.put_lanes(p, Writer::ordered(q), xs + n, y, n != last);
+                                    p += step;
+                                    v01 = _mm_add_epi64(v01, d01), v2 = _mm_add_epi64(v2, d2);
+                                    d01 = _mm_add_epi64(d01, e01), d2 = _mm_add_epi64(d2, e2);
+                                    e01 = _mm_add_epi64(e01, f01), e2 = _mm_add_epi64(e2, f2);
+                                  }
+                                });
+      return;
+    }
+#endif
     if constexpr (Writer::takes_rounded) {
       // Rounding to nearest folded into the values (exact: the differences are unchanged).
       zienkiewicz_row<Channels>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),

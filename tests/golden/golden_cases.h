@@ -34,6 +34,10 @@ inline const std::vector<Case>& cases() {
       {"rgb-bilinear-rgb888-tiles32", "rgb", "bilinear", core::PixelFormat::rgb888, 32, 32, false, 0, 0, {}},
       {"rgb-bilinear-rgb565le-tiles24x16", "rgb", "bilinear", core::PixelFormat::rgb565_le, 24, 16, false, 0, 0, {}},
       {"rgb-bilinear-xrgb8888-full-300x200", "rgb", "bilinear", core::PixelFormat::xrgb8888, 0, 0, false, 300, 200, {}},
+      // Direct RGB rows of zienkiewicz (forward differenced and per pixel) in the packed formats.
+      {"rgb-zienkiewicz-rgb565be-tiles32", "rgb", "zienkiewicz", core::PixelFormat::rgb565_be, 32, 32, false, 0, 0, {}},
+      {"rgb-zienkiewicz-xrgb8888-full-384x256", "rgb", "zienkiewicz", core::PixelFormat::xrgb8888, 0, 0, false, 384, 256,
+       {}},
   };
   return all;
 }
