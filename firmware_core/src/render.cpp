@@ -91,6 +91,16 @@ inline void row_extent(const BlobLayer& layer, uint32_t t, const Mapping& map, i
   *bottom = position_fx::from_raw(map.y(max3(y0, y1, y2))).floor_to_int();
 }
 
+#if TS_USE_SSE2
+// Lane by lane, the low 32 bits of v * k (SSE2 has no 32-bit lane product: two 32 x 32 -> 64
+// products of the even and the odd lanes).
+inline __m128i mullo_lanes(__m128i v, uint32_t k) {
+  const __m128i kk = _mm_set1_epi32(int32_t(k));
+  const __m128i even = _mm_mul_epu32(v, kk), odd = _mm_mul_epu32(_mm_srli_epi64(v, 32), kk);
+  return _mm_unpacklo_epi32(_mm_shuffle_epi32(even, _MM_SHUFFLE(0, 0, 2, 0)), _mm_shuffle_epi32(odd, _MM_SHUFFLE(0, 0, 2, 0)));
+}
+#endif
+
 // Pixel writers. A writer receives q24_8 channel values of one covered pixel.
 template <PixelFormat F, int Channels, bool YCbCr>
 struct DirectWriter {
@@ -127,6 +137,96 @@ struct DirectWriter {
         store_rgb<F>(p, uint8_t(r >> s), uint8_t(g >> s), uint8_t(b >> s), x, y, dither);
     }
   }
+#if TS_USE_SSE2
+  // Pixels x0..x1 of row y from the three q16_16 values in lanes 0..2 of v (rounding offset
+  // included), stepped by the lanes of dv: a pixel is one vector addition, its bytes come from
+  // saturating packs, which clamp int32(v) >> 16 to [0, 255] exactly as clamp_u8 does (the
+  // shifted value fits int16), so no range check is needed.
+  // The lanes of put_span_lanes from channels 0, 1, 2: in memory order (B, G, R and 0xFF in lane
+  // 3 for a value, 0 for a step, for XRGB8888).
+  static __m128i lanes(uint32_t c0, uint32_t c1, uint32_t c2, bool value) {
+    constexpr bool bgr = F == PixelFormat::xrgb8888;
+    return bgr ? _mm_setr_epi32(int32_t(c2), int32_t(c1), int32_t(c0), value ? 0xFF << 16 : 0)
+               : _mm_setr_epi32(int32_t(c0), int32_t(c1), int32_t(c2), 0);
+  }
+  // Channels 0, 1, 2 in lanes 0, 1, 2 to the lanes of put_lanes.
+  static __m128i ordered(__m128i rgb) {
+    if constexpr (F == PixelFormat::xrgb8888) return _mm_shuffle_epi32(rgb, _MM_SHUFFLE(3, 0, 1, 2));
+    return rgb;
+  }
+  // pack565 in lanes of rounded int32 R, G, B (not dithered): clamp_u8, v * max + 127 (at most
+  // 255 * 63 + 127), divided by 255 as (t * 0x8081) >> 23 (exact for t <= 16313; test_formats
+  // checks every 8-bit value), then the fields placed by one multiply-add: lane 0 R * 2^11 + G * 2^5,
+  // lane 1 B.
+  static void put565(uint8_t* p, __m128i q) {
+    const __m128i scale = _mm_setr_epi16(31, 63, 31, 0, 0, 0, 0, 0);
+    const __m128i place = _mm_setr_epi16(1 << 11, 1 << 5, 1, 0, 0, 0, 0, 0);
+    __m128i c = _mm_min_epi16(_mm_max_epi16(_mm_packs_epi32(q, q), _mm_setzero_si128()), _mm_set1_epi16(255));
+    c = _mm_add_epi16(_mm_mullo_epi16(c, scale), _mm_set1_epi16(127));
+    c = _mm_madd_epi16(_mm_srli_epi16(_mm_mulhi_epu16(c, _mm_set1_epi16(int16_t(0x8081))), 7), place);
+    const uint32_t w = uint32_t(_mm_cvtsi128_si32(_mm_add_epi32(c, _mm_srli_epi64(c, 32))));
+    constexpr int lo = F == PixelFormat::rgb565_le ? 0 : 1;
+    p[lo] = uint8_t(w);
+    p[1 - lo] = uint8_t(w >> 8);
+  }
+  // One pixel at p from rounded int32 channel values in the lanes of put_span_lanes (unclamped:
+  // the saturating packs clamp exactly as clamp_u8). wide: RGB888 may write the byte after the
+  // pixel (the next pixel's, written later).
+  void put_lanes(uint8_t* p, __m128i q, int32_t x, int32_t y, bool wide) const {
+    constexpr bool is_rgb565 = F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be;
+    const __m128i q16 = _mm_packs_epi32(q, q);
+    uint32_t u = uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(q16, q16)));
+    if constexpr (F == PixelFormat::rgb888) {
+      if (wide) {
+        memcpy(p, &u, 4);
+      } else {
+        p[0] = uint8_t(u);
+        p[1] = uint8_t(u >> 8);
+        p[2] = uint8_t(u >> 16);
+      }
+    } else if constexpr (F == PixelFormat::xrgb8888) {
+      u |= 0xFF000000u;
+      memcpy(p, &u, 4);
+    } else if (is_rgb565 && !dither) {
+      put565(p, q);
+    } else {
+      store_rgb<F>(p, uint8_t(u), uint8_t(u >> 8), uint8_t(u >> 16), x, y, dither);
+    }
+  }
+  void put_span_lanes(uint8_t* p, int32_t x0, int32_t x1, int32_t y, __m128i value, __m128i step) const {
+    constexpr int bpp = bytes_per_pixel(F);
+    constexpr bool is_rgb565 = F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be;
+    auto bytes = [](__m128i w) {
+      const __m128i t = _mm_srai_epi32(w, q16_16::frac_bits);
+      const __m128i t16 = _mm_packs_epi32(t, t);
+      return uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(t16, t16)));
+    };
+    if constexpr (F == PixelFormat::rgb888) {
+      // Four bytes per pixel but the last: the fourth is the next pixel's first, written next.
+      for (int32_t x = x0; x < x1; ++x, p += bpp, value = _mm_add_epi32(value, step)) {
+        const uint32_t u = bytes(value);
+        memcpy(p, &u, 4);
+      }
+      const uint32_t u = bytes(value);
+      p[0] = uint8_t(u);
+      p[1] = uint8_t(u >> 8);
+      p[2] = uint8_t(u >> 16);
+    } else if constexpr (F == PixelFormat::xrgb8888) {
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, value = _mm_add_epi32(value, step)) {
+        const uint32_t u = bytes(value);
+        memcpy(p, &u, 4);
+      }
+    } else if (is_rgb565 && !dither) {
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, value = _mm_add_epi32(value, step))
+        put565(p, _mm_srai_epi32(value, q16_16::frac_bits));
+    } else {
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, value = _mm_add_epi32(value, step)) {
+        const uint32_t u = bytes(value);
+        store_rgb<F>(p, uint8_t(u), uint8_t(u >> 8), uint8_t(u >> 16), x, y, dither);
+      }
+    }
+  }
+#endif
   void put(uint8_t* p, int32_t x, int32_t y, const int32_t* v) const {
     if constexpr (F == PixelFormat::coverage8) {
       store_rgb<F>(p, 0, 0, 0, x, y, false);
@@ -174,6 +274,12 @@ struct BilinearShader {
   int bpp;
   BilinearChannel ch[Channels];
   int32_t xr = 0, yr = 0;
+#if TS_USE_SSE2
+  // RGB to a writer that takes rounded values: the channels' values (rounding offset included),
+  // steps per column and per row in the writer's lanes.
+  static constexpr bool in_lanes = Channels == 3 && Writer::takes_rounded;
+  __m128i lane_ref{}, lane_dx{}, lane_dy{};
+#endif
 
   void begin(const TriangleView& tv, const Edge* e, int64_t area2) {
     const RoundingDivider by_area2(area2);
@@ -186,8 +292,27 @@ struct BilinearShader {
       const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
       ch[c].setup(e, e_ref, by_area2, v3);
     }
+#if TS_USE_SSE2
+    if constexpr (in_lanes) {
+      // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded in.
+      constexpr uint32_t half = 1u << (q16_16::frac_bits - 1);
+      lane_ref = Writer::lanes(uint32_t(ch[0].v_ref) + half, uint32_t(ch[1].v_ref) + half, uint32_t(ch[2].v_ref) + half,
+                               true);
+      lane_dx = Writer::lanes(uint32_t(ch[0].dvdx), uint32_t(ch[1].dvdx), uint32_t(ch[2].dvdx), false);
+      lane_dy = Writer::lanes(uint32_t(ch[0].dvdy), uint32_t(ch[1].dvdy), uint32_t(ch[2].dvdy), false);
+    }
+#endif
   }
   void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {
+#if TS_USE_SSE2
+    if constexpr (in_lanes) {
+      // BilinearChannel::at in lanes: the same sums modulo 2^32.
+      const __m128i v = _mm_add_epi32(lane_ref, _mm_add_epi32(mullo_lanes(lane_dx, uint32_t(x0 - xr)),
+                                                              mullo_lanes(lane_dy, uint32_t(y - yr))));
+      writer.put_span_lanes(writer.at(x0, y), x0, x1, y, v, lane_dx);
+      return;
+    }
+#endif
     uint32_t v[Channels], dv[Channels];
     for (int c = 0; c < Channels; ++c) {
       v[c] = ch[c].at(x0, y, xr, yr);
@@ -320,6 +445,33 @@ struct ZienkiewiczShader {
     constexpr int vf = ZienkiewiczChannel::value_frac_bits;
     auto* p = writer.at(x0, y);
     const int step = bpp;  // a local: the pixel stores could alias the member
+#if TS_USE_SSE2
+    if constexpr (Writer::takes_rounded && Channels == 3) {
+      // The three channels' values and differences in 64-bit lanes (channels 0, 1 in one vector,
+      // 2 in another): six additions a pixel, the rounded values are the high words.
+      const int32_t last = x1 - xs;
+      zienkiewicz_row_chunks<3>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, last, uint64_t(1) << (vf - 1),
+                                [&](int32_t n, int32_t end, const CubicSteps* s) {
+                                  auto pair = [](uint64_t c0, uint64_t c1) {
+                                    return _mm_set_epi64x(int64_t(c1), int64_t(c0));
+                                  };
+                                  __m128i v01 = pair(s[0].v, s[1].v), v2 = pair(s[2].v, 0);
+                                  __m128i d01 = pair(s[0].d1, s[1].d1), d2 = pair(s[2].d1, 0);
+                                  __m128i e01 = pair(s[0].d2, s[1].d2), e2 = pair(s[2].d2, 0);
+                                  const __m128i f01 = pair(s[0].d3, s[1].d3), f2 = pair(s[2].d3, 0);
+                                  for (; n <= end; ++n) {
+                                    const __m128i q = _mm_unpacklo_epi64(_mm_shuffle_epi32(v01, _MM_SHUFFLE(3, 1, 3, 1)),
+                                                                         _mm_shuffle_epi32(v2, _MM_SHUFFLE(1, 1, 1, 1)));
+                                    writer.put_lanes(p, Writer::ordered(q), xs + n, y, n != last);
+                                    p += step;
+                                    v01 = _mm_add_epi64(v01, d01), v2 = _mm_add_epi64(v2, d2);
+                                    d01 = _mm_add_epi64(d01, e01), d2 = _mm_add_epi64(d2, e2);
+                                    e01 = _mm_add_epi64(e01, f01), e2 = _mm_add_epi64(e2, f2);
+                                  }
+                                });
+      return;
+    }
+#endif
     if constexpr (Writer::takes_rounded) {
       // Rounding to nearest folded into the values (exact: the differences are unchanged).
       zienkiewicz_row<Channels>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),
@@ -358,7 +510,9 @@ struct Corner {
 // Small triangles: the rows and columns of their pixel box (at most this many) are scanned
 // with the three edge functions stepped in int32, instead of the span steppers and their
 // divisions. Both paths test the same exact predicate, so they cover the same pixels.
-constexpr int32_t scan_max_extent = 12;
+// With SSE2 a row of a 16-column box costs about as much as the span steppers' row, without their
+// setup; the column scan of other targets pays per column.
+constexpr int32_t scan_max_extent = TS_USE_SSE2 ? 16 : 12;
 static_assert(scan_max_extent <= 62, "the scan path's int32 edge values need boxes below 64 pixels");
 
 // Edge values on the pixel box of a triangle whose box is below 64 x 64 pixels: for a pixel x of
@@ -373,9 +527,12 @@ static_assert(2 * (int64_t(64) << config::subpixel_bits) * (int64_t(64) << confi
 // cost more than the rest of a small triangle's rows; elsewhere column by column, stopping at the
 // first uncovered column after the covered ones (a row's covered columns are contiguous).
 #if TS_USE_SSE2
+// Groups: vectors of four columns per edge, as many as the box needs (at most 4 for boxes below 16
+// columns), so the whole state stays in registers.
+template <int Groups>
 class RowMasks {
  public:
-  RowMasks(const int32_t* row, const int32_t* a, const int32_t* b) {
+  __attribute__((always_inline)) RowMasks(const int32_t* row, const int32_t* a, const int32_t* b) {
     for (int k = 0; k < 3; ++k) {
       const __m128i ak = _mm_set1_epi32(a[k]);
       const __m128i four_a = _mm_slli_epi32(ak, 2);
@@ -383,31 +540,34 @@ class RowMasks {
       __m128i e = _mm_add_epi32(_mm_set1_epi32(row[k]), _mm_and_si128(ak, _mm_set_epi32(-1, -1, -1, 0)));
       e = _mm_add_epi32(e, _mm_and_si128(ak, _mm_set_epi32(-1, -1, 0, 0)));
       e = _mm_add_epi32(e, _mm_and_si128(ak, _mm_set_epi32(-1, 0, 0, 0)));
-      for (int j = 0; j < 4; ++j) {
+      for (int j = 0; j < Groups; ++j) {
         e_[k][j] = e;
         e = _mm_add_epi32(e, four_a);
       }
       b_[k] = _mm_set1_epi32(b[k]);
     }
   }
-  uint32_t covered() const {
+  __attribute__((always_inline)) uint32_t covered() const {
     __m128i any_negative[4];
-    for (int j = 0; j < 4; ++j) any_negative[j] = _mm_or_si128(_mm_or_si128(e_[0][j], e_[1][j]), e_[2][j]);
+    for (int j = 0; j < Groups; ++j) any_negative[j] = _mm_or_si128(_mm_or_si128(e_[0][j], e_[1][j]), e_[2][j]);
+    // Columns past the groups: negative (not covered).
+    for (int j = Groups; j < 4; ++j) any_negative[j] = _mm_set1_epi32(-1);
     // Saturating packs keep each lane's sign: 16 signs in 16 bytes, one bit each by movemask.
     const __m128i lo = _mm_packs_epi32(any_negative[0], any_negative[1]);
     const __m128i hi = _mm_packs_epi32(any_negative[2], any_negative[3]);
     return ~uint32_t(_mm_movemask_epi8(_mm_packs_epi16(lo, hi))) & 0xFFFFu;
   }
-  void next_row() {
+  __attribute__((always_inline)) void next_row() {
     for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 4; ++j) e_[k][j] = _mm_add_epi32(e_[k][j], b_[k]);
+      for (int j = 0; j < Groups; ++j) e_[k][j] = _mm_add_epi32(e_[k][j], b_[k]);
   }
 
  private:
-  __m128i e_[3][4];
+  __m128i e_[3][Groups];
   __m128i b_[3];
 };
 #else
+template <int Groups>
 class RowMasks {
  public:
   RowMasks(const int32_t* row, const int32_t* a, const int32_t* b) {
@@ -432,6 +592,10 @@ class RowMasks {
 };
 #endif
 
+template <int Groups, typename Shader>
+void scan_rows(const TriangleView& tv, const Edge* edges, int64_t area2, int32_t left, uint32_t box, const int32_t* row,
+               const int32_t* a, const int32_t* b, int32_t y0, int32_t y1, int32_t cx0, int32_t cx1, Shader& shader);
+
 // Rows y0..y1 (already clipped) of a triangle whose pixel box has columns left..right: each row
 // is scanned over the whole box, so xs is the row's first covered pixel even when the clip
 // (columns cx0..cx1) cuts the span.
@@ -446,8 +610,24 @@ void scan_small(const TriangleView& tv, const Edge* edges, int64_t area2, int32_
     row[k] = int32_t(edges[k].a * left + edges[k].b * y0 + edges[k].c);
   }
   const uint32_t box = (2u << (right - left)) - 1;  // covered columns at most; right - left < 16
-  static_assert(scan_max_extent <= 16, "scan rows are 16-bit masks");
-  RowMasks masks(row, a, b);
+  static_assert(scan_max_extent <= 16, "scan rows are at most four groups of four columns");
+#if TS_USE_SSE2
+  switch ((right - left) / 4) {
+    case 0: return scan_rows<1>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
+    case 1: return scan_rows<2>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
+    case 2: return scan_rows<3>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
+    default: return scan_rows<4>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
+  }
+#else
+  scan_rows<1>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);  // one copy: Groups unused
+#endif
+}
+
+// The rows of scan_small with masks of Groups * 4 columns (the box's width at most).
+template <int Groups, typename Shader>
+void scan_rows(const TriangleView& tv, const Edge* edges, int64_t area2, int32_t left, uint32_t box, const int32_t* row,
+               const int32_t* a, const int32_t* b, int32_t y0, int32_t y1, int32_t cx0, int32_t cx1, Shader& shader) {
+  RowMasks<Groups> masks(row, a, b);
   bool started = false;
   for (int32_t y = y0; y <= y1; ++y, masks.next_row()) {
     const uint32_t mask = masks.covered() & box;
@@ -511,6 +691,22 @@ void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
   SpanStepper spans;
   spans.init(edges, first);
   bool started = false;
+  if (corner_count == 0) {
+    // Rows [first, last] = [r0, r1]: no row test, no corner loop, one test for an empty or
+    // clipped-away span (cs > ce also when xs > xe).
+    for (int32_t y = first; y <= last; ++y, spans.next_row()) {
+      int32_t xs, xe;
+      spans.span(&xs, &xe);
+      const int32_t cs = max2(xs, clip.x0), ce = min2(xe, clip.x1 - 1);
+      if (cs > ce) continue;
+      if (!started) {
+        shader.begin(tv, edges, area2);
+        started = true;
+      }
+      shader.span(y, xs, xe, cs, ce);
+    }
+    return;
+  }
   for (int32_t y = first; y <= last; ++y, spans.next_row()) {
     int32_t xs = 1, xe = 0;
     if (y >= r0 && y <= r1) spans.span(&xs, &xe);
@@ -560,11 +756,11 @@ struct ActiveSet {
   uint32_t next(uint32_t p) const { return p + 1 == capacity ? 0 : p + 1; }
   bool test_at(uint32_t p) const { return (words[p / 32] >> (p % 32)) & 1u; }
   void set_at(uint32_t p) { words[p / 32] |= 1u << (p % 32); }
-  void clear_at(uint32_t p) { words[p / 32] &= ~(1u << (p % 32)); }
 
-  // Calls f(t) for every live triangle t of the window, in order, a word of bits at a time.
+  // Calls f(t, w, span) for the live triangles of the window a word at a time, in order: bit i of
+  // w (nonzero) is triangle t + i, and triangles t .. t + span - 1 are in the window (span <= 32).
   template <typename F>
-  void for_each_live(F&& f) const {
+  void for_each_live_word(F&& f) const {
     uint32_t t = base, p = base < cursor ? pos(base) : 0;
     while (t < cursor) {
       uint32_t w = words[p / 32] >> (p % 32);
@@ -573,10 +769,7 @@ struct ActiveSet {
         span = cursor - t;
         w &= (1u << span) - 1;  // span < 32 here
       }
-      while (w) {
-        f(t + uint32_t(__builtin_ctz(w)));
-        w &= w - 1;
-      }
+      if (w) f(t, w, span);
       t += span;
       p += span;
       if (p == capacity) p = 0;
@@ -591,22 +784,44 @@ struct ActiveSet {
   // False when the window would exceed the capacity.
   bool advance(const Mapping& map, int32_t y0, int32_t y1) {
     if (base < cursor) {
-      for_each_live([&](uint32_t t) {
-        int32_t top, bottom;
-        row_extent(*layer, t, map, &top, &bottom);
-        if (bottom < y0) clear_at(pos(t));
-      });
-      uint32_t p = pos(base);
+      // A word of the bitmap at a time: the ended triangles' bits collected without branches on
+      // the data, then cleared at once (no division per triangle for its bit position).
+      uint32_t t = base, p = pos(base);
+      const uint8_t* const triangles = layer->triangles;
+      const uint8_t* const positions = layer->positions;
+      while (t < cursor) {
+        const uint32_t shift = p % 32;
+        uint32_t span = 32 - shift, w = words[p / 32] >> shift;
+        if (span > cursor - t) {
+          span = cursor - t;
+          w &= (1u << span) - 1;  // span < 32 here
+        }
+        uint32_t ended = 0;
+        for (; w; w &= w - 1) {
+          const uint32_t i = uint32_t(__builtin_ctz(w));
+          const uint8_t* q = triangles + size_t(t + i) * blob_triangle_size;
+          const int32_t ya = load_u16(positions + 4 * size_t(load_u16(q)) + 2);
+          const int32_t yb = load_u16(positions + 4 * size_t(load_u16(q + 2)) + 2);
+          const int32_t yc = load_u16(positions + 4 * size_t(load_u16(q + 4)) + 2);
+          const int32_t bottom = position_fx::from_raw(map.y(max3(ya, yb, yc))).floor_to_int();  // as row_extent
+          ended |= uint32_t(bottom < y0) << i;
+        }
+        words[p / 32] &= ~(ended << shift);
+        t += span;
+        p += span;
+        if (p == capacity) p = 0;
+      }
+      p = pos(base);
       while (base < cursor && !test_at(p)) ++base, p = next(p);
     }
-    while (cursor < layer->triangle_count) {
+    for (uint32_t p = cursor < layer->triangle_count ? pos(cursor) : 0; cursor < layer->triangle_count; p = next(p)) {
       int32_t top, bottom;
       row_extent(*layer, cursor, map, &top, &bottom);
       if (top > y1) break;
       const bool live = bottom >= y0 && top <= bottom;
       if (live) {
         if (cursor - base >= capacity) return false;
-        set_at(pos(cursor));
+        set_at(p);
       } else if (base == cursor) {
         ++base;
       }
@@ -674,23 +889,85 @@ struct ColumnWindow {
       : lo(first_at_least(map, rect.x0 * (1 << config::subpixel_bits))),
         hi(first_at_least(map, (rect.x1 - 1) * (1 << config::subpixel_bits) + 1)) {}
 
-  bool misses(const BlobLayer& layer, uint32_t t) const {
-    const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
-    const int32_t x0 = load_u16(layer.positions + 4 * size_t(load_u16(p)));
-    const int32_t x1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)));
-    const int32_t x2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)));
-    return (max3(x0, x1, x2) < lo) | (min3(x0, x1, x2) >= hi);
+  // The triangles t + i (bit i of live) whose columns meet the tile, as bits. A loop without
+  // branches on the data and without calls (so its pointers and bounds stay in registers): the
+  // test is one sign, not (max < lo) | (min >= hi), which compilers turn into two branches, the
+  // first taken for a share of the triangles that grows along the band (unpredictable in the
+  // middle tiles).
+  uint32_t meeting(const BlobLayer& layer, uint32_t t, uint32_t live, uint32_t span) const {
+    const uint8_t* const triangles = layer.triangles + size_t(t) * blob_triangle_size;
+    const uint8_t* const positions = layer.positions;
+    const int32_t low = lo, high = hi - 1;
+    uint32_t hits = 0;
+#if TS_USE_SSE2
+    if (span == 32) {
+      // Bytes of the word with two live triangles or more: all eight triangles in 16-bit lanes
+      // (they are in the window, so their records are valid), the other bytes one by one below.
+      uint32_t rest = 0;
+      for (int g = 0; g < 4; ++g) {
+        const uint32_t byte = (live >> (8 * g)) & 0xFFu;
+        if (byte & (byte - 1)) {
+          hits |= (meeting8(triangles + size_t(8 * g) * blob_triangle_size, positions) & byte) << (8 * g);
+        } else {
+          rest |= byte << (8 * g);
+        }
+      }
+      live = rest;
+    }
+#else
+    (void)span;
+#endif
+    for (; live; live &= live - 1) {
+      const uint32_t i = uint32_t(__builtin_ctz(live));
+      const uint8_t* p = triangles + size_t(i) * blob_triangle_size;
+      const int32_t x0 = load_u16(positions + 4 * size_t(load_u16(p)));
+      const int32_t x1 = load_u16(positions + 4 * size_t(load_u16(p + 2)));
+      const int32_t x2 = load_u16(positions + 4 * size_t(load_u16(p + 4)));
+      const int32_t outside = (max3(x0, x1, x2) - low) | (high - min3(x0, x1, x2));  // < 0: misses
+      hits |= uint32_t(outside >= 0) << i;
+    }
+    return hits;
   }
+#if TS_USE_SSE2
+  // Bit j: triangle j of the eight records at p meets the columns. Coordinates (16 bits) and
+  // bounds are compared as signed 16-bit lanes after flipping the top bit (the order of the
+  // unsigned values); the bounds are clamped to 16 bits only in the direction that keeps more
+  // triangles (a triangle kept in error is clipped away exactly by rasterize, one missed would be
+  // wrong): min(lo, 65535) for max < lo, max(hi - 1, 0) for min > hi - 1.
+  uint32_t meeting8(const uint8_t* p, const uint8_t* positions) const {
+    auto x = [&](int j, int k) { return int(load_u16(positions + 4 * size_t(load_u16(p + j * blob_triangle_size + 2 * k)))); };
+    const __m128i top_bit = _mm_set1_epi16(int16_t(0x8000));
+    __m128i v[3];
+    for (int k = 0; k < 3; ++k) {
+      __m128i w = _mm_cvtsi32_si128(x(0, k));
+      w = _mm_insert_epi16(w, x(1, k), 1);
+      w = _mm_insert_epi16(w, x(2, k), 2);
+      w = _mm_insert_epi16(w, x(3, k), 3);
+      w = _mm_insert_epi16(w, x(4, k), 4);
+      w = _mm_insert_epi16(w, x(5, k), 5);
+      w = _mm_insert_epi16(w, x(6, k), 6);
+      w = _mm_insert_epi16(w, x(7, k), 7);
+      v[k] = _mm_xor_si128(w, top_bit);
+    }
+    const __m128i mn = _mm_min_epi16(_mm_min_epi16(v[0], v[1]), v[2]);
+    const __m128i mx = _mm_max_epi16(_mm_max_epi16(v[0], v[1]), v[2]);
+    const int32_t low = lo < 65535 ? lo : 65535, high = hi - 1 > 0 ? hi - 1 : 0;
+    const __m128i outside = _mm_or_si128(_mm_cmpgt_epi16(_mm_set1_epi16(int16_t(low ^ 0x8000)), mx),
+                                         _mm_cmpgt_epi16(mn, _mm_set1_epi16(int16_t(high ^ 0x8000))));
+    return ~uint32_t(_mm_movemask_epi8(_mm_packs_epi16(outside, outside))) & 0xFFu;
+  }
+#endif
 };
 
 template <typename Shader>
 void draw_layer(const ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
   const ColumnWindow columns(map, rect);
-  set.for_each_live([&](uint32_t t) {
-    if (columns.misses(*set.layer, t)) return;
-    TriangleView tv;
-    load_triangle(*set.layer, t, map, &tv);
-    rasterize(tv, rect, shader);
+  set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span) {
+    for (uint32_t hits = columns.meeting(*set.layer, t, live, span); hits; hits &= hits - 1) {
+      TriangleView tv;
+      load_triangle(*set.layer, t + uint32_t(__builtin_ctz(hits)), map, &tv);
+      rasterize(tv, rect, shader);
+    }
   });
 }
 

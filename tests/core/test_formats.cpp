@@ -137,3 +137,31 @@ TEST_CASE("resized output maps corners to corners") {
   CHECK(int(f.bytes[0]) == 0);
   CHECK(int(f.bytes[28 * 19 - 1]) == 180);
 }
+
+TEST_CASE("every 8-bit value packs the same in RGB565, XRGB8888 and L8 as the RGB888 pixel says") {
+  // A ramp 0..255 in R and B and 255..0 in G along x (bilinear reproduces it exactly): the
+  // packed formats (SSE2 lanes on x86-64 hosts) must equal pack565 / luma of the RGB888 bytes for
+  // every channel value, the whole range of the division by 255.
+  Mesh m;
+  m.value_count = 3;
+  m.points = {{0, 0}, {255, 0}, {0, 3}, {255, 3}};
+  m.values = {0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255};
+  m.triangles = {Triangle{{0, 1, 3}}, Triangle{{0, 3, 2}}};
+  m.normalize_winding();
+  const Triangulation t = single_mesh(m, 256, 4, ColorSpace::rgb);
+  const CoreFrame rgb = render(t, core::PixelFormat::rgb888);
+  const CoreFrame le = render(t, core::PixelFormat::rgb565_le), be = render(t, core::PixelFormat::rgb565_be);
+  const CoreFrame x = render(t, core::PixelFormat::xrgb8888), grey = render(t, core::PixelFormat::l8);
+  int wrong = 0, ramp = 0;
+  for (std::size_t i = 0; i < 256 * 4; ++i) {
+    const std::uint8_t r = rgb.bytes[3 * i], g = rgb.bytes[3 * i + 1], b = rgb.bytes[3 * i + 2];
+    ramp += r == i % 256 && g == 255 - i % 256 && b == i % 256;
+    const unsigned w = core::detail::pack565(r, g, b, 127);
+    wrong += le.bytes[2 * i] != (w & 0xFF) || le.bytes[2 * i + 1] != (w >> 8);
+    wrong += be.bytes[2 * i] != (w >> 8) || be.bytes[2 * i + 1] != (w & 0xFF);
+    wrong += x.bytes[4 * i] != b || x.bytes[4 * i + 1] != g || x.bytes[4 * i + 2] != r || x.bytes[4 * i + 3] != 0xFF;
+    wrong += grey.bytes[i] != core::detail::luma(r, g, b);
+  }
+  CHECK(ramp == 256 * 4);
+  CHECK(wrong == 0);
+}

@@ -30,6 +30,14 @@ inline const std::vector<Case>& cases() {
       {"ycbcr-zienkiewicz-xrgb8888-bands-viewport", "ycbcr-layers", "zienkiewicz", core::PixelFormat::xrgb8888, 0, 8,
        false, 0, 0, {20, 10, 170, 110}},
       {"ycbcr-bilinear-rgb565le-full", "ycbcr-layers", "bilinear", core::PixelFormat::rgb565_le, 0, 0, false, 0, 0, {}},
+      // Direct RGB spans of bilinear (the SSE2 and the scalar pixel loops must agree).
+      {"rgb-bilinear-rgb888-tiles32", "rgb", "bilinear", core::PixelFormat::rgb888, 32, 32, false, 0, 0, {}},
+      {"rgb-bilinear-rgb565le-tiles24x16", "rgb", "bilinear", core::PixelFormat::rgb565_le, 24, 16, false, 0, 0, {}},
+      {"rgb-bilinear-xrgb8888-full-300x200", "rgb", "bilinear", core::PixelFormat::xrgb8888, 0, 0, false, 300, 200, {}},
+      // Direct RGB rows of zienkiewicz (forward differenced and per pixel) in the packed formats.
+      {"rgb-zienkiewicz-rgb565be-tiles32", "rgb", "zienkiewicz", core::PixelFormat::rgb565_be, 32, 32, false, 0, 0, {}},
+      {"rgb-zienkiewicz-xrgb8888-full-384x256", "rgb", "zienkiewicz", core::PixelFormat::xrgb8888, 0, 0, false, 384, 256,
+       {}},
   };
   return all;
 }

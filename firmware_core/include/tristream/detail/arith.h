@@ -41,27 +41,31 @@ inline uint64_t mulhi_u64(uint64_t a, uint64_t b) {
 // (tested against plain division).
 class Divider {
  public:
-  explicit Divider(int64_t d) : d_(uint64_t(d)), m_(~uint64_t(0) / uint64_t(d)) {}
+  // k = 2^(62 - floor(log2 d)), so 2^62 <= k d < 2^63.
+  explicit Divider(int64_t d)
+      : d_(uint64_t(d)),
+        m_(~uint64_t(0) / uint64_t(d)),
+        k_(uint64_t(1) << (62 - (63 - __builtin_clzll(uint64_t(d))))),
+        kd_(k_ * uint64_t(d)) {}
 
   // floor(n / d) for 0 <= n < 2^64.
   uint64_t floor_u(uint64_t n) const {
     const uint64_t q = mulhi_u64(n, m_);
     return q + (n - q * d_ >= d_);
   }
-  // floor(n / d) for |n| < 2^62: for n < 0, -floor((-n + d - 1) / d); without branches.
-  int64_t floor(int64_t n) const {
-    const uint64_t negative = uint64_t(n >> 63);  // all ones or zero
-    const uint64_t magnitude = (uint64_t(n) ^ negative) - negative;
-    const uint64_t q = floor_u(magnitude + ((d_ - 1) & negative));
-    return int64_t((q ^ negative) - negative);
-  }
+  // floor(n / d) for |n| < 2^62, as floor((n + k d) / d) - k: the numerator is then in
+  // (0, 2^63 + 2^62), nonnegative and below 2^64, so no sign handling is needed.
+  int64_t floor(int64_t n) const { return int64_t(floor_u(uint64_t(n) + kd_) - k_); }
 
  private:
   uint64_t d_;
   uint64_t m_;
+  uint64_t k_;
+  uint64_t kd_;
 };
 
-// n / d rounded to nearest (halves up), for many n and one d: floor((2n + d) / (2d)).
+// n / d rounded to nearest (halves up), for many n and one d: floor((2n + d) / (2d)), for
+// |2n + d| < 2^62 (the setup's numerators stay below 2^61: docs/FIXED_POINT.md).
 class RoundingDivider {
  public:
   explicit RoundingDivider(int64_t d) : half_(d), div_(2 * d) {}

@@ -219,9 +219,11 @@ static_assert(zienkiewicz_fd_bound_milli(zienkiewicz_fd_restart - 1) <
                   (int64_t(1000) << (ZienkiewiczChannel::value_frac_bits - 16)),
               "forward differencing error must stay far below the final rounding");
 
-template <int Channels, typename Put>
-inline void zienkiewicz_row(const ZienkiewiczChannel* ch, uint32_t a, uint32_t b, uint32_t da, uint32_t db, int32_t n0,
-                            int32_t n1, uint64_t bias, Put&& put) {
+// The same a restart chunk at a time: chunk(n, end, steps) for the pixels n..end of one chunk,
+// steps at pixel n (to be stepped with CubicSteps::step from there).
+template <int Channels, typename Chunk>
+inline void zienkiewicz_row_chunks(const ZienkiewiczChannel* ch, uint32_t a, uint32_t b, uint32_t da, uint32_t db,
+                                   int32_t n0, int32_t n1, uint64_t bias, Chunk&& chunk) {
   constexpr int32_t R = zienkiewicz_fd_restart;
   static_assert(R > 0 && (R & (R - 1)) == 0, "restart interval is a power of two");
   int32_t n = n0;
@@ -236,11 +238,20 @@ inline void zienkiewicz_row(const ZienkiewiczChannel* ch, uint32_t a, uint32_t b
       s[c].v += bias;
       if (n > start) s[c].skip(uint32_t(n - start));
     }
+    chunk(n, end, s);
+    n = end + 1;
+  }
+}
+
+template <int Channels, typename Put>
+inline void zienkiewicz_row(const ZienkiewiczChannel* ch, uint32_t a, uint32_t b, uint32_t da, uint32_t db, int32_t n0,
+                            int32_t n1, uint64_t bias, Put&& put) {
+  zienkiewicz_row_chunks<Channels>(ch, a, b, da, db, n0, n1, bias, [&](int32_t n, int32_t end, CubicSteps* s) {
     for (; n <= end; ++n) {
       put(n, s);
       for (int c = 0; c < Channels; ++c) s[c].step();
     }
-  }
+  });
 }
 
 // Barycentric weights a (vertex 0) and b (vertex 1) in q2_30, modulo 2^32, at a pixel (x, y):
