@@ -691,22 +691,6 @@ void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
   SpanStepper spans;
   spans.init(edges, first);
   bool started = false;
-  if (corner_count == 0) {
-    // Rows [first, last] = [r0, r1]: no row test, no corner loop, one test for an empty or
-    // clipped-away span (cs > ce also when xs > xe).
-    for (int32_t y = first; y <= last; ++y, spans.next_row()) {
-      int32_t xs, xe;
-      spans.span(&xs, &xe);
-      const int32_t cs = max2(xs, clip.x0), ce = min2(xe, clip.x1 - 1);
-      if (cs > ce) continue;
-      if (!started) {
-        shader.begin(tv, edges, area2);
-        started = true;
-      }
-      shader.span(y, xs, xe, cs, ce);
-    }
-    return;
-  }
   for (int32_t y = first; y <= last; ++y, spans.next_row()) {
     int32_t xs = 1, xe = 0;
     if (y >= r0 && y <= r1) spans.span(&xs, &xe);
