@@ -46,10 +46,11 @@
 #define TS_METHODS 0x3
 #endif
 
-// 1: SSE2 on x86-64 hosts: the covered columns of small triangles four columns at a time, and the
-// RGB pixels of bilinear spans with the three channels in the lanes of one vector; 0: column by
-// column and channel by channel (the only choice on other targets). The pixels are the same
-// either way (test_core_golden_scalar runs the golden cases with 0 on the host).
+// 1: SSE2 on x86-64 hosts: the covered columns of small triangles four columns at a time, the
+// tile cull eight triangles at a time, and the RGB pixels of bilinear spans and of
+// forward-differenced zienkiewicz rows with the three channels in vector lanes; 0: column by
+// column, triangle by triangle and channel by channel (the only choice on other targets). The
+// pixels are the same either way (test_core_golden_scalar runs the golden cases with 0 on the host).
 #ifndef TS_USE_SSE2
 #if defined(__SSE2__)
 #define TS_USE_SSE2 1
