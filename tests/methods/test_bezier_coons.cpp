@@ -84,8 +84,8 @@ TEST_CASE("the exact variant reproduces linear data", "[bezier][coons]") {
       Mesh mesh = testing::random_lattice_mesh(48, 40, 70, seed, 10, 3);
       set_values(mesh, linear);
       const Field f = render(single_mesh(48, 40, mesh), method, "");
-      // Newton stops after correcting a residual below 1e-3 px, leaving about 1e-6 px times
-      // the patch's relative curvature: far below 1e-6 of value here.
+      // Newton stops after a step below kNewtonStep (patch_raster.h), leaving parameter errors
+      // of about 1e-12 times the patch's relative curvature: far below 1e-6 of value here.
       for (int y = 0; y < 40; ++y)
         for (int x = 0; x < 48; ++x)
           for (int ch = 0; ch < 3; ++ch)
