@@ -741,8 +741,9 @@ struct ActiveSet {
   bool test_at(uint32_t p) const { return (words[p / 32] >> (p % 32)) & 1u; }
   void set_at(uint32_t p) { words[p / 32] |= 1u << (p % 32); }
 
-  // Calls f(t, w, span) for the live triangles of the window a word at a time, in order: bit i of
-  // w (nonzero) is triangle t + i, and triangles t .. t + span - 1 are in the window (span <= 32).
+  // Calls f(t, w, span, p) for the live triangles of the window a word at a time, in order: bit i
+  // of w (nonzero) is triangle t + i, triangles t .. t + span - 1 are in the window (span <= 32),
+  // and p is the bit position of triangle t (bit p % 32 of words[p / 32]).
   template <typename F>
   void for_each_live_word(F&& f) const {
     uint32_t t = base, p = base < cursor ? pos(base) : 0;
@@ -753,7 +754,7 @@ struct ActiveSet {
         span = cursor - t;
         w &= (1u << span) - 1;  // span < 32 here
       }
-      if (w) f(t, w, span);
+      if (w) f(t, w, span, p);
       t += span;
       p += span;
       if (p == capacity) p = 0;
@@ -770,32 +771,17 @@ struct ActiveSet {
     if (base < cursor) {
       // A word of the bitmap at a time: the ended triangles' bits collected without branches on
       // the data, then cleared at once (no division per triangle for its bit position).
-      uint32_t t = base, p = pos(base);
-      const uint8_t* const triangles = layer->triangles;
-      const uint8_t* const positions = layer->positions;
-      while (t < cursor) {
-        const uint32_t shift = p % 32;
-        uint32_t span = 32 - shift, w = words[p / 32] >> shift;
-        if (span > cursor - t) {
-          span = cursor - t;
-          w &= (1u << span) - 1;  // span < 32 here
-        }
+      for_each_live_word([&](uint32_t t, uint32_t w, uint32_t, uint32_t p) {
         uint32_t ended = 0;
         for (; w; w &= w - 1) {
           const uint32_t i = uint32_t(__builtin_ctz(w));
-          const uint8_t* q = triangles + size_t(t + i) * blob_triangle_size;
-          const int32_t ya = load_u16(positions + 4 * size_t(load_u16(q)) + 2);
-          const int32_t yb = load_u16(positions + 4 * size_t(load_u16(q + 2)) + 2);
-          const int32_t yc = load_u16(positions + 4 * size_t(load_u16(q + 4)) + 2);
-          const int32_t bottom = position_fx::from_raw(map.y(max3(ya, yb, yc))).floor_to_int();  // as row_extent
+          int32_t top, bottom;
+          row_extent(*layer, t + i, map, &top, &bottom);
           ended |= uint32_t(bottom < y0) << i;
         }
-        words[p / 32] &= ~(ended << shift);
-        t += span;
-        p += span;
-        if (p == capacity) p = 0;
-      }
-      p = pos(base);
+        words[p / 32] &= ~(ended << (p % 32));
+      });
+      uint32_t p = pos(base);
       while (base < cursor && !test_at(p)) ++base, p = next(p);
     }
     for (uint32_t p = cursor < layer->triangle_count ? pos(cursor) : 0; cursor < layer->triangle_count; p = next(p)) {
@@ -946,7 +932,7 @@ struct ColumnWindow {
 template <typename Shader>
 void draw_layer(const ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
   const ColumnWindow columns(map, rect);
-  set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span) {
+  set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span, uint32_t) {
     for (uint32_t hits = columns.meeting(*set.layer, t, live, span); hits; hits &= hits - 1) {
       TriangleView tv;
       load_triangle(*set.layer, t + uint32_t(__builtin_ctz(hits)), map, &tv);
