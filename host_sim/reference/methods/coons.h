@@ -130,8 +130,6 @@ class CoonsPatch {
   using XY = detail::XY;
   Component x_, y_;                // position
   XY pos_[8];                      // x_ and y_ monomial coefficients as pairs
-  // Bounds of |P_uu|, |P_vv|, |P_uv| over the square (the largest at a corner: they are affine).
-  std::array<double, 3> second_derivatives() const;
   std::vector<Component> value_;  // one per value channel
 };
 

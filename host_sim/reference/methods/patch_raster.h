@@ -100,13 +100,8 @@ class PatchCanvas {
   // Pixel (i, j) of the image by index; inside(p) is in_domain for that pixel.
   std::size_t index(int i, int j) const { return std::size_t(j) * prefill_.width + i; }
   bool inside(std::size_t p) const { return inside_[p] != 0; }
-  // add() for a pixel index p already known to be in the image and the domain.
-  void add_inside(std::size_t p, const double* values) {
-    ++count_[p];
-    double* s = sum_.data() + p * prefill_.channels;
-    for (int c = 0, n = prefill_.channels; c < n; ++c) s[c] += values[c];
-  }
-  // The same with the values of `patch` at (s, t) (Patch::add_values).
+  // add() for a pixel index p already known to be in the image and the domain, with the
+  // values of `patch` at (s, t) (Patch::add_values).
   template <class Patch>
   void add_inside(std::size_t p, const Patch& patch, double s, double t) {
     ++count_[p];

@@ -1,7 +1,8 @@
 #pragma once
-// Private to the patch methods (bezier, coons): the candidates of the exact variant for a
-// patch that does not fold, row by row between its boundary curves (patch_raster.h has the
-// rest of the exact variant and the tessellation used for the other patches).
+// Private to the patch methods (bezier, coons): the candidates of the exact variant row by
+// row between a patch's boundary curves, widened around its fold where it has one
+// (patch_raster.h has the rest of the exact variant and the tessellation used for Bezier
+// patches that may fold).
 //
 // Why rows suffice. Where the Jacobian keeps one sign the patch maps interior points to
 // interior points, so the boundary of its image lies on its boundary curves. A pixel whose
@@ -13,13 +14,16 @@
 //
 // Starts for Newton. Each crossing's parameters are known (a point of a side of the
 // parameter domain); the first pixel after a crossing starts from them, moved to the pixel
-// through the inverse Jacobian there; the next pixels extrapolate the last two solutions.
-// The starts are a pixel or less from the solutions and second-order accurate, so Newton
-// mostly takes two or three steps.
+// through the inverse Jacobian there; the next pixels extrapolate the last three solutions
+// (two at a stretch's start). The starts are a pixel or less from the solutions and at least
+// second-order accurate, so Newton mostly takes two or three steps. A pixel that none of
+// these places tries the two nearest points of a 5 x 5 grid over the domain.
 //
-// Is it unfolded? PatchJacobian below bounds the Jacobian determinant's sign by its
-// Bernstein coefficients (the determinant lies in their convex hull): all of one sign
-// prove it. Otherwise the patch takes the tessellation.
+// Where does it fold? one_sign below bounds the Jacobian determinant's sign by its Bernstein
+// coefficients (the determinant lies in their convex hull): all of one sign prove that the
+// patch does not fold. A Coons patch otherwise gets fold cells (find_fold_cells), squares of
+// its domain that hold the fold, whose boxes join the rows' spans; a Bezier patch takes the
+// tessellation.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -38,7 +42,6 @@ struct Parabola {
 
   static Parabola through(double s, double m, double e) { return {2 * s + 2 * e - 4 * m, 4 * m - 3 * s - e, s}; }
   double operator()(double t) const { return (a * t + b) * t + c; }
-  double derivative(double t) const { return 2 * a * t + b; }
 };
 
 }  // namespace tristream
@@ -49,7 +52,6 @@ namespace tristream::detail {
 // (the bit budget of patch_raster.h's fixed point).
 inline constexpr double kMaxPatchCoordinate = 1 << 20;
 
-// A row crossing of the boundary: its x and the patch parameters there.
 // A start for the pixels of a row: a boundary crossing (y is the row) or the middle of a
 // fold cell: its position and its parameters.
 struct RowCrossing {
