@@ -905,7 +905,10 @@ struct ColumnWindow {
   // triangles (a triangle kept in error is clipped away exactly by rasterize, one missed would be
   // wrong): min(lo, 65535) for max < lo, max(hi - 1, 0) for min > hi - 1.
   uint32_t meeting8(const uint8_t* p, const uint8_t* positions) const {
-    auto x = [&](int j, int k) { return int(load_u16(positions + 4 * size_t(load_u16(p + j * blob_triangle_size + 2 * k)))); };
+    // As the 16-bit lane it goes to (the same bits).
+    auto x = [&](int j, int k) {
+      return int16_t(load_u16(positions + 4 * size_t(load_u16(p + j * blob_triangle_size + 2 * k))));
+    };
     const __m128i top_bit = _mm_set1_epi16(int16_t(0x8000));
     __m128i v[3];
     for (int k = 0; k < 3; ++k) {
