@@ -47,11 +47,6 @@ BezierPatch::BezierPatch(const PatchControl& control) {
   }
   pos_[0] = XY{x_.k, y_.k}, pos_[1] = XY{x_.ks, y_.ks}, pos_[2] = XY{x_.kt, y_.kt};
   pos_[3] = XY{x_.kss, y_.kss}, pos_[4] = XY{x_.kst, y_.kst}, pos_[5] = XY{x_.ktt, y_.ktt};
-  const auto& p = control.pixel;
-  auto second = [&](int s, int m, int e) {
-    return 2 * std::hypot(p[s].x - 2 * p[m].x + p[e].x, p[s].y - 2 * p[m].y + p[e].y);
-  };
-  second_derivative_ = std::max({second(p200, p101, p002), second(p020, p011, p002), second(p200, p110, p020)});
 }
 
 bool BezierPatch::unfolded() const {
@@ -65,7 +60,13 @@ bool BezierPatch::unfolded() const {
   return detail::one_sign(b, 6, corner);
 }
 
-int BezierPatch::subdivisions() const { return detail::subdivisions_for(second_derivative_); }
+int BezierPatch::subdivisions() const {
+  // In monomials: P200 - 2 P101 + P002 = kss, P020 - 2 P011 + P002 = ktt and
+  // P200 - 2 P110 + P020 = kss - kst + ktt.
+  auto norm = [](const XY& v) { return std::hypot(v[0], v[1]); };
+  const double largest = std::max({norm(pos_[3]), norm(pos_[5]), norm(pos_[3] - pos_[4] + pos_[5])});
+  return detail::subdivisions_for(2 * largest);
+}
 
 void render_bezier(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
   // The patch lies in the convex hull of its control points: skip it when that misses the image.

@@ -98,7 +98,6 @@ class BezierPatch {
   detail::Quadratic2 x_, y_;                // position in (a, b)
   XY pos_[6];                               // x_ and y_ coefficients as pairs
   std::vector<detail::Quadratic2> value_;  // one per value channel
-  double second_derivative_ = 0;               // largest of the three above
 };
 
 template <class Visit>
@@ -139,8 +138,9 @@ inline bool BezierPatch::solve(double x, double y, double& a, double& b) const {
   for (int iteration = 0; iteration < detail::kNewtonIterations; ++iteration) {
     const double det = ja[0] * jb[1] - jb[0] * ja[1];
     if (!(std::fabs(det) > 1e-300)) return false;
-    const double da = (jb[1] * r[0] - jb[0] * r[1]) / det;
-    const double db = (ja[0] * r[1] - ja[1] * r[0]) / det;
+    const double inverse = 1 / det;
+    const double da = (jb[1] * r[0] - jb[0] * r[1]) * inverse;
+    const double db = (ja[0] * r[1] - ja[1] * r[0]) * inverse;
     ca += da, cb += db;
     if (std::fabs(da) + std::fabs(db) < detail::kNewtonStep) {
       // Far from the start is another solution than the one sought (beside a fold).

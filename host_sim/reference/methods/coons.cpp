@@ -18,7 +18,11 @@ int middle_of(int p, int q) {
   return lo == p200 ? (hi == p020 ? p110 : p101) : p011;
 }
 
-double length(const Point& p, const Point& q) { return std::hypot(p.x - q.x, p.y - q.y); }
+// sqrt of the exact sum for integer coordinates: equal lengths stay equal (ties pick the first).
+double length(const Point& p, const Point& q) {
+  const double dx = p.x - q.x, dy = p.y - q.y;
+  return std::sqrt(dx * dx + dy * dy);
+}
 
 void splat_thesis(const CoonsPatch& patch, int channels, detail::PatchCanvas& canvas) {
   std::vector<double> value(channels);

@@ -9,8 +9,7 @@ PatchCanvas::PatchCanvas(const Field& prefill)
     : prefill_(prefill),
       inside_(std::size_t(prefill.width) * prefill.height, 0),
       count_(std::size_t(prefill.width) * prefill.height, 0),
-      sum_(std::size_t(prefill.width) * prefill.height * prefill.channels, 0.0),
-      claim_(std::size_t(prefill.width) * prefill.height, 0) {
+      sum_(std::size_t(prefill.width) * prefill.height * prefill.channels, 0.0) {
   for (std::size_t p = 0; p < inside_.size(); ++p) {
     bool covered = prefill.channels > 0;
     for (int c = 0; c < prefill.channels; ++c) covered = covered && !std::isnan(prefill.v[p * prefill.channels + c]);
@@ -36,6 +35,24 @@ void PatchCanvas::resolve_exact(Field& out) const {
   }
 }
 
+std::vector<std::uint32_t> triangles_by_cell(const Mesh& mesh) {
+  static constexpr double kCell = 16;
+  static constexpr double kMaxCells = 4096;  // per side; points beyond share the last cell
+  double x_max = 0, y_max = 0;
+  for (const Point& p : mesh.points) x_max = std::max(x_max, p.x), y_max = std::max(y_max, p.y);
+  auto index = [](double v) { return std::size_t(std::clamp(v / kCell, 0.0, kMaxCells)); };  // NaN: 0
+  const std::size_t columns = index(x_max) + 1, rows = index(y_max) + 1;
+  auto cell = [&](std::uint32_t t) {
+    const Point& p = mesh.points[mesh.triangles[t].v[0]];
+    return std::min(rows - 1, index(p.y)) * columns + std::min(columns - 1, index(p.x));
+  };
+  std::vector<std::uint32_t> start(columns * rows + 1, 0), order(mesh.triangles.size());
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) ++start[cell(t) + 1];
+  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) order[start[cell(t)]++] = t;
+  return order;
+}
+
 void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, int domain_height,
                       const RenderOptions& options, Field& out) {
   bool exact = out.width == domain_width && out.height == domain_height;
@@ -49,7 +66,7 @@ void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, 
     return;
   }
   const int nc = mesh.value_count;
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+  for (std::uint32_t t : triangles_by_cell(mesh)) {
     const auto& v = mesh.triangles[t].v;
     // Parameters (s, t) = barycentric coordinates of v[0] and v[1].
     MicroVertex a, b, c;
