@@ -161,7 +161,8 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
     const auto ref = make_map(control, patch);
     // Both ways of the exact variant, each against the truth: the renderer's choice (by rows
     // where the patch's fold is bounded, else by its tessellation), and the tessellation.
-    detail::PatchCanvas canvas(prefill), tessellated(prefill);
+    Field by_rows_field = prefill, tessellated_field = prefill;
+    detail::PatchCanvas canvas(by_rows_field), tessellated(tessellated_field);
     if (patch.fold_cells(fold_cells)) {
       ++tally.by_rows;
       tally.folded_by_rows += folded;

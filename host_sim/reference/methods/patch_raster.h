@@ -76,39 +76,45 @@ inline bool is_thesis_variant(std::string_view method, const std::string& varian
                    "' (expected 'thesis', or none for the exact default)");
 }
 
-// Sum and count buffers over the output pixels, restricted to the domain of `prefill`
-// (the bilinear field: NaN outside the triangulation).
+// Sums and counts over the output pixels, in place in `field`, which holds the bilinear
+// pre-fill (NaN outside the triangulation: those pixels are never written). The exact
+// variant overwrites a pixel's pre-fill with the first patch value it gets and adds the rest;
+// the thesis variant adds every sample to the pre-fill. resolve_*() then divides.
 class PatchCanvas {
  public:
-  explicit PatchCanvas(const Field& prefill);
+  explicit PatchCanvas(Field& field);
 
-  int width() const { return prefill_.width; }
-  int height() const { return prefill_.height; }
-  int channels() const { return prefill_.channels; }
-  bool in_domain(int i, int j) const { return inside_[std::size_t(j) * prefill_.width + i] != 0; }
+  int width() const { return field_.width; }
+  int height() const { return field_.height; }
+  int channels() const { return field_.channels; }
+  bool in_domain(int i, int j) const { return inside_[std::size_t(j) * field_.width + i] != 0; }
 
-  // Adds one sample (channels() values) to pixel (i, j); ignored outside the image or domain.
+  // thesis: adds one sample (channels() values) to pixel (i, j); ignored outside the image or
+  // domain.
   void add(int i, int j, const double* values) {
-    if (i < 0 || j < 0 || i >= prefill_.width || j >= prefill_.height) return;
-    const std::size_t p = std::size_t(j) * prefill_.width + i;
+    if (i < 0 || j < 0 || i >= field_.width || j >= field_.height) return;
+    const std::size_t p = std::size_t(j) * field_.width + i;
     if (!inside_[p]) return;
     ++count_[p];
-    double* s = &sum_[p * prefill_.channels];
-    for (int c = 0; c < prefill_.channels; ++c) s[c] += values[c];
+    double* s = &field_.v[p * field_.channels];
+    for (int c = 0; c < field_.channels; ++c) s[c] += values[c];
   }
 
   // Pixel (i, j) of the image by index; inside(p) is in_domain for that pixel.
-  std::size_t index(int i, int j) const { return std::size_t(j) * prefill_.width + i; }
+  std::size_t index(int i, int j) const { return std::size_t(j) * field_.width + i; }
   bool inside(std::size_t p) const { return inside_[p] != 0; }
-  // add() for a pixel index p already known to be in the image and the domain, with the
-  // values of `patch` at (s, t) (Patch::add_values).
+  // exact: the values of `patch` at (s, t) (Patch::values, add_values) for a pixel index p
+  // already known to be in the image and the domain.
   template <class Patch>
   void add_inside(std::size_t p, const Patch& patch, double s, double t) {
-    ++count_[p];
-    patch.add_values(s, t, sum_.data() + p * prefill_.channels);
+    double* sum = field_.v.data() + p * field_.channels;
+    if (count_[p]++ == 0)
+      patch.values(s, t, sum);
+    else
+      patch.add_values(s, t, sum);
   }
 
-  std::uint32_t count(int i, int j) const { return count_[std::size_t(j) * prefill_.width + i]; }
+  std::uint32_t count(int i, int j) const { return count_[std::size_t(j) * field_.width + i]; }
 
   // The exact variant's stamps: begin_patch() starts a patch, claim(p) marks pixel p as
   // counted for it, claimed(p) asks. (2^32 patches before a stamp repeats.) Made with the
@@ -121,15 +127,14 @@ class PatchCanvas {
   void claim(std::size_t p) { claim_[p] = patch_; }
 
   // thesis: (pre-fill + sum) / (count + 1) in every domain pixel (§4.2).
-  void resolve_thesis(Field& out) const;
-  // exact: sum / count where some patch landed, the pre-fill elsewhere in the domain.
-  void resolve_exact(Field& out) const;
+  void resolve_thesis();
+  // exact: sum / count where some patch landed; the pre-fill stays elsewhere in the domain.
+  void resolve_exact();
 
  private:
-  const Field& prefill_;
+  Field& field_;
   std::vector<std::uint8_t> inside_;
   std::vector<std::uint32_t> count_;
-  std::vector<double> sum_;
   std::vector<std::uint32_t> claim_;
   std::uint32_t patch_ = 0;
 };
@@ -406,9 +411,8 @@ void render_patches(std::string_view method, const Mesh& mesh, int domain_width,
   const bool thesis = is_thesis_variant(method, options.variant);
   const Topology topo = build_topology(mesh);
   const PixelMapping map(domain_width, domain_height, out.width, out.height);
-  Field prefill(out.width, out.height, out.channels);
-  bilinear_prefill(mesh, topo, domain_width, domain_height, options, prefill);
-  PatchCanvas canvas(prefill);
+  bilinear_prefill(mesh, topo, domain_width, domain_height, options, out);
+  PatchCanvas canvas(out);
 
   PatchControl control;
   PatchScratch scratch;
@@ -421,9 +425,9 @@ void render_patches(std::string_view method, const Mesh& mesh, int domain_width,
       rasterize(patch, canvas, scratch);
   }
   if (thesis)
-    canvas.resolve_thesis(out);
+    canvas.resolve_thesis();
   else
-    canvas.resolve_exact(out);
+    canvas.resolve_exact();
 }
 
 }  // namespace tristream::detail
