@@ -150,6 +150,7 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
   std::fill(prefill.v.begin(), prefill.v.end(), 0.0);
   std::vector<detail::MicroVertex> nodes;
   detail::ScanScratch rows;
+  detail::PatchScratch scratch;
   std::vector<detail::FoldCell> fold_cells;
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     PatchControl control;
@@ -160,7 +161,8 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
     tally.folded += folded;
     const auto ref = make_map(control, patch);
     // Both ways of the exact variant, each against the truth: the renderer's choice (by rows
-    // where the patch's fold is bounded, else by its tessellation), and the tessellation.
+    // where the patch's fold is bounded, else by its tessellation), and the tessellation
+    // (Bezier; a Coons patch has none and takes the rows again).
     Field by_rows_field = prefill, tessellated_field = prefill;
     detail::PatchCanvas canvas(by_rows_field), tessellated(tessellated_field);
     if (patch.fold_cells(fold_cells)) {
@@ -168,9 +170,13 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
       tally.folded_by_rows += folded;
       detail::rasterize_rows(patch, fold_cells, canvas, rows);
     } else {
-      detail::rasterize_tessellated(patch, canvas, nodes);
+      detail::rasterize_exact(patch, canvas, scratch);
     }
-    detail::rasterize_tessellated(patch, tessellated, nodes);
+    // The tessellation too where the patch has one (Bezier); else the same as the renderer.
+    if constexpr (detail::kTessellated<Patch>)
+      detail::rasterize_tessellated(patch, tessellated, nodes);
+    else
+      detail::rasterize_rows(patch, fold_cells, tessellated, rows);
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     for (int i = 0; i <= 32; ++i)
       for (int j = 0; j <= 32; ++j) {
@@ -254,6 +260,25 @@ TEST_CASE("coons exact coverage matches an independent inversion of each patch",
   }
 }
 
+// Where the image cuts a patch on the left, a row's nearest crossing may lie far outside the
+// image; the rows start from it all the same (patch_scan.h's lead-in), so the cut patches are
+// still covered exactly. The lattice mesh moved 13 pixels left (and 7 up) puts the left edge
+// through many patches.
+TEST_CASE("patches cut by the image's edge are covered exactly", "[bezier][coons]") {
+  Mesh mesh = testing::random_lattice_mesh(40, 30, 60, 23, 10);
+  for (Point& p : mesh.points) p.x -= 13, p.y -= 7;
+  const Tally bezier = check_coverage<BezierPatch>(mesh, 27, 23, true, [](const PatchControl& c, const BezierPatch&) {
+    return BezierMap(c);
+  });
+  const Tally coons = check_coverage<CoonsPatch>(mesh, 27, 23, false, [](const PatchControl& c, const CoonsPatch& p) {
+    return CoonsMap(c, p);
+  });
+  CHECK(bezier.pixels > 500);
+  CHECK(coons.pixels > 500);
+  INFO("coons fold pixels " << coons.fold_pixels << " missed " << coons.fold_missed);
+  CHECK(coons.fold_missed * 100 < coons.fold_pixels);
+}
+
 // The trap of patch_raster.h: whether a pixel on a patch's boundary counts must not hang on
 // the last bits of Newton's result. Starting each solve from a guess moved by up to 1e-3
 // gives other last bits; the decisions must not change, and the parameters agree to a tenth
@@ -264,47 +289,71 @@ TEST_CASE("patch membership does not depend on the solver's start", "[bezier][co
   const Topology topo = build_topology(mesh);
   const PixelMapping map(64, 48, 64, 48);
   std::vector<detail::MicroVertex> nodes;
+  std::vector<detail::FoldCell> folds;
+  detail::ScanScratch scan;
   // Counts per patch and pixel (the tessellation may give a pixel more than one start).
   int boundary = 0, candidates = 0, singular = 0, other_root = 0, patch_number = 0;
   std::vector<int> seen(64 * 48, -1);
-  auto check = [&](const auto& patch, auto&& outside) {
-    ++patch_number;
-    patch.tessellate(64, 48, nodes, [&](int x, int y, double s, double t) {
-      double s0 = s, t0 = t;
-      if (!patch.solve(x, y, s0, t0)) return;
-      const bool first = seen[y * 64 + x] != patch_number;
-      seen[y * 64 + x] = patch_number;
-      candidates += first;
-      boundary += first && std::fabs(outside(s0, t0)) < 1e-10;
-      // Where the Jacobian is nearly singular (the Coons corner M) Newton converges slowly
-      // from elsewhere; the renderer starts such a pixel on the node itself.
-      double px, py, xs, xt, ys, yt;
-      patch.position(s0, t0, px, py, xs, xt, ys, yt);
-      if (!(std::fabs(xs * yt - xt * ys) >= 1e-2 * std::hypot(xs, ys) * std::hypot(xt, yt) && xs * yt - xt * ys != 0)) {
-        // Apart from the patch's corners (the Coons corner M is on a pixel for every patch of
-        // a lattice mesh, and always singular), such pixels must be rare.
-        auto at_end = [](double k) { return std::fabs(k) < 1e-12 || std::fabs(k - 1) < 1e-12; };
-        singular += first && !(at_end(s0) && at_end(t0));
-        return;
+  // Pixel (x, y) with start (s, t) as the renderer gets it, solved from there and from starts
+  // moved by up to 1e-3; false where the first solve fails, else (s, t) is its solution.
+  auto examine = [&](const auto& patch, auto&& outside, int x, int y, double& s, double& t) {
+    double s0 = s, t0 = t;
+    if (!patch.solve(x, y, s0, t0)) return false;
+    const double start_s = s, start_t = t;
+    s = s0, t = t0;
+    if (x < 0) return true;  // the rows' lead-in, left of the image
+    const bool first = seen[y * 64 + x] != patch_number;
+    seen[y * 64 + x] = patch_number;
+    candidates += first;
+    boundary += first && std::fabs(outside(s0, t0)) < 1e-10;
+    // Where the Jacobian is nearly singular (the Coons corner M) Newton converges slowly
+    // from elsewhere; the renderer starts such a pixel on the node itself.
+    double px, py, xs, xt, ys, yt;
+    patch.position(s0, t0, px, py, xs, xt, ys, yt);
+    if (!(std::fabs(xs * yt - xt * ys) >= 1e-2 * std::hypot(xs, ys) * std::hypot(xt, yt) && xs * yt - xt * ys != 0)) {
+      // Apart from the patch's corners (the Coons corner M is on a pixel for every patch of
+      // a lattice mesh, and always singular), such pixels must be rare.
+      auto at_end = [](double k) { return std::fabs(k) < 1e-12 || std::fabs(k - 1) < 1e-12; };
+      singular += first && !(at_end(s0) && at_end(t0));
+      return true;
+    }
+    for (double ds : {-1e-3, 1e-3, 3.7e-4}) {
+      double s1 = start_s + ds, t1 = start_t - ds / 2;
+      if (!patch.solve(x, y, s1, t1)) continue;
+      INFO("pixel " << x << ", " << y << " (" << s0 << ", " << t0 << ") vs (" << s1 << ", " << t1 << ") det "
+                    << (xs * yt - xt * ys) / (std::hypot(xs, ys) * std::hypot(xt, yt)));
+      if (std::fabs(s1 - s0) + std::fabs(t1 - t0) > 1e-3) {
+        ++other_root;
+        continue;
       }
-      for (double ds : {-1e-3, 1e-3, 3.7e-4}) {
-        double s1 = s + ds, t1 = t - ds / 2;
-        if (!patch.solve(x, y, s1, t1)) continue;
-        INFO("pixel " << x << ", " << y << " (" << s0 << ", " << t0 << ") vs (" << s1 << ", " << t1 << ") det " << (xs * yt - xt * ys) / (std::hypot(xs, ys) * std::hypot(xt, yt)));
-        if (std::fabs(s1 - s0) + std::fabs(t1 - t0) > 1e-3) {
-          ++other_root;
-          continue;
-        }
-        REQUIRE(patch.in_domain(s0, t0) == patch.in_domain(s1, t1));
-        REQUIRE(std::fabs(s1 - s0) + std::fabs(t1 - t0) < detail::kDomainTolerance / 10);
-      }
-    });
+      REQUIRE(patch.in_domain(s0, t0) == patch.in_domain(s1, t1));
+      REQUIRE(std::fabs(s1 - s0) + std::fabs(t1 - t0) < detail::kDomainTolerance / 10);
+    }
+    return true;
   };
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     PatchControl control;
     if (!patch_control(mesh, topo, t, map, control)) continue;
-    check(BezierPatch(control), [](double a, double b) { return std::max({-a, -b, a + b - 1}); });
-    check(CoonsPatch(control), [](double u, double v) { return std::max({-u, -v, u - 1, v - 1}); });
+    // Bezier: the candidates and starts of the tessellation (Bezier patches that may fold).
+    const BezierPatch bezier(control);
+    auto bezier_outside = [](double a, double b) { return std::max({-a, -b, a + b - 1}); };
+    ++patch_number;
+    bezier.tessellate(64, 48, nodes,
+                      [&](int x, int y, double s, double t) { examine(bezier, bezier_outside, x, y, s, t); });
+    // Both: those of the rows (Bezier patches that do not fold, every Coons patch).
+    auto by_rows = [&](const auto& patch, auto&& outside) {
+      if (!patch.fold_cells(folds)) return;
+      ++patch_number;
+      detail::scan_rows(patch, folds, 64, 48, scan,
+                        [&](int x, int y, double& s, double& t) {
+                          if (!examine(patch, outside, x, y, s, t)) return detail::Placed::none;
+                          if (patch.in_domain(s, t)) return detail::Placed::inside;
+                          const bool near = patch.outside_by(s, t) <= detail::kNear;
+                          return near ? detail::Placed::outside : detail::Placed::beyond;
+                        });
+    };
+    by_rows(bezier, bezier_outside);
+    by_rows(CoonsPatch(control), [](double u, double v) { return std::max({-u, -v, u - 1, v - 1}); });
   }
   CHECK(candidates > 10000);
   CHECK(boundary > 200);

@@ -11,6 +11,7 @@
 //   the value is the mean of the patches over the pixel, or bilinear where no patch reaches.
 // Border triangles (fewer than three neighbours) have no patch (§4.2); a mesh without
 // interior triangles renders as bilinear. Pixels outside the domain stay NaN.
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -66,6 +67,8 @@ class BezierPatch {
     constexpr double e = detail::kDomainTolerance;
     return a >= -e && b >= -e && 1 - a - b >= -e;
   }
+  // How far (a, b) lies outside the domain (the largest violated constraint; <= 0 inside).
+  static double outside_by(double a, double b) { return std::max({-a, -b, a + b - 1}); }
   // The sides of the parameter domain for the exact variant's rows (patch_scan.h): side k
   // (b = 0, a = 0, c = 0) at f in [0, 1] has parameters side(k, f).
   static constexpr int kSides = 3;

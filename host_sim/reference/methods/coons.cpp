@@ -162,21 +162,6 @@ bool CoonsPatch::fold_cells(std::vector<detail::FoldCell>& cells) const {
   return true;
 }
 
-std::array<int, 2> CoonsPatch::subdivisions() const {
-  // P_uu = 2 kuu + 2 v kuuv, P_vv = 2 kvv + 2 u kuvv and P_uv = kuv + 2 u kuuv + 2 v kuvv are
-  // affine, so their largest norms over the square are at its corners.
-  // Largest squared norms first, one square root each (hypot per corner cost more than the rest).
-  auto norm2 = [](double x, double y) { return x * x + y * y; };
-  double kuu = 0, kvv = 0, kuv = 0;
-  for (double v : {0.0, 1.0}) kuu = std::max(kuu, norm2(2 * (x_.kuu + v * x_.kuuv), 2 * (y_.kuu + v * y_.kuuv)));
-  for (double u : {0.0, 1.0}) kvv = std::max(kvv, norm2(2 * (x_.kvv + u * x_.kuvv), 2 * (y_.kvv + u * y_.kuvv)));
-  for (double u : {0.0, 1.0})
-    for (double v : {0.0, 1.0})
-      kuv = std::max(kuv, norm2(x_.kuv + 2 * u * x_.kuuv + 2 * v * x_.kuvv, y_.kuv + 2 * u * y_.kuuv + 2 * v * y_.kuvv));
-  kuu = std::sqrt(kuu), kvv = std::sqrt(kvv), kuv = std::sqrt(kuv);
-  return {detail::subdivisions_for(2 * (kuu + kuv)), detail::subdivisions_for(2 * (kvv + kuv))};
-}
-
 void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
   detail::render_patches<CoonsPatch>(
       "coons", mesh, domain_width, domain_height, options, out, [](const PatchControl&) { return true; },

@@ -83,6 +83,8 @@ class CoonsPatch {
     constexpr double e = detail::kDomainTolerance;
     return u >= -e && v >= -e && u <= 1 + e && v <= 1 + e;
   }
+  // How far (u, v) lies outside the domain (the largest violated constraint; <= 0 inside).
+  static double outside_by(double u, double v) { return std::max({-u, -v, u - 1, v - 1}); }
   // The sides of the parameter domain for the exact variant's rows (patch_scan.h): side k
   // (v = 0, v = 1, u = 0, u = 1) at f in [0, 1] has parameters side(k, f).
   static constexpr int kSides = 4;
@@ -93,18 +95,6 @@ class CoonsPatch {
   // its side, where the Jacobian determinant may vanish, with boxes holding their images
   // (detail::find_fold_cells); none when the patch provably does not fold. Always true.
   bool fold_cells(std::vector<detail::FoldCell>& cells) const;
-  // Subdivisions (nu, nv) for the exact variant (patch_raster.h). Over the square |P_uu| <= Kuu,
-  // |P_vv| <= Kvv, |P_uv| <= Kuv, each the largest at a corner (they are affine). A
-  // micro-triangle edge d (steps hu = 1/nu, hv = 1/nv) has |d' H d| <= (Kuu + Kuv) hu^2 +
-  // (Kvv + Kuv) hv^2, so each side takes twice its share as its bound.
-  std::array<int, 2> subdivisions() const;
-  // Tessellates the patch (subdivisions(), node (i, j) at u = i / nu, v = j / nv, each grid
-  // cell split along (i, j)-(i+1, j+1)) and calls visit(x, y, u, v) for every pixel of the
-  // width x height image that a micro-triangle covers, with the micro-triangle's linear guess
-  // of its parameters, then for the pixels near each boundary arc beyond its chord
-  // (detail::visit_boundary_side), guessed from the chord: the candidates of patch_raster.h.
-  template <class Visit>
-  void tessellate(int width, int height, std::vector<detail::MicroVertex>& node, Visit&& visit) const;
 
  private:
   // One coordinate (x, y or a value channel) of the patch: its corners and curves, and the
@@ -132,34 +122,6 @@ class CoonsPatch {
   XY pos_[8];                      // x_ and y_ monomial coefficients as pairs
   std::vector<Component> value_;  // one per value channel
 };
-
-template <class Visit>
-void CoonsPatch::tessellate(int width, int height, std::vector<detail::MicroVertex>& node, Visit&& visit) const {
-  const auto [nu, nv] = subdivisions();
-  auto index = [nu = nu](int i, int j) { return std::size_t(j) * (nu + 1) + i; };
-  node.resize(std::size_t(nu + 1) * (nv + 1));
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (int j = 0; j <= nv; ++j)
-    for (int i = 0; i <= nu; ++i) {
-      const double u = double(i) / nu, v = double(j) / nv;
-      const Point p = position(u, v);
-      if (!detail::snap(p.x, p.y, u, v, node[index(i, j)])) return;  // absurd coordinates: no patch
-      x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-    }
-  // Off the image, the arcs too: an arc leaves its chord by at most Kuu / (8 nu^2) <= 3/8
-  // pixel (or Kvv / (8 nv^2)), by subdivisions().
-  if (x1 < -1 || y1 < -1 || x0 > width || y0 > height) return;
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      // Edges on the domain's boundary own their points: a pixel on a chord gets this guess.
-      detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j)], node[index(i + 1, j + 1)], width,
-                                       height, visit, (j == 0 ? 1u : 0u) | (i + 1 == nu ? 2u : 0u));
-      detail::rasterize_micro_triangle(node[index(i, j)], node[index(i + 1, j + 1)], node[index(i, j + 1)], width,
-                                       height, visit, (j + 1 == nv ? 2u : 0u) | (i == 0 ? 4u : 0u));
-    }
-  for (int k = 0; k < kSides; ++k)
-    detail::visit_boundary_side(*this, k < 2 ? nu : nv, [k](double f) { return side(k, f); }, width, height, visit);
-}
 
 void render_coons(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out);
 

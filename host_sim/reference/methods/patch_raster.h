@@ -15,7 +15,10 @@
 //   - by rows (patch_scan.h), for every Coons patch and every Bezier patch that provably
 //     does not fold: each pixel between the leftmost and rightmost crossing of its row with
 //     the boundary curves (and with boxes around the fold, where a Coons patch folds), each
-//     once, started from the pixel before it or from a crossing;
+//     once, started from the pixel before it or from a crossing (a row the image cuts on the
+//     left is started left of the image all the same), or from a grid over the domain where
+//     these starts reach no solution, one far outside the domain (kNear) or, where the patch
+//     folds, none in it;
 //   - by a coarse tessellation (rasterize_tessellated), for a Bezier patch that may fold:
 //     its micro-triangles, rasterized with exact integer edge tests, give the pixels inside
 //     the tessellation's polygon with a linear guess good to kGuessTolerance pixels; between
@@ -353,9 +356,10 @@ std::vector<std::uint32_t> triangles_by_cell(const Mesh& mesh);
 void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, int domain_height,
                       const RenderOptions& options, Field& out);
 
-// The exact variant for any patch: each candidate pixel of patch.tessellate, placed by
-// patch.solve from its guess and kept when in the closed domain (patch.in_domain), adds the
-// patch's values there to `canvas`, once per pixel (the canvas's stamps).
+// The exact variant for a patch with a tessellation (kTessellated below: Bezier): each
+// candidate pixel of patch.tessellate, placed by patch.solve from its guess and kept when in
+// the closed domain (patch.in_domain), adds the patch's values there to `canvas`, once per
+// pixel (the canvas's stamps).
 template <class Patch>
 void rasterize_tessellated(const Patch& patch, PatchCanvas& canvas, std::vector<MicroVertex>& node) {
   canvas.begin_patch();
@@ -375,7 +379,8 @@ template <class Patch>
 void rasterize_rows(const Patch& patch, const std::vector<FoldCell>& folds, PatchCanvas& canvas, ScanScratch& scan) {
   scan_rows(patch, folds, canvas.width(), canvas.height(), scan, [&](int x, int y, double& s, double& t) {
     if (!patch.solve(x, y, s, t)) return Placed::none;
-    if (!patch.in_domain(s, t)) return Placed::outside;
+    if (!patch.in_domain(s, t)) return patch.outside_by(s, t) <= kNear ? Placed::outside : Placed::beyond;
+    if (x < 0) return Placed::inside;  // left of the image: a start for the next pixels only
     const std::size_t p = canvas.index(x, y);
     if (canvas.inside(p)) canvas.add_inside(p, patch, s, t);
     return Placed::inside;
@@ -389,6 +394,10 @@ struct PatchScratch {
   std::vector<FoldCell> folds;
 };
 
+// Patches with a tessellation (Bezier: for those that may fold).
+template <class Patch>
+inline constexpr bool kTessellated = requires(const Patch& patch) { patch.subdivisions(); };
+
 // The exact variant for one patch: by rows where its fold is bounded (patch.fold_cells: a
 // Coons patch always, a Bezier patch when it provably does not fold), else by its
 // tessellation.
@@ -396,7 +405,7 @@ template <class Patch>
 void rasterize_exact(const Patch& patch, PatchCanvas& canvas, PatchScratch& scratch) {
   if (patch.fold_cells(scratch.folds))
     rasterize_rows(patch, scratch.folds, canvas, scratch.scan);
-  else
+  else if constexpr (kTessellated<Patch>)
     rasterize_tessellated(patch, canvas, scratch.node);
 }
 

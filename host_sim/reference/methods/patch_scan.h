@@ -17,7 +17,8 @@
 // through the inverse Jacobian there; the next pixels extrapolate the last three solutions
 // (two at a stretch's start). The starts are a pixel or less from the solutions and at least
 // second-order accurate, so Newton mostly takes two or three steps. A pixel that none of
-// these places tries the two nearest points of a 5 x 5 grid over the domain.
+// these settles (see settles() in scan_rows) tries the two nearest points of a 5 x 5 grid
+// over the domain.
 //
 // Where does it fold? one_sign below bounds the Jacobian determinant's sign by its Bernstein
 // coefficients (the determinant lies in their convex hull): all of one sign prove that the
@@ -128,9 +129,10 @@ inline void add_arc_crossings(const BoundaryArc& arc, int j0, int j1, std::vecto
   }
 }
 
-// What a start made of a pixel: Newton found no solution, one outside the patch's domain,
-// or one inside (the pixel counted).
-enum class Placed { none, outside, inside };
+// What a start made of a pixel: Newton found no solution, one outside the patch's domain
+// but within kNear of it, one farther outside, or one inside (the pixel counted).
+enum class Placed { none, outside, beyond, inside };
+inline constexpr double kNear = 0.25;
 
 // A part of the parameter domain where a patch may fold: a box that holds its image, and
 // its middle (position and parameters) as a start. The boundary of a folded patch's image
@@ -145,7 +147,10 @@ struct FoldCell {
 // leftmost and rightmost crossing of its row with the boundary of `patch` or with a box of
 // `folds` (which must hold the patch's fold: none where it does not fold), with a start
 // (s, t) for Newton passed by reference: visit returns what it made of the pixel (Placed),
-// with (s, t) the solution unless none.
+// with (s, t) the solution unless none. Where the
+// image cuts a row on the left, visit also gets the row's columns i < 0 (up to kLeadIn of
+// them): to be solved, not counted.
+inline constexpr int kLeadIn = 64;
 template <class Patch, class Visit>
 void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width, int height, ScanScratch& scratch,
                Visit&& visit) {
@@ -209,9 +214,11 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
   };
 
   // A start settles a pixel when the patch covers it from there or, for a patch that does
-  // not fold, when Newton finds a solution at all: outside the domain it is then the only one.
-  // Where the patch folds, a pixel may have a preimage outside the domain besides one in
-  // it, so the other starts are tried too.
+  // not fold, when Newton finds a solution near the domain: the pixel then lies beside the
+  // patch. The polynomial goes on beyond the domain and may fold back over the patch there,
+  // so a solution far outside (a start from a crossing near the Coons corner M, where the
+  // inverse Jacobian is large, can reach one) does not settle the pixel: nor, where the patch
+  // folds, does any solution outside the domain. The other starts are then tried too.
   auto settles = [&folds](Placed placed) {
     return placed == Placed::inside || (placed == Placed::outside && folds.empty());
   };
@@ -224,7 +231,9 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
     const int count = row.count;
     for (int k = 1; k < count; ++k)  // insertion sort by x: a row has a few crossings
       for (int m = k; m > 0 && crossing[m].x < crossing[m - 1].x; --m) std::swap(crossing[m], crossing[m - 1]);
-    const int i0 = std::max(0, int(std::ceil(row.x_min - kSpanMargin)));
+    // From the row's left end even where the image cuts it (up to kLeadIn columns before it):
+    // a start from a crossing far to the left may reach a preimage beyond the domain.
+    const int i0 = int(std::max(-double(kLeadIn), std::ceil(row.x_min - kSpanMargin)));
     const int i1 = std::min(width - 1, int(std::floor(row.x_max + kSpanMargin)));
 
     // Start at crossing k moved to column i through the inverse Jacobian there; false where
@@ -236,8 +245,9 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
       patch.position(c.s, c.t, px, py, xs, xt, ys, yt);
       const double det = xs * yt - xt * ys;
       const bool regular = std::fabs(det) > 1e-9 * (std::fabs(xs * yt) + std::fabs(xt * ys));
-      ds = regular ? yt / det : 0, dt = regular ? -ys / det : 0;
-      const double ex = regular ? -xt / det : 0, et = regular ? xs / det : 0;  // J^-1 (0, 1)
+      const double inverse = regular ? 1 / det : 0;
+      ds = yt * inverse, dt = -ys * inverse;
+      const double ex = -xt * inverse, et = xs * inverse;  // J^-1 (0, 1)
       gs = c.s + (i - c.x) * ds + (j - c.y) * ex, gt = c.t + (i - c.x) * dt + (j - c.y) * et;
       return regular || (i == c.x && j == c.y);
     };
@@ -267,8 +277,7 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
       double grid_s[2], grid_t[2];
       for (int k : order) {
         double cds = 0, cdt = 0;
-        if (k <= kGridStart) {
-          if (continued) continue;  // only where no other start found a solution
+        if (k <= kGridStart) {  // no crossing settled the pixel
           if (k == kGridStart) from_grid(i, j, grid_s, grid_t);
           ns = grid_s[kGridStart - k], nt = grid_t[kGridStart - k];
         } else if (k < 0 || !from_crossing(k, i, ns, nt, cds, cdt)) {
