@@ -35,7 +35,7 @@ Image render_reference(const Triangulation& tri, const MethodInfo& method, const
   Image img(field.width, field.height, nc, options.background);
   // Clamp, then round half away from zero (x >= 0 here, so x - floor(x) is exact).
   auto to_byte = [](double x) {
-    x = std::fmin(255.0, std::fmax(0.0, x));
+    x = x < 0 ? 0 : x > 255 ? 255 : x;  // not NaN here
     const int r = static_cast<int>(x);
     return static_cast<std::uint8_t>(r + int(x - r >= 0.5));  // no branch: half the pixels round up
   };
