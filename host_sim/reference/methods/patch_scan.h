@@ -147,9 +147,8 @@ struct FoldCell {
 // leftmost and rightmost crossing of its row with the boundary of `patch` or with a box of
 // `folds` (which must hold the patch's fold: none where it does not fold), with a start
 // (s, t) for Newton passed by reference: visit returns what it made of the pixel (Placed),
-// with (s, t) the solution unless none. Where the
-// image cuts a row on the left, visit also gets the row's columns i < 0 (up to kLeadIn of
-// them): to be solved, not counted.
+// with (s, t) the solution unless none. Where the image cuts a row on the left, visit also
+// gets the row's columns i < 0 (up to kLeadIn of them): to be solved, not counted.
 inline constexpr int kLeadIn = 64;
 template <class Patch, class Visit>
 void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width, int height, ScanScratch& scratch,
