@@ -537,26 +537,15 @@ static_assert(2 * (int64_t(64) << config::subpixel_bits) * (int64_t(64) << confi
 // cost more than the rest of a small triangle's rows; elsewhere column by column, stopping at the
 // first uncovered column after the covered ones (a row's covered columns are contiguous).
 #if TS_USE_SSE2
+// Whether the x coefficient A = -dy 2^S of a scan-path edge fits int16 (|dy| < 18 * 2^S, see
+// SmallEdges).
+constexpr bool small_a_fits_int16 = (int32_t(18) << (2 * config::subpixel_bits)) <= 32768;
+
 // Groups: vectors of four columns per edge, as many as the box needs (at most 4 for boxes below 16
 // columns), so the whole state stays in registers.
 template <int Groups>
 class RowMasks {
  public:
-  __attribute__((always_inline)) RowMasks(const int32_t* row, const int32_t* a, const int32_t* b) {
-    for (int k = 0; k < 3; ++k) {
-      const __m128i ak = _mm_set1_epi32(a[k]);
-      const __m128i four_a = _mm_slli_epi32(ak, 2);
-      // Lanes 0..3: row + (0, 1, 2, 3) a; no multiply (SSE2 has no 32-bit lane product).
-      __m128i e = _mm_add_epi32(_mm_set1_epi32(row[k]), _mm_and_si128(ak, _mm_set_epi32(-1, -1, -1, 0)));
-      e = _mm_add_epi32(e, _mm_and_si128(ak, _mm_set_epi32(-1, -1, 0, 0)));
-      e = _mm_add_epi32(e, _mm_and_si128(ak, _mm_set_epi32(-1, 0, 0, 0)));
-      for (int j = 0; j < Groups; ++j) {
-        e_[k][j] = e;
-        e = _mm_add_epi32(e, four_a);
-      }
-      b_[k] = _mm_set1_epi32(b[k]);
-    }
-  }
   // From the edges in lanes 0..2 of row, a and b.
   __attribute__((always_inline)) RowMasks(__m128i row, __m128i a, __m128i b) {
     init<0>(row, a, b);
@@ -583,9 +572,17 @@ class RowMasks {
   __attribute__((always_inline)) void init(__m128i row, __m128i a, __m128i b) {
     const __m128i ak = _mm_shuffle_epi32(a, K * 0x55);
     const __m128i four_a = _mm_slli_epi32(ak, 2);
-    __m128i e = _mm_add_epi32(_mm_shuffle_epi32(row, K * 0x55), _mm_and_si128(ak, _mm_set_epi32(-1, -1, -1, 0)));
-    e = _mm_add_epi32(e, _mm_and_si128(ak, _mm_set_epi32(-1, -1, 0, 0)));
-    e = _mm_add_epi32(e, _mm_and_si128(ak, _mm_set_epi32(-1, 0, 0, 0)));
+    // Lanes 0..3: row + (0, 1, 2, 3) a (SSE2 has no 32-bit lane product).
+    __m128i ramp;
+    if constexpr (small_a_fits_int16) {
+      // One int16 multiply-add: a's low half (a itself) times 0..3, its high half times 0.
+      ramp = _mm_madd_epi16(ak, _mm_setr_epi32(0, 1, 2, 3));
+    } else {
+      ramp = _mm_and_si128(ak, _mm_set_epi32(-1, -1, -1, 0));
+      ramp = _mm_add_epi32(ramp, _mm_and_si128(ak, _mm_set_epi32(-1, -1, 0, 0)));
+      ramp = _mm_add_epi32(ramp, _mm_and_si128(ak, _mm_set_epi32(-1, 0, 0, 0)));
+    }
+    __m128i e = _mm_add_epi32(_mm_shuffle_epi32(row, K * 0x55), ramp);
     for (int j = 0; j < Groups; ++j) {
       e_[K][j] = e;
       e = _mm_add_epi32(e, four_a);
