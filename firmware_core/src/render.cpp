@@ -78,7 +78,23 @@ struct TriangleSetup {
   int64_t e_ref[3];
   int32_t xr, yr;
   int64_t area2;
+  bool scan_path;  // a triangle of the scan path (small: see SmallEdges)
 };
+
+// Whether bilinear setup of scan-path triangles may use ShortRoundingDivider: |2n + d| 2d < 2^64 for
+// every numerator n. Such a triangle's box is below 16 pixels, so its extents (and |dx|, |dy| of its
+// edges) are below 17 * 2^S, the offsets of its vertices from the reference pixel below 18 * 2^S,
+// its doubled area d below (17 * 2^S)^2 (at most its box), and |e_ref| < 2 * 17 * 18 * 2^(2S) =
+// 612 * 2^(2S). With values below 2^16 the largest numerator, 2^8 sum v e_ref (dv/dx and dv/dy
+// have |A|, |B| < 17 * 2^(2S) instead), is below 2^24 * 3 * 612 * 2^(2S). S = 4: |2n + d| < 2^43.9
+// and 2d < 2^17.2.
+constexpr bool short_division_fits(int s) {
+  const uint64_t d = uint64_t(17 * 17) << (2 * s);
+  const uint64_t x = (uint64_t(3 * 612) << (25 + 2 * s)) + d;
+  return x < ~uint64_t(0) / (2 * d);
+}
+constexpr bool bilinear_short_division = short_division_fits(config::subpixel_bits);
+static_assert(short_division_fits(4), "the default configuration divides scan-path numerators without correction");
 
 inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map, TriangleView* tv) {
   const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
@@ -293,14 +309,21 @@ struct BilinearShader {
 #endif
 
   void begin(const TriangleView& tv, const TriangleSetup& s) {
-    const RoundingDivider by_area2(s.area2);
     xr = s.xr;
     yr = s.yr;
     int32_t vals[3][Channels];
     for (int k = 0; k < 3; ++k) vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
-    for (int c = 0; c < Channels; ++c) {
-      const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
-      ch[c].setup(s.a, s.b, s.e_ref, by_area2, v3);
+    auto setup = [&](const auto& by_area2) {
+      for (int c = 0; c < Channels; ++c) {
+        const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
+        ch[c].setup(s.a, s.b, s.e_ref, by_area2, v3);
+      }
+    };
+    // The scan path's numerators are small enough for the division without correction.
+    if (bilinear_short_division && s.scan_path) {
+      setup(ShortRoundingDivider(s.area2));
+    } else {
+      setup(RoundingDivider(s.area2));
     }
 #if TS_USE_SSE2
     if constexpr (in_lanes) {
@@ -694,6 +717,7 @@ inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSet
   s->xr = xr;
   s->yr = yr;
   s->area2 = e.area2;
+  s->scan_path = true;
 #if TS_USE_SSE2
   const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tv.x));
   const __m128i y = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tv.y));
@@ -774,6 +798,7 @@ inline void edge_setup(const TriangleView& tv, const Edge* e, int64_t area2, Tri
     s->e_ref[k] = e[k].exact_at(s->xr, s->yr);
   }
   s->area2 = area2;
+  s->scan_path = false;
 }
 
 template <typename Shader>

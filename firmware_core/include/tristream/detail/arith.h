@@ -80,6 +80,26 @@ class RoundingDivider {
   uint64_t offset_;  // the rounding offset d and the divider's k 2d, added once
 };
 
+// n / d rounded to nearest (halves up) like RoundingDivider, for numerators small against d:
+// exact when |2n + d| * 2d < 2^64 (the caller proves it from its bit budget). With the reciprocal
+// m = ceil(2^64 / D) (D = 2d >= 2), m D = 2^64 + e with 0 <= e < D, so for 0 <= x < 2^64 / D,
+// x m / 2^64 = x / D + x e / (D 2^64) and x e < 2^64: the excess stays below 1 / D and cannot reach
+// the next integer, so floor(x m / 2^64) = floor(x / D) without a correction. Negative x: with
+// s = x >> 63 (all ones), floor(x / D) = ~floor(~x / D) (~x = -x - 1 >= 0), both as s ^ q(x ^ s).
+class ShortRoundingDivider {
+ public:
+  explicit ShortRoundingDivider(int64_t d) : half_(d), m_(~uint64_t(0) / uint64_t(2 * d) + 1) {}
+  int64_t operator()(int64_t n) const {
+    const int64_t x = 2 * n + half_;
+    const int64_t s = x >> 63;
+    return int64_t(mulhi_u64(uint64_t(x ^ s), m_)) ^ s;
+  }
+
+ private:
+  int64_t half_;
+  uint64_t m_;
+};
+
 // floor(x * y / 2^30) for |x| < 2^61 and any int32 y (a q2_30 weight): the 96-bit product from
 // a 32 x 32 -> 64 product of x's high word and one of its low word, so no 128-bit type is needed
 // (the same result everywhere; the native 128-bit product where there is one).

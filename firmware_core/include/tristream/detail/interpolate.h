@@ -20,9 +20,9 @@ struct BilinearChannel {
 
   // values: q8_8 of vertices 0, 1, 2. a[k], b[k]: edge k's coefficients; e_ref[k]: edge k's exact
   // value at a reference pixel (xr, yr) near the triangle. by_area2: division by the doubled area,
-  // rounded to nearest.
-  void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const RoundingDivider& by_area2,
-             const int32_t* values) {
+  // rounded to nearest (RoundingDivider, or ShortRoundingDivider where the numerators allow).
+  template <typename Divider>
+  void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const Divider& by_area2, const int32_t* values) {
     int64_t nx = 0, ny = 0, nv = 0;
     for (int k = 0; k < 3; ++k) {
       const int64_t v = values[(k + 2) % 3];
