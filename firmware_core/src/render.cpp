@@ -801,28 +801,31 @@ inline void edge_setup(const TriangleView& tv, const Edge* e, int64_t area2, Tri
   s->scan_path = false;
 }
 
+// Returns whether the triangle is done with the band: no pixel column right of the clip, no
+// pixel row below it.
 template <typename Shader>
-void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
+bool rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
   const int32_t top = position_fx::from_raw(min3(tv.y[0], tv.y[1], tv.y[2])).ceil_to_int();
   const int32_t bottom = position_fx::from_raw(max3(tv.y[0], tv.y[1], tv.y[2])).floor_to_int();
+  const int32_t left = position_fx::from_raw(min3(tv.x[0], tv.x[1], tv.x[2])).ceil_to_int();
+  const int32_t right = position_fx::from_raw(max3(tv.x[0], tv.x[1], tv.x[2])).floor_to_int();
+  const bool done = (right < clip.x1) & (bottom < clip.y1);
   int32_t y0 = top, y1 = bottom;
   if (y0 < clip.y0) y0 = clip.y0;
   if (y1 > clip.y1 - 1) y1 = clip.y1 - 1;
-  if (y0 > y1) return;
-  const int32_t left = position_fx::from_raw(min3(tv.x[0], tv.x[1], tv.x[2])).ceil_to_int();
-  const int32_t right = position_fx::from_raw(max3(tv.x[0], tv.x[1], tv.x[2])).floor_to_int();
-  if (right < clip.x0 || left >= clip.x1) return;
+  if (y0 > y1) return done;
+  if (right < clip.x0 || left >= clip.x1) return done;
   // The scan path: small boxes without explicit corners, in int32.
   constexpr uint16_t any_corner = corner_explicit0 | corner_explicit0 << 1 | corner_explicit0 << 2;
   if (!(tv.flags & any_corner) && right - left < scan_max_extent && bottom - top < scan_max_extent) {
     const int32_t area2 = (tv.x[1] - tv.x[0]) * (tv.y[2] - tv.y[0]) - (tv.y[1] - tv.y[0]) * (tv.x[2] - tv.x[0]);
-    if (area2 <= 0) return;  // collapsed by down-scaling
+    if (area2 <= 0) return done;  // collapsed by down-scaling
     scan_small(tv, area2, left, right, y0, y1, clip.x0, clip.x1 - 1, shader);
-    return;
+    return done;
   }
   const int64_t area2 = (int64_t(tv.x[1]) - tv.x[0]) * (int64_t(tv.y[2]) - tv.y[0]) -
                         (int64_t(tv.y[1]) - tv.y[0]) * (int64_t(tv.x[2]) - tv.x[0]);
-  if (area2 <= 0) return;  // collapsed by down-scaling
+  if (area2 <= 0) return done;  // collapsed by down-scaling
   Edge edges[3];
   for (int k = 0; k < 3; ++k) {
     const int n = (k + 1) % 3;
@@ -845,7 +848,7 @@ void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
       last = c.y > last ? c.y : last;
     }
   }
-  if (first > last) return;
+  if (first > last) return done;
   SpanStepper spans;
   spans.init(edges, first);
   bool started = false;
@@ -880,6 +883,7 @@ void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
     }
     shader.span(y, xs, xe, cs, ce);
   }
+  return done;
 }
 
 // The active triangles of one layer: a bitmap over the window [base, cursor) of the triangle
@@ -894,6 +898,7 @@ struct ActiveSet {
   uint32_t capacity = 0;  // bits, a multiple of 32
   uint32_t base = 0;
   uint32_t cursor = 0;
+  int32_t view_x1 = 0;  // the viewport's right end: tiles ending there are the last of their band
 
   // Bit positions: pos(t) = t mod capacity, stepped with next() to avoid a division per test.
   uint32_t pos(uint32_t t) const { return t % capacity; }
@@ -1092,20 +1097,28 @@ struct ColumnWindow {
 #endif
 };
 
+// Draws the live triangles of a layer that meet the tile `rect`. A triangle whose last pixel column
+// is in this tile or left of it (nothing for the band's later tiles) and whose last row is in this
+// band (the band advance would drop it) leaves the active set now: the later tiles of the band then
+// skip it without the column test. The pixels are the same (those tiles would have culled it).
 template <typename Shader>
-void draw_layer(const ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
+void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
   const ColumnWindow columns(map, rect);
-  set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span, uint32_t) {
+  const bool later_tiles = rect.x1 < set.view_x1;
+  set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span, uint32_t p) {
+    uint32_t done = 0;
     for (uint32_t hits = columns.meeting(*set.layer, t, live, span); hits; hits &= hits - 1) {
+      const uint32_t i = uint32_t(__builtin_ctz(hits));
       TriangleView tv;
-      load_triangle(*set.layer, t + uint32_t(__builtin_ctz(hits)), map, &tv);
-      rasterize(tv, rect, shader);
+      load_triangle(*set.layer, t + i, map, &tv);
+      done |= uint32_t(rasterize(tv, rect, shader)) << i;
     }
+    if (later_tiles) set.words[p / 32] &= ~(done << (p % 32));
   });
 }
 
 template <int Channels, typename Writer>
-void draw_with(const Blob& blob, int layer_index, int first_channel, const ActiveSet& list, const Mapping& map,
+void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& list, const Mapping& map,
                const Rect& rect, const Writer& writer, int step) {
   const BlobLayer* layer = &blob.layers[layer_index];
   // Only the methods compiled in (resolve rejects the others before any tile is drawn).
@@ -1275,6 +1288,7 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
     sets[l].layer = &blob.layers[l];
     sets[l].words = reinterpret_cast<uint32_t*>(ws + pad + scratch + size_t(l) * set_bytes);
     sets[l].capacity = uint32_t(set_bytes * 8 > 0xFFFFFFE0u ? 0xFFFFFFE0u : set_bytes * 8);
+    sets[l].view_x1 = r.view.x1;
     if (sets[l].capacity) sets[l].reset();
   }
   const detail::TileRenderer draw = detail::tile_renderer(r.format);
