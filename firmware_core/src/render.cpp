@@ -93,7 +93,13 @@ constexpr bool short_division_fits(int s) {
   const uint64_t x = (uint64_t(3 * 612) << (25 + 2 * s)) + d;
   return x < ~uint64_t(0) / (2 * d);
 }
+// Only where the high multiply is one instruction (a 128-bit type): elsewhere (Cortex-M) it saves
+// less than the flash of a second copy of the channel setup costs.
+#if defined(__SIZEOF_INT128__)
 constexpr bool bilinear_short_division = short_division_fits(config::subpixel_bits);
+#else
+constexpr bool bilinear_short_division = false;
+#endif
 static_assert(short_division_fits(4), "the default configuration divides scan-path numerators without correction");
 
 inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map, TriangleView* tv) {
