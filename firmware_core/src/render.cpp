@@ -67,8 +67,40 @@ Status resolve(const Blob& blob, const RenderParams& p, Resolved* r) {
 struct TriangleView {
   uint16_t v[3];
   uint16_t flags;
-  int32_t x[3], y[3];
+  int32_t x[4], y[4];  // x[3], y[3]: 0 (whole vectors for SSE2)
 };
+
+// What a shader's begin needs besides the vertices: the edge coefficients (|a|, |b| < 2^20, see
+// detail/edge.h), the exact edge values at the reference pixel (xr, yr) (vertex 0 floored), and the
+// doubled area.
+struct TriangleSetup {
+  int32_t a[4], b[4];  // a[3], b[3] unused (whole vectors for SSE2)
+  int64_t e_ref[3];
+  int32_t xr, yr;
+  int64_t area2;
+  bool scan_path;  // a triangle of the scan path (small: see SmallEdges)
+};
+
+// Whether bilinear setup of scan-path triangles may use ShortRoundingDivider: |2n + d| 2d < 2^64 for
+// every numerator n. Such a triangle's box is below 16 pixels, so its extents (and |dx|, |dy| of its
+// edges) are below 17 * 2^S, the offsets of its vertices from the reference pixel below 18 * 2^S,
+// its doubled area d below (17 * 2^S)^2 (at most its box), and |e_ref| < 2 * 17 * 18 * 2^(2S) =
+// 612 * 2^(2S). With values below 2^16 the largest numerator, 2^8 sum v e_ref (dv/dx and dv/dy
+// have |A|, |B| < 17 * 2^(2S) instead), is below 2^24 * 3 * 612 * 2^(2S). S = 4: |2n + d| < 2^43.9
+// and 2d < 2^17.2.
+constexpr bool short_division_fits(int s) {
+  const uint64_t d = uint64_t(17 * 17) << (2 * s);
+  const uint64_t x = (uint64_t(3 * 612) << (25 + 2 * s)) + d;
+  return x < ~uint64_t(0) / (2 * d);
+}
+// Only where the high multiply is one instruction (a 128-bit type): elsewhere (Cortex-M) it saves
+// less than the flash of a second copy of the channel setup costs.
+#if defined(__SIZEOF_INT128__)
+constexpr bool bilinear_short_division = short_division_fits(config::subpixel_bits);
+#else
+constexpr bool bilinear_short_division = false;
+#endif
+static_assert(short_division_fits(4), "the default configuration divides scan-path numerators without correction");
 
 inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map, TriangleView* tv) {
   const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
@@ -79,6 +111,7 @@ inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map
     tv->y[k] = map.y(load_u16(pos + 2));
   }
   tv->flags = load_u16(p + 6);
+  tv->x[3] = tv->y[3] = 0;
 }
 
 // First and last pixel row whose sample points may lie in the triangle.
@@ -281,16 +314,22 @@ struct BilinearShader {
   __m128i lane_ref{}, lane_dx{}, lane_dy{};
 #endif
 
-  void begin(const TriangleView& tv, const Edge* e, int64_t area2) {
-    const RoundingDivider by_area2(area2);
-    xr = position_fx::from_raw(tv.x[0]).floor_to_int();
-    yr = position_fx::from_raw(tv.y[0]).floor_to_int();
-    const int64_t e_ref[3] = {e[0].exact_at(xr, yr), e[1].exact_at(xr, yr), e[2].exact_at(xr, yr)};
+  void begin(const TriangleView& tv, const TriangleSetup& s) {
+    xr = s.xr;
+    yr = s.yr;
     int32_t vals[3][Channels];
     for (int k = 0; k < 3; ++k) vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
-    for (int c = 0; c < Channels; ++c) {
-      const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
-      ch[c].setup(e, e_ref, by_area2, v3);
+    auto setup = [&](const auto& by_area2) {
+      for (int c = 0; c < Channels; ++c) {
+        const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
+        ch[c].setup(s.a, s.b, s.e_ref, by_area2, v3);
+      }
+    };
+    // The scan path's numerators are small enough for the division without correction.
+    if (bilinear_short_division && s.scan_path) {
+      setup(ShortRoundingDivider(s.area2));
+    } else {
+      setup(RoundingDivider(s.area2));
     }
 #if TS_USE_SSE2
     if constexpr (in_lanes) {
@@ -369,10 +408,10 @@ struct ZienkiewiczShader {
   BarycentricStepper steps;
   int fd_state = 0;  // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
 
-  void begin(const TriangleView& tv, const Edge* e, int64_t a2) {
+  void begin(const TriangleView& tv, const TriangleSetup& s) {
+    const int64_t a2 = s.area2;
     const RoundingDivider by_area2(a2);
-    steps.setup(e, by_area2, position_fx::from_raw(tv.x[0]).floor_to_int(),
-                position_fx::from_raw(tv.y[0]).floor_to_int());
+    steps.setup(s.a, s.b, s.e_ref, by_area2, s.xr, s.yr);
     int32_t dx[3], dy[3], vals[3][Channels], grads[Channels][6];
     for (int k = 0; k < 3; ++k) {
       const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
@@ -527,25 +566,20 @@ static_assert(2 * (int64_t(64) << config::subpixel_bits) * (int64_t(64) << confi
 // cost more than the rest of a small triangle's rows; elsewhere column by column, stopping at the
 // first uncovered column after the covered ones (a row's covered columns are contiguous).
 #if TS_USE_SSE2
+// Whether the x coefficient A = -dy 2^S of a scan-path edge fits int16 (|dy| < 18 * 2^S, see
+// SmallEdges).
+constexpr bool small_a_fits_int16 = (int32_t(18) << (2 * config::subpixel_bits)) <= 32768;
+
 // Groups: vectors of four columns per edge, as many as the box needs (at most 4 for boxes below 16
 // columns), so the whole state stays in registers.
 template <int Groups>
 class RowMasks {
  public:
-  __attribute__((always_inline)) RowMasks(const int32_t* row, const int32_t* a, const int32_t* b) {
-    for (int k = 0; k < 3; ++k) {
-      const __m128i ak = _mm_set1_epi32(a[k]);
-      const __m128i four_a = _mm_slli_epi32(ak, 2);
-      // Lanes 0..3: row + (0, 1, 2, 3) a; no multiply (SSE2 has no 32-bit lane product).
-      __m128i e = _mm_add_epi32(_mm_set1_epi32(row[k]), _mm_and_si128(ak, _mm_set_epi32(-1, -1, -1, 0)));
-      e = _mm_add_epi32(e, _mm_and_si128(ak, _mm_set_epi32(-1, -1, 0, 0)));
-      e = _mm_add_epi32(e, _mm_and_si128(ak, _mm_set_epi32(-1, 0, 0, 0)));
-      for (int j = 0; j < Groups; ++j) {
-        e_[k][j] = e;
-        e = _mm_add_epi32(e, four_a);
-      }
-      b_[k] = _mm_set1_epi32(b[k]);
-    }
+  // From the edges in lanes 0..2 of row, a and b.
+  __attribute__((always_inline)) RowMasks(__m128i row, __m128i a, __m128i b) {
+    init<0>(row, a, b);
+    init<1>(row, a, b);
+    init<2>(row, a, b);
   }
   __attribute__((always_inline)) uint32_t covered() const {
     __m128i any_negative[4];
@@ -563,6 +597,28 @@ class RowMasks {
   }
 
  private:
+  template <int K>
+  __attribute__((always_inline)) void init(__m128i row, __m128i a, __m128i b) {
+    const __m128i ak = _mm_shuffle_epi32(a, K * 0x55);
+    const __m128i four_a = _mm_slli_epi32(ak, 2);
+    // Lanes 0..3: row + (0, 1, 2, 3) a (SSE2 has no 32-bit lane product).
+    __m128i ramp;
+    if constexpr (small_a_fits_int16) {
+      // One int16 multiply-add: a's low half (a itself) times 0..3, its high half times 0.
+      ramp = _mm_madd_epi16(ak, _mm_setr_epi32(0, 1, 2, 3));
+    } else {
+      ramp = _mm_and_si128(ak, _mm_set_epi32(-1, -1, -1, 0));
+      ramp = _mm_add_epi32(ramp, _mm_and_si128(ak, _mm_set_epi32(-1, -1, 0, 0)));
+      ramp = _mm_add_epi32(ramp, _mm_and_si128(ak, _mm_set_epi32(-1, 0, 0, 0)));
+    }
+    __m128i e = _mm_add_epi32(_mm_shuffle_epi32(row, K * 0x55), ramp);
+    for (int j = 0; j < Groups; ++j) {
+      e_[K][j] = e;
+      e = _mm_add_epi32(e, four_a);
+    }
+    b_[K] = _mm_shuffle_epi32(b, K * 0x55);
+  }
+
   __m128i e_[3][Groups];
   __m128i b_[3];
 };
@@ -592,42 +648,133 @@ class RowMasks {
 };
 #endif
 
+// The edges of a scan-path triangle (edge k from vertex k to vertex k + 1) in int32, with its doubled
+// area. Its vertices span fewer than scan_max_extent + 2 pixels each way, so every coordinate
+// difference, and the offset of every vertex from a pixel of the box or from vertex 0 floored, is
+// below 19 * 2^S: int16 (S <= 8), and the area is below 2 * (19 * 2^S)^2. Edge values
+// E_k(x, y) = -dy_k (x 2^S - x_k) + dx_k (y 2^S - y_k): the same integer as A x + B y + C of
+// detail/edge.h.
+static_assert((int32_t(19) << config::subpixel_bits) < 32768, "scan-path differences must fit int16");
+static_assert(2 * (int64_t(19) << config::subpixel_bits) * (int64_t(19) << config::subpixel_bits) < (int64_t(1) << 30),
+              "scan-path areas must fit int32");
+struct SmallEdges {
+#if TS_USE_SSE2
+  // Lane k: the int16 pair (-dy_k, dx_k) (low half, high half); A_k; B_k; E_k - bias_k at the box's
+  // first pixel.
+  __m128i pairs, a, b, row;
+#else
+  int32_t dx[3], dy[3];
+  int32_t a[3], b[3], row[3];
+#endif
+  int32_t area2;
+};
+
+#if TS_USE_SSE2
+// Lanes 0..2 (int32, each below 2^15 in magnitude) of lo and hi as int16 pairs (lo low, hi high).
+inline __m128i int16_pairs(__m128i lo, __m128i hi) {
+  return _mm_or_si128(_mm_and_si128(lo, _mm_set1_epi32(0xFFFF)), _mm_slli_epi32(hi, 16));
+}
+#endif
+
+// The edges of a scan-path triangle, for its rows from (left, y0).
+inline void small_edges(const TriangleView& tv, int32_t area2, int32_t left, int32_t y0, SmallEdges* e) {
+  constexpr int S = config::subpixel_bits;
+  e->area2 = area2;
+#if TS_USE_SSE2
+  const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tv.x));
+  const __m128i y = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tv.y));
+  const __m128i dx = _mm_sub_epi32(_mm_shuffle_epi32(x, _MM_SHUFFLE(3, 0, 2, 1)), x);
+  const __m128i dy = _mm_sub_epi32(_mm_shuffle_epi32(y, _MM_SHUFFLE(3, 0, 2, 1)), y);
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i neg_dy = _mm_sub_epi32(zero, dy);
+  e->pairs = int16_pairs(neg_dy, dx);
+  e->a = _mm_slli_epi32(neg_dy, S);
+  e->b = _mm_slli_epi32(dx, S);
+  // The tie rule of make_edge: inclusive when on the boundary, or A < 0, or A == 0 and B < 0.
+  const __m128i bits = _mm_setr_epi32(boundary_edge0, boundary_edge0 << 1, boundary_edge0 << 2, 0);
+  const __m128i boundary = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(tv.flags), bits), bits);
+  const __m128i inclusive = _mm_or_si128(
+      _mm_or_si128(_mm_cmpgt_epi32(dy, zero), _mm_and_si128(_mm_cmpeq_epi32(dy, zero), _mm_cmpgt_epi32(zero, dx))),
+      boundary);
+  const __m128i offsets = int16_pairs(_mm_sub_epi32(_mm_set1_epi32(left * (1 << S)), x),
+                                      _mm_sub_epi32(_mm_set1_epi32(y0 * (1 << S)), y));
+  // E - bias = E - 1 - (inclusive ? -1 : 0) = E + ~inclusive.
+  e->row = _mm_add_epi32(_mm_madd_epi16(e->pairs, offsets), _mm_xor_si128(inclusive, _mm_set1_epi32(-1)));
+#else
+  for (int k = 0; k < 3; ++k) {
+    const int n = k == 2 ? 0 : k + 1;
+    e->dx[k] = tv.x[n] - tv.x[k];
+    e->dy[k] = tv.y[n] - tv.y[k];
+    e->a[k] = -e->dy[k] * (1 << S);
+    e->b[k] = e->dx[k] * (1 << S);
+    // The tie rule of make_edge: inclusive when on the boundary, or A < 0, or A == 0 and B < 0.
+    const bool inclusive =
+        ((tv.flags & (boundary_edge0 << k)) != 0) | (e->dy[k] > 0) | ((e->dy[k] == 0) & (e->dx[k] < 0));
+    e->row[k] = -e->dy[k] * (left * (1 << S) - tv.x[k]) + e->dx[k] * (y0 * (1 << S) - tv.y[k]) - (inclusive ? 0 : 1);
+  }
+#endif
+}
+
+// The setup of a scan-path triangle for the shader (on its first covered row in the clip).
+inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSetup* s) {
+  constexpr int S = config::subpixel_bits;
+  const int32_t xr = position_fx::from_raw(tv.x[0]).floor_to_int();
+  const int32_t yr = position_fx::from_raw(tv.y[0]).floor_to_int();
+  s->xr = xr;
+  s->yr = yr;
+  s->area2 = e.area2;
+  s->scan_path = true;
+#if TS_USE_SSE2
+  const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tv.x));
+  const __m128i y = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tv.y));
+  const __m128i ref = _mm_madd_epi16(e.pairs, int16_pairs(_mm_sub_epi32(_mm_set1_epi32(xr * (1 << S)), x),
+                                                          _mm_sub_epi32(_mm_set1_epi32(yr * (1 << S)), y)));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(s->a), e.a);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(s->b), e.b);
+  const __m128i sign = _mm_srai_epi32(ref, 31);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(s->e_ref), _mm_unpacklo_epi32(ref, sign));
+  _mm_storel_epi64(reinterpret_cast<__m128i*>(s->e_ref + 2), _mm_unpackhi_epi32(ref, sign));
+#else
+  for (int k = 0; k < 3; ++k) {
+    s->a[k] = e.a[k];
+    s->b[k] = e.b[k];
+    s->e_ref[k] = -e.dy[k] * (xr * (1 << S) - tv.x[k]) + e.dx[k] * (yr * (1 << S) - tv.y[k]);
+  }
+#endif
+}
+
 template <int Groups, typename Shader>
-void scan_rows(const TriangleView& tv, const Edge* edges, int64_t area2, int32_t left, uint32_t box, const int32_t* row,
-               const int32_t* a, const int32_t* b, int32_t y0, int32_t y1, int32_t cx0, int32_t cx1, Shader& shader);
+void scan_rows(const TriangleView& tv, const SmallEdges& e, int32_t left, uint32_t box, int32_t y0, int32_t y1,
+               int32_t cx0, int32_t cx1, Shader& shader);
 
 // Rows y0..y1 (already clipped) of a triangle whose pixel box has columns left..right: each row
 // is scanned over the whole box, so xs is the row's first covered pixel even when the clip
 // (columns cx0..cx1) cuts the span.
 template <typename Shader>
-void scan_small(const TriangleView& tv, const Edge* edges, int64_t area2, int32_t left, int32_t right, int32_t y0,
-                int32_t y1, int32_t cx0, int32_t cx1, Shader& shader) {
+void scan_small(const TriangleView& tv, int32_t area2, int32_t left, int32_t right, int32_t y0, int32_t y1,
+                int32_t cx0, int32_t cx1, Shader& shader) {
   if (right < left) return;  // no pixel column between the vertices
-  int32_t a[3], b[3], row[3];
-  for (int k = 0; k < 3; ++k) {
-    a[k] = int32_t(edges[k].a);
-    b[k] = int32_t(edges[k].b);
-    row[k] = int32_t(edges[k].a * left + edges[k].b * y0 + edges[k].c);
-  }
+  SmallEdges e;
+  small_edges(tv, area2, left, y0, &e);
   const uint32_t box = (2u << (right - left)) - 1;  // covered columns at most; right - left < 16
   static_assert(scan_max_extent <= 16, "scan rows are at most four groups of four columns");
 #if TS_USE_SSE2
   switch ((right - left) / 4) {
-    case 0: return scan_rows<1>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
-    case 1: return scan_rows<2>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
-    case 2: return scan_rows<3>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
-    default: return scan_rows<4>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);
+    case 0: return scan_rows<1>(tv, e, left, box, y0, y1, cx0, cx1, shader);
+    case 1: return scan_rows<2>(tv, e, left, box, y0, y1, cx0, cx1, shader);
+    case 2: return scan_rows<3>(tv, e, left, box, y0, y1, cx0, cx1, shader);
+    default: return scan_rows<4>(tv, e, left, box, y0, y1, cx0, cx1, shader);
   }
 #else
-  scan_rows<1>(tv, edges, area2, left, box, row, a, b, y0, y1, cx0, cx1, shader);  // one copy: Groups unused
+  scan_rows<1>(tv, e, left, box, y0, y1, cx0, cx1, shader);  // one copy: Groups unused
 #endif
 }
 
 // The rows of scan_small with masks of Groups * 4 columns (the box's width at most).
 template <int Groups, typename Shader>
-void scan_rows(const TriangleView& tv, const Edge* edges, int64_t area2, int32_t left, uint32_t box, const int32_t* row,
-               const int32_t* a, const int32_t* b, int32_t y0, int32_t y1, int32_t cx0, int32_t cx1, Shader& shader) {
-  RowMasks<Groups> masks(row, a, b);
+void scan_rows(const TriangleView& tv, const SmallEdges& e, int32_t left, uint32_t box, int32_t y0, int32_t y1,
+               int32_t cx0, int32_t cx1, Shader& shader) {
+  RowMasks<Groups> masks(e.row, e.a, e.b);
   bool started = false;
   for (int32_t y = y0; y <= y1; ++y, masks.next_row()) {
     const uint32_t mask = masks.covered() & box;
@@ -638,37 +785,57 @@ void scan_rows(const TriangleView& tv, const Edge* edges, int64_t area2, int32_t
     const int32_t ce = x - 1 < cx1 ? x - 1 : cx1;
     if (cs > ce) continue;
     if (!started) {
-      shader.begin(tv, edges, area2);
+      TriangleSetup s;
+      small_setup(tv, e, &s);
+      shader.begin(tv, s);
       started = true;
     }
     shader.span(y, xs, x - 1, cs, ce);
   }
 }
 
+// The setup of a span-path triangle for the shader, from its edges.
+inline void edge_setup(const TriangleView& tv, const Edge* e, int64_t area2, TriangleSetup* s) {
+  s->xr = position_fx::from_raw(tv.x[0]).floor_to_int();
+  s->yr = position_fx::from_raw(tv.y[0]).floor_to_int();
+  for (int k = 0; k < 3; ++k) {
+    s->a[k] = int32_t(e[k].a);
+    s->b[k] = int32_t(e[k].b);
+    s->e_ref[k] = e[k].exact_at(s->xr, s->yr);
+  }
+  s->area2 = area2;
+  s->scan_path = false;
+}
+
+// Returns whether the triangle is done with the band: no pixel column right of the clip, no
+// pixel row below it.
 template <typename Shader>
-void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
+bool rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
   const int32_t top = position_fx::from_raw(min3(tv.y[0], tv.y[1], tv.y[2])).ceil_to_int();
   const int32_t bottom = position_fx::from_raw(max3(tv.y[0], tv.y[1], tv.y[2])).floor_to_int();
+  const int32_t left = position_fx::from_raw(min3(tv.x[0], tv.x[1], tv.x[2])).ceil_to_int();
+  const int32_t right = position_fx::from_raw(max3(tv.x[0], tv.x[1], tv.x[2])).floor_to_int();
+  const bool done = (right < clip.x1) & (bottom < clip.y1);
   int32_t y0 = top, y1 = bottom;
   if (y0 < clip.y0) y0 = clip.y0;
   if (y1 > clip.y1 - 1) y1 = clip.y1 - 1;
-  if (y0 > y1) return;
-  const int32_t left = position_fx::from_raw(min3(tv.x[0], tv.x[1], tv.x[2])).ceil_to_int();
-  const int32_t right = position_fx::from_raw(max3(tv.x[0], tv.x[1], tv.x[2])).floor_to_int();
-  if (right < clip.x0 || left >= clip.x1) return;
+  if (y0 > y1) return done;
+  if (right < clip.x0 || left >= clip.x1) return done;
+  // The scan path: small boxes without explicit corners, in int32.
+  constexpr uint16_t any_corner = corner_explicit0 | corner_explicit0 << 1 | corner_explicit0 << 2;
+  if (!(tv.flags & any_corner) && right - left < scan_max_extent && bottom - top < scan_max_extent) {
+    const int32_t area2 = (tv.x[1] - tv.x[0]) * (tv.y[2] - tv.y[0]) - (tv.y[1] - tv.y[0]) * (tv.x[2] - tv.x[0]);
+    if (area2 <= 0) return done;  // collapsed by down-scaling
+    scan_small(tv, area2, left, right, y0, y1, clip.x0, clip.x1 - 1, shader);
+    return done;
+  }
   const int64_t area2 = (int64_t(tv.x[1]) - tv.x[0]) * (int64_t(tv.y[2]) - tv.y[0]) -
                         (int64_t(tv.y[1]) - tv.y[0]) * (int64_t(tv.x[2]) - tv.x[0]);
-  if (area2 <= 0) return;  // collapsed by down-scaling
+  if (area2 <= 0) return done;  // collapsed by down-scaling
   Edge edges[3];
   for (int k = 0; k < 3; ++k) {
     const int n = (k + 1) % 3;
     edges[k] = make_edge(tv.x[k], tv.y[k], tv.x[n], tv.y[n], (tv.flags & (boundary_edge0 << k)) != 0);
-  }
-  // The scan path: small boxes without explicit corners.
-  constexpr uint16_t any_corner = corner_explicit0 | corner_explicit0 << 1 | corner_explicit0 << 2;
-  if (!(tv.flags & any_corner) && right - left < scan_max_extent && bottom - top < scan_max_extent) {
-    scan_small(tv, edges, area2, left, right, y0, y1, clip.x0, clip.x1 - 1, shader);
-    return;
   }
   // Rows [r0, r1] pass the horizontal edges; an owned corner on an excluded row adds that row.
   int32_t r0 = y0, r1 = y1;
@@ -687,7 +854,7 @@ void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
       last = c.y > last ? c.y : last;
     }
   }
-  if (first > last) return;
+  if (first > last) return done;
   SpanStepper spans;
   spans.init(edges, first);
   bool started = false;
@@ -715,11 +882,14 @@ void rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
     const int32_t ce = xe < clip.x1 - 1 ? xe : clip.x1 - 1;
     if (cs > ce) continue;
     if (!started) {
-      shader.begin(tv, edges, area2);
+      TriangleSetup s;
+      edge_setup(tv, edges, area2, &s);
+      shader.begin(tv, s);
       started = true;
     }
     shader.span(y, xs, xe, cs, ce);
   }
+  return done;
 }
 
 // The active triangles of one layer: a bitmap over the window [base, cursor) of the triangle
@@ -734,6 +904,7 @@ struct ActiveSet {
   uint32_t capacity = 0;  // bits, a multiple of 32
   uint32_t base = 0;
   uint32_t cursor = 0;
+  int32_t view_x1 = 0;  // the viewport's right end: tiles ending there are the last of their band
 
   // Bit positions: pos(t) = t mod capacity, stepped with next() to avoid a division per test.
   uint32_t pos(uint32_t t) const { return t % capacity; }
@@ -932,20 +1103,28 @@ struct ColumnWindow {
 #endif
 };
 
+// Draws the live triangles of a layer that meet the tile `rect`. A triangle whose last pixel column
+// is in this tile or left of it (nothing for the band's later tiles) and whose last row is in this
+// band (the band advance would drop it) leaves the active set now: the later tiles of the band then
+// skip it without the column test. The pixels are the same (those tiles would have culled it).
 template <typename Shader>
-void draw_layer(const ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
+void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
   const ColumnWindow columns(map, rect);
-  set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span, uint32_t) {
+  const bool later_tiles = rect.x1 < set.view_x1;
+  set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span, uint32_t p) {
+    uint32_t done = 0;
     for (uint32_t hits = columns.meeting(*set.layer, t, live, span); hits; hits &= hits - 1) {
+      const uint32_t i = uint32_t(__builtin_ctz(hits));
       TriangleView tv;
-      load_triangle(*set.layer, t + uint32_t(__builtin_ctz(hits)), map, &tv);
-      rasterize(tv, rect, shader);
+      load_triangle(*set.layer, t + i, map, &tv);
+      done |= uint32_t(rasterize(tv, rect, shader)) << i;
     }
+    if (later_tiles) set.words[p / 32] &= ~(done << (p % 32));
   });
 }
 
 template <int Channels, typename Writer>
-void draw_with(const Blob& blob, int layer_index, int first_channel, const ActiveSet& list, const Mapping& map,
+void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& list, const Mapping& map,
                const Rect& rect, const Writer& writer, int step) {
   const BlobLayer* layer = &blob.layers[layer_index];
   // Only the methods compiled in (resolve rejects the others before any tile is drawn).
@@ -1115,6 +1294,7 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
     sets[l].layer = &blob.layers[l];
     sets[l].words = reinterpret_cast<uint32_t*>(ws + pad + scratch + size_t(l) * set_bytes);
     sets[l].capacity = uint32_t(set_bytes * 8 > 0xFFFFFFE0u ? 0xFFFFFFE0u : set_bytes * 8);
+    sets[l].view_x1 = r.view.x1;
     if (sets[l].capacity) sets[l].reset();
   }
   const detail::TileRenderer draw = detail::tile_renderer(r.format);

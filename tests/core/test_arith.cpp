@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <random>
+#include <vector>
 
 #include "tristream/detail/arith.h"
 
@@ -58,6 +59,33 @@ TEST_CASE("Divider and RoundingDivider equal floor_div64 and round_div") {
       INFO("n " << n << " d " << d);
       REQUIRE(div.floor(n) == reference_floor(n, d));
       if (d < (1ll << 60) && n < (1ll << 61) && n > -(1ll << 61)) REQUIRE(round(n / 2) == round_div(n / 2, d));
+    }
+  }
+}
+
+TEST_CASE("ShortRoundingDivider equals round_div wherever |2n + d| 2d < 2^64") {
+  std::mt19937_64 rng(12);
+  std::vector<std::int64_t> divisors = {1, 2, 3, 5, 7, 255, 256, 257, 65535, 65536, 65537, (1ll << 20) - 1,
+                                        1ll << 20, (1ll << 31) - 1, 1ll << 31};
+  for (int i = 0; i < 300; ++i) divisors.push_back(std::int64_t(1 + (rng() >> (33 + rng() % 31))));
+  for (std::int64_t d : divisors) {
+    const ShortRoundingDivider round(d);
+    // The largest |2n + d| allowed: below 2^64 / (2d) (and 2^62, to stay clear of int64 limits).
+    u128 limit = (u128(1) << 64) / u128(2 * d);
+    if (limit > (u128(1) << 62)) limit = u128(1) << 62;
+    const std::int64_t x_max = std::int64_t(limit - 1);
+    // n at the ends of the range (2n + d = +-x_max, or as near as integers allow) and around 0.
+    const std::int64_t specials[] = {0, 1, -1, d, -d, d - 1, -d + 1, (x_max - d) / 2, (-x_max - d) / 2 + 1,
+                                     (x_max - d) / 2 - 1, (-x_max - d) / 2 + 2};
+    for (std::int64_t n : specials) {
+      INFO("n " << n << " d " << d);
+      REQUIRE(round(n) == round_div(n, d));
+    }
+    for (int i = 0; i < 2000; ++i) {
+      const std::int64_t x = std::int64_t(u128(rng()) % u128(x_max));
+      const std::int64_t n = (((rng() & 1) ? x : -x) - d) / 2;
+      INFO("n " << n << " d " << d);
+      REQUIRE(round(n) == round_div(n, d));
     }
   }
 }

@@ -56,6 +56,10 @@ class Divider {
   // floor(n / d) for |n| < 2^62, as floor((n + k d) / d) - k: the numerator is then in
   // (0, 2^63 + 2^62), nonnegative and below 2^64, so no sign handling is needed.
   int64_t floor(int64_t n) const { return int64_t(floor_u(uint64_t(n) + kd_) - k_); }
+  // floor((n + c) / d) for |n + c| < 2^62, with offset(c) = c + k d computed once for many n (the
+  // same sums modulo 2^64 as floor).
+  uint64_t offset(int64_t c) const { return uint64_t(c) + kd_; }
+  int64_t floor_offset(int64_t n, uint64_t offset) const { return int64_t(floor_u(uint64_t(n) + offset) - k_); }
 
  private:
   uint64_t d_;
@@ -68,12 +72,32 @@ class Divider {
 // |2n + d| < 2^62 (the setup's numerators stay below 2^61: docs/FIXED_POINT.md).
 class RoundingDivider {
  public:
-  explicit RoundingDivider(int64_t d) : half_(d), div_(2 * d) {}
-  int64_t operator()(int64_t n) const { return div_.floor(2 * n + half_); }
+  explicit RoundingDivider(int64_t d) : div_(2 * d), offset_(div_.offset(d)) {}
+  int64_t operator()(int64_t n) const { return div_.floor_offset(2 * n, offset_); }
+
+ private:
+  Divider div_;
+  uint64_t offset_;  // the rounding offset d and the divider's k 2d, added once
+};
+
+// n / d rounded to nearest (halves up) like RoundingDivider, for numerators small against d:
+// exact when |2n + d| * 2d < 2^64 (the caller proves it from its bit budget). With the reciprocal
+// m = ceil(2^64 / D) (D = 2d >= 2), m D = 2^64 + e with 0 <= e < D, so for 0 <= x < 2^64 / D,
+// x m / 2^64 = x / D + x e / (D 2^64) and x e < 2^64: the excess stays below 1 / D and cannot reach
+// the next integer, so floor(x m / 2^64) = floor(x / D) without a correction. Negative x: with
+// s = x >> 63 (all ones), floor(x / D) = ~floor(~x / D) (~x = -x - 1 >= 0), both as s ^ q(x ^ s).
+class ShortRoundingDivider {
+ public:
+  explicit ShortRoundingDivider(int64_t d) : half_(d), m_(~uint64_t(0) / uint64_t(2 * d) + 1) {}
+  int64_t operator()(int64_t n) const {
+    const int64_t x = 2 * n + half_;
+    const int64_t s = x >> 63;
+    return int64_t(mulhi_u64(uint64_t(x ^ s), m_)) ^ s;
+  }
 
  private:
   int64_t half_;
-  Divider div_;
+  uint64_t m_;
 };
 
 // floor(x * y / 2^30) for |x| < 2^61 and any int32 y (a q2_30 weight): the 96-bit product from

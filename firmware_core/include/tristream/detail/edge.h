@@ -12,6 +12,9 @@
 #include <stdint.h>
 
 #include "tristream/config.h"
+#if TS_USE_SSE2
+#include <emmintrin.h>
+#endif
 #include "tristream/detail/arith.h"
 
 namespace tristream::core::detail {
@@ -103,23 +106,51 @@ struct SpanStepper {
       const int64_t den = e.a > 0 ? e.a : -e.a;
       bound[2].init(e.b * y0 + e.c, e.b, den);
     }
+#if TS_USE_SSE2
+    q_ = _mm_setr_epi32(bound[0].q, bound[1].q, bound[2].q, 0);
+    r_ = _mm_setr_epi32(bound[0].r, bound[1].r, bound[2].r, 0);
+    den_ = _mm_setr_epi32(bound[0].den, bound[1].den, bound[2].den, 1);
+    q_step_ = _mm_setr_epi32(bound[0].q_step, bound[1].q_step, bound[2].q_step, 0);
+    r_step_ = _mm_setr_epi32(bound[0].r_step, bound[1].r_step, bound[2].r_step, 0);
+#endif
   }
   // Columns [*x0, *x1] (inclusive; empty when *x0 > *x1) of the current row.
   void span(int32_t* x0, int32_t* x1) const {
+#if TS_USE_SSE2
+    const int32_t q0 = _mm_cvtsi128_si32(q_), q1 = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 1));
+    const int32_t v = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 2));
+#else
+    const int32_t q0 = bound[0].q, q1 = bound[1].q;
     const int32_t v = bound[2].q;
+#endif
     // The third bound applies to one side; the other side takes a bound that never wins. Bit
     // operations on a mask, not a branch (compilers keep the ternary form as a jump here).
     const int32_t left_mask = -int32_t(third_left);
     const int32_t third_lo = (-v & left_mask) | (INT32_MIN & ~left_mask);
     const int32_t third_hi = (INT32_MAX & left_mask) | (v & ~left_mask);
-    *x0 = max2(-bound[0].q, third_lo);
-    *x1 = min2(bound[1].q, third_hi);
+    *x0 = max2(-q0, third_lo);
+    *x1 = min2(q1, third_hi);
   }
   void next_row() {
+#if TS_USE_SSE2
+    // FloorStepper::next_row in lanes 0..2 (lane 3 idle): r < 2 den < 2^31, so the signed compare
+    // r > den - 1 is r >= den; a wrap is -1 in its lane.
+    r_ = _mm_add_epi32(r_, r_step_);
+    const __m128i wrap = _mm_cmpgt_epi32(r_, _mm_sub_epi32(den_, _mm_set1_epi32(1)));
+    q_ = _mm_sub_epi32(_mm_add_epi32(q_, q_step_), wrap);
+    r_ = _mm_sub_epi32(r_, _mm_and_si128(den_, wrap));
+#else
     bound[0].next_row();
     bound[1].next_row();
     bound[2].next_row();
+#endif
   }
+
+#if TS_USE_SSE2
+ private:
+  // The three bounds' q, r, den, q_step and r_step in lanes 0..2 (bound[] only sets them up).
+  __m128i q_, r_, den_, q_step_, r_step_;
+#endif
 };
 
 // Narrows [*y0, *y1] (inclusive rows) by the edges with a == 0: b y + c >= 0.

@@ -18,14 +18,16 @@ struct BilinearChannel {
   int64_t dvdx = 0;
   int64_t dvdy = 0;
 
-  // values: q8_8 of vertices 0, 1, 2. e_ref[k]: edge k's exact value at a reference pixel
-  // (xr, yr) near the triangle. by_area2: division by the doubled area, rounded to nearest.
-  void setup(const Edge* e, const int64_t* e_ref, const RoundingDivider& by_area2, const int32_t* values) {
+  // values: q8_8 of vertices 0, 1, 2. a[k], b[k]: edge k's coefficients; e_ref[k]: edge k's exact
+  // value at a reference pixel (xr, yr) near the triangle. by_area2: division by the doubled area,
+  // rounded to nearest (RoundingDivider, or ShortRoundingDivider where the numerators allow).
+  template <typename Divider>
+  void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const Divider& by_area2, const int32_t* values) {
     int64_t nx = 0, ny = 0, nv = 0;
     for (int k = 0; k < 3; ++k) {
       const int64_t v = values[(k + 2) % 3];
-      nx += v * e[k].a;
-      ny += v * e[k].b;
+      nx += v * a[k];
+      ny += v * b[k];
       nv += v * e_ref[k];
     }
     constexpr int shift = q16_16::frac_bits - q8_8::frac_bits;
@@ -265,15 +267,23 @@ struct BarycentricStepper {
   int32_t xr = 0, yr = 0;
 
   void setup(const Edge* e, const RoundingDivider& by_area2, int32_t x_ref, int32_t y_ref) {
+    const int32_t a[3] = {int32_t(e[0].a), int32_t(e[1].a), int32_t(e[2].a)};
+    const int32_t b[3] = {int32_t(e[0].b), int32_t(e[1].b), int32_t(e[2].b)};
+    const int64_t e_ref[3] = {e[0].exact_at(x_ref, y_ref), e[1].exact_at(x_ref, y_ref), e[2].exact_at(x_ref, y_ref)};
+    setup(a, b, e_ref, by_area2, x_ref, y_ref);
+  }
+  // The same from edge coefficients a[k], b[k] and exact edge values e_ref[k] at (x_ref, y_ref).
+  void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const RoundingDivider& by_area2, int32_t x_ref,
+             int32_t y_ref) {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
     xr = x_ref;
     yr = y_ref;
-    dadx = uint32_t(by_area2(e[1].a * one));
-    dbdx = uint32_t(by_area2(e[2].a * one));
-    dady = uint32_t(by_area2(e[1].b * one));
-    dbdy = uint32_t(by_area2(e[2].b * one));
-    a_ref = uint32_t(by_area2(e[1].exact_at(xr, yr) * one));
-    b_ref = uint32_t(by_area2(e[2].exact_at(xr, yr) * one));
+    dadx = uint32_t(by_area2(a[1] * one));
+    dbdx = uint32_t(by_area2(a[2] * one));
+    dady = uint32_t(by_area2(b[1] * one));
+    dbdy = uint32_t(by_area2(b[2] * one));
+    a_ref = uint32_t(by_area2(e_ref[1] * one));
+    b_ref = uint32_t(by_area2(e_ref[2] * one));
   }
   // Weights at pixel (x, y) (the first covered pixel of a row: independent of tiling).
   void at(int32_t x, int32_t y, uint32_t* a, uint32_t* b) const {
