@@ -139,9 +139,8 @@ inline bool BezierPatch::solve(double x, double y, double& a, double& b) const {
   XY ja{xa, ya}, jb{xb, yb};  // columns of the Jacobian
   double ca = a, cb = b;
   for (int iteration = 0; iteration < detail::kNewtonIterations; ++iteration) {
-    const double det = ja[0] * jb[1] - jb[0] * ja[1];
-    if (!(std::fabs(det) > 1e-300)) return false;
-    const double inverse = 1 / det;
+    // A singular Jacobian gives infinite or NaN steps, which never pass the test below.
+    const double inverse = 1 / (ja[0] * jb[1] - jb[0] * ja[1]);
     const double da = (jb[1] * r[0] - jb[0] * r[1]) * inverse;
     const double db = (ja[0] * r[1] - ja[1] * r[0]) * inverse;
     ca += da, cb += db;

@@ -88,9 +88,8 @@ bool CoonsPatch::solve(double x, double y, double& u, double& v) const {
   // through it), where a step would only add noise.
   if (std::fabs(r[0]) + std::fabs(r[1]) < detail::kExactResidual) return true;
   for (int iteration = 0; iteration < detail::kNewtonIterations; ++iteration) {
-    const double det = pu[0] * pv[1] - pv[0] * pu[1];
-    if (!(std::fabs(det) > 1e-300)) return false;
-    const double inverse = 1 / det;
+    // A singular Jacobian gives infinite or NaN steps, which fail the reach test below.
+    const double inverse = 1 / (pu[0] * pv[1] - pv[0] * pu[1]);
     const double du = (pv[1] * r[0] - pv[0] * r[1]) * inverse, dv = (pu[0] * r[1] - pu[1] * r[0]) * inverse;
     cu += du, cv += dv;
     if (!(std::fabs(cu - u) + std::fabs(cv - v) < detail::kNewtonReach)) return false;
