@@ -15,10 +15,9 @@
 //   - by rows (patch_scan.h), for every Coons patch and every Bezier patch that provably
 //     does not fold: each pixel between the leftmost and rightmost crossing of its row with
 //     the boundary curves (and with boxes around the fold, where a Coons patch folds), each
-//     once, started from the pixel before it or from a crossing (a row the image cuts on the
-//     left is started left of the image all the same), or from a grid over the domain where
-//     these starts reach no solution, one far outside the domain (kNear) or, where the patch
-//     folds, none in it;
+//     once, started from the pixel before it or from a crossing, or from a grid over the
+//     domain where these starts reach no solution, one far outside the domain (kNear) or,
+//     where the patch folds, none in it;
 //   - by a coarse tessellation (rasterize_tessellated), for a Bezier patch that may fold:
 //     its micro-triangles, rasterized with exact integer edge tests, give the pixels inside
 //     the tessellation's polygon with a linear guess good to kGuessTolerance pixels; between
@@ -380,7 +379,6 @@ void rasterize_rows(const Patch& patch, const std::vector<FoldCell>& folds, Patc
   scan_rows(patch, folds, canvas.width(), canvas.height(), scan, [&](int x, int y, double& s, double& t) {
     if (!patch.solve(x, y, s, t)) return Placed::none;
     if (!patch.in_domain(s, t)) return patch.outside_by(s, t) <= kNear ? Placed::outside : Placed::beyond;
-    if (x < 0) return Placed::inside;  // left of the image: a start for the next pixels only
     const std::size_t p = canvas.index(x, y);
     if (canvas.inside(p)) canvas.add_inside(p, patch, s, t);
     return Placed::inside;

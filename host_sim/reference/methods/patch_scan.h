@@ -147,9 +147,7 @@ struct FoldCell {
 // leftmost and rightmost crossing of its row with the boundary of `patch` or with a box of
 // `folds` (which must hold the patch's fold: none where it does not fold), with a start
 // (s, t) for Newton passed by reference: visit returns what it made of the pixel (Placed),
-// with (s, t) the solution unless none. Where the image cuts a row on the left, visit also
-// gets the row's columns i < 0 (up to kLeadIn of them): to be solved, not counted.
-inline constexpr int kLeadIn = 64;
+// with (s, t) the solution unless none.
 template <class Patch, class Visit>
 void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width, int height, ScanScratch& scratch,
                Visit&& visit) {
@@ -230,9 +228,7 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
     const int count = row.count;
     for (int k = 1; k < count; ++k)  // insertion sort by x: a row has a few crossings
       for (int m = k; m > 0 && crossing[m].x < crossing[m - 1].x; --m) std::swap(crossing[m], crossing[m - 1]);
-    // From the row's left end even where the image cuts it (up to kLeadIn columns before it):
-    // a start from a crossing far to the left may reach a preimage beyond the domain.
-    const int i0 = int(std::max(-double(kLeadIn), std::ceil(row.x_min - kSpanMargin)));
+    const int i0 = std::max(0, int(std::ceil(row.x_min - kSpanMargin)));
     const int i1 = std::min(width - 1, int(std::floor(row.x_max + kSpanMargin)));
 
     // Start at crossing k moved to column i through the inverse Jacobian there; false where
