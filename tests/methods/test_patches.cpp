@@ -253,10 +253,11 @@ TEST_CASE("coons exact coverage matches an independent inversion of each patch",
     CHECK(tally.by_rows == tally.patches);  // folded ones too: their fold cells bound the fold
     CHECK(tally.folded_by_rows > 5);
     CHECK(tally.on_boundary_counted > 20);
-    // Beside the folds.
+    // Beside the folds: 3 of 3,801 (34 when, as before, a start that reached any solution
+    // keeps the grid's starts from being tried).
     INFO("fold pixels " << tally.fold_pixels << " missed " << tally.fold_missed << " by tessellation "
                         << tally.fold_missed_tessellated);
-    CHECK(tally.fold_missed * 100 < tally.fold_pixels);
+    CHECK(tally.fold_missed * 700 < tally.fold_pixels);
   }
 }
 
@@ -276,7 +277,7 @@ TEST_CASE("patches cut by the image's edge are covered exactly", "[bezier][coons
   CHECK(bezier.pixels > 500);
   CHECK(coons.pixels > 500);
   INFO("coons fold pixels " << coons.fold_pixels << " missed " << coons.fold_missed);
-  CHECK(coons.fold_missed * 100 < coons.fold_pixels);
+  CHECK(coons.fold_missed * 700 < coons.fold_pixels);
 }
 
 // The trap of patch_raster.h: whether a pixel on a patch's boundary counts must not hang on
