@@ -447,13 +447,13 @@ struct ZienkiewiczShader {
   // changes elsewhere in it swung its speed by 20%).
   __attribute__((noinline)) void span(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
     uint32_t a, b;
-    steps.at(xs, y, &a, &b);
     if (xe - xs + 1 >= zienkiewicz_fd_min_length && rows_ready()) {
+      steps.at(xs, y, &a, &b);
       forward_differenced(y, xs, x0, x1, a, b);
       return;
     }
-    a += steps.dadx * uint32_t(x0 - xs);
-    b += steps.dbdx * uint32_t(x0 - xs);
+    // The weights at x0 directly: the same sums modulo 2^32 as at xs plus (x0 - xs) steps.
+    steps.at(x0, y, &a, &b);
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
     auto* p = writer.at(x0, y);
     for (int32_t x = x0; x <= x1; ++x) {
