@@ -45,7 +45,7 @@ struct BilinearChannel {
 // Forward differences of a cubic along a row: the value and its first three differences,
 // modulo 2^64 (the values read as int64 are exact whenever they fit, see ZienkiewiczChannel).
 struct CubicSteps {
-  uint64_t v = 0, d1 = 0, d2 = 0, d3 = 0;
+  uint64_t v, d1, d2, d3;  // no initializers: arrays of them are filled by steps_at, not zeroed first
 
   void step() {
     v += d1;
@@ -196,10 +196,12 @@ struct ZienkiewiczChannel {
     const int64_t pb = f00 + mul_q30(f01 + mul_q30(f02 + mul_q30(f03, b), b), b);
     const int64_t pa = f10 + mul_q30(f11 + mul_q30(f12, b), b) + mul_q30(f20 + mul_q30(f21, b) + mul_q30(f30, a), a);
     s.v = uint64_t(pb + mul_q30(pa, a));
-    if (order >= 1)
-      s.d1 = uint64_t(g00 + mul_q30(g01 + mul_q30(g02, b), b) + mul_q30(g10 + mul_q30(g11, b) + mul_q30(g20, a), a));
-    if (order >= 2) s.d2 = uint64_t(h00 + mul_q30(h10, a) + mul_q30(h01, b));
-    if (order >= 3) s.d3 = uint64_t(d3);
+    // Every field written (0 beyond the order), so callers' arrays need no zeroing first.
+    s.d1 = order >= 1 ? uint64_t(g00 + mul_q30(g01 + mul_q30(g02, b), b) +
+                                 mul_q30(g10 + mul_q30(g11, b) + mul_q30(g20, a), a))
+                      : 0;
+    s.d2 = order >= 2 ? uint64_t(h00 + mul_q30(h10, a) + mul_q30(h01, b)) : 0;
+    s.d3 = order >= 3 ? uint64_t(d3) : 0;
     return s;
   }
 };
