@@ -412,23 +412,27 @@ struct ZienkiewiczShader {
     const int64_t a2 = s.area2;
     const RoundingDivider by_area2(a2);
     steps.setup(s.a, s.b, s.e_ref, by_area2, s.xr, s.yr);
-    int32_t dx[3], dy[3], vals[3][Channels], grads[Channels][6];
+    int32_t dx[3], dy[3];
+    const uint8_t* values[3];
+    const uint8_t* gradients[3];
     for (int k = 0; k < 3; ++k) {
       const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
       const uint8_t* pn = layer->positions + 4 * size_t(tv.v[(k + 1) % 3]);
       dx[k] = int32_t(load_u16(pn)) - int32_t(load_u16(pk));
       dy[k] = int32_t(load_u16(pn + 2)) - int32_t(load_u16(pk + 2));
-      vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
-      for (int c = 0; c < Channels; ++c) {
-        const uint8_t* g = layer->gradients + 8 * (size_t(tv.v[k]) * per_vertex + first_channel + c);
-        grads[c][2 * k] = load_i32(g);
-        grads[c][2 * k + 1] = load_i32(g + 4);
-      }
+      const size_t first = size_t(tv.v[k]) * per_vertex + first_channel;
+      values[k] = layer->values + 2 * first;
+      gradients[k] = layer->gradients + 8 * first;
     }
     fd_state = a2 >= zienkiewicz_fd_min_area2 ? 0 : -1;
+    // Each channel's values and gradients loaded where its setup uses them (no staging arrays of
+    // all channels, which kept the compiler spilling registers to the stack).
     for (int c = 0; c < Channels; ++c) {
-      const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
-      ch[c].setup(dx, dy, v3, grads[c]);
+      const int32_t v3[3] = {load_u16(values[0] + 2 * c), load_u16(values[1] + 2 * c), load_u16(values[2] + 2 * c)};
+      const int32_t g6[6] = {load_i32(gradients[0] + 8 * c), load_i32(gradients[0] + 8 * c + 4),
+                             load_i32(gradients[1] + 8 * c), load_i32(gradients[1] + 8 * c + 4),
+                             load_i32(gradients[2] + 8 * c), load_i32(gradients[2] + 8 * c + 4)};
+      ch[c].setup(dx, dy, v3, g6);
     }
   }
   // Forward differencing set up on the first row that uses it; false for a small triangle or one
@@ -447,13 +451,13 @@ struct ZienkiewiczShader {
   // changes elsewhere in it swung its speed by 20%).
   __attribute__((noinline)) void span(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
     uint32_t a, b;
-    steps.at(xs, y, &a, &b);
     if (xe - xs + 1 >= zienkiewicz_fd_min_length && rows_ready()) {
+      steps.at(xs, y, &a, &b);
       forward_differenced(y, xs, x0, x1, a, b);
       return;
     }
-    a += steps.dadx * uint32_t(x0 - xs);
-    b += steps.dbdx * uint32_t(x0 - xs);
+    // The weights at x0 directly: the same sums modulo 2^32 as at xs plus (x0 - xs) steps.
+    steps.at(x0, y, &a, &b);
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
     auto* p = writer.at(x0, y);
     for (int32_t x = x0; x <= x1; ++x) {

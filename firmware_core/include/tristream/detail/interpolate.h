@@ -45,7 +45,7 @@ struct BilinearChannel {
 // Forward differences of a cubic along a row: the value and its first three differences,
 // modulo 2^64 (the values read as int64 are exact whenever they fit, see ZienkiewiczChannel).
 struct CubicSteps {
-  uint64_t v = 0, d1 = 0, d2 = 0, d3 = 0;
+  uint64_t v, d1, d2, d3;  // no initializers: arrays of them are filled by steps_at, not zeroed first
 
   void step() {
     v += d1;
@@ -101,22 +101,26 @@ struct ZienkiewiczChannel {
     const int64_t u2 = dot(0, 0), u3 = dot(0, 1);  // AB . gA, AB . gB
     const int64_t u5 = dot(1, 1), u6 = dot(1, 2);  // BC . gB, BC . gC
     const int64_t u8 = dot(2, 2), u9 = dot(2, 0);  // CA . gC, CA . gA
-    // Homogeneous cubic in (a, b, c), then c = 1 - a - b.
-    const int64_t k300 = u1, k030 = u4, k003 = u7;
-    const int64_t k210 = 3 * u1 + u2, k201 = 3 * u1 - u9;
-    const int64_t k120 = 3 * u4 - u3, k021 = 3 * u4 + u5;
-    const int64_t k102 = 3 * u7 + u8, k012 = 3 * u7 - u6;
+    // Homogeneous cubic in (a, b, c) with the control values k300 = u1, k030 = u4, k003 = u7,
+    // k210 = 3 u1 + u2, k201 = 3 u1 - u9, k120 = 3 u4 - u3, k021 = 3 u4 + u5, k102 = 3 u7 + u8,
+    // k012 = 3 u7 - u6 and k111 below, then c = 1 - a - b, expanded and simplified (exact integer
+    // identities: every sum stays far inside int64):
+    // p30 = -k003 + k102 - k201 + k300, p21 = -3 k003 + k012 + 2 k102 - k111 - k201 + k210,
+    // p20 = 3 k003 - 2 k102 + k201, p12 = -3 k003 + 2 k012 - k021 + k102 - k111 + k120,
+    // p11 = 6 k003 - 2 k012 - 2 k102 + k111, p10 = -3 k003 + k102, p03 = -k003 + k012 - k021 + k030,
+    // p02 = 3 k003 - 2 k012 + k021, p01 = -3 k003 + k012, p00 = k003.
     const int64_t k111 = 2 * (u1 + u4 + u7) + (u2 - u3 + u5 - u6 + u8 - u9) / 2;
-    p30 = -k003 + k102 - k201 + k300;
-    p21 = -3 * k003 + k012 + 2 * k102 - k111 - k201 + k210;
-    p20 = 3 * k003 - 2 * k102 + k201;
-    p12 = -3 * k003 + 2 * k012 - k021 + k102 - k111 + k120;
-    p11 = 6 * k003 - 2 * k012 - 2 * k102 + k111;
-    p10 = -3 * k003 + k102;
-    p03 = -k003 + k012 - k021 + k030;
-    p02 = 3 * k003 - 2 * k012 + k021;
-    p01 = -3 * k003 + k012;
-    p00 = k003;
+    const int64_t t = 6 * u7 - k111;
+    p30 = 2 * (u7 - u1) + u8 + u9;
+    p21 = t + u2 - u6 + 2 * u8 + u9;
+    p20 = 3 * (u1 - u7) - 2 * u8 - u9;
+    p12 = t - u3 - u5 - 2 * u6 + u8;
+    p11 = 2 * (u6 - u8) - t;
+    p10 = u8;
+    p03 = 2 * (u7 - u4) - u5 - u6;
+    p02 = 3 * (u4 - u7) + u5 + 2 * u6;
+    p01 = -u6;
+    p00 = u7;
   }
   // q24_8 value at barycentric weights a, b (q17_15), unclamped (below 2^45 in magnitude).
   int64_t eval_wide(int64_t a, int64_t b) const {
@@ -134,10 +138,12 @@ struct ZienkiewiczChannel {
 
   // Whether the coefficients are within the forward-difference bit budget.
   bool fits_rows() const {
-    const int64_t p[10] = {p00, p01, p02, p03, p10, p11, p12, p20, p21, p30};
-    for (int64_t c : p)
-      if (c >= max_fd_coefficient || c <= -max_fd_coefficient) return false;
-    return true;
+    // |c| < max as one unsigned comparison: c + max - 1 in [0, 2 max - 2]; no branch per coefficient.
+    auto out = [](int64_t c) {
+      return uint64_t(c + (max_fd_coefficient - 1)) > uint64_t(2 * (max_fd_coefficient - 1));
+    };
+    return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
+             out(p30));
   }
 
   // Forward-difference polynomials for the steps da, db (q2_30) of a pixel along x; false (and
@@ -190,10 +196,12 @@ struct ZienkiewiczChannel {
     const int64_t pb = f00 + mul_q30(f01 + mul_q30(f02 + mul_q30(f03, b), b), b);
     const int64_t pa = f10 + mul_q30(f11 + mul_q30(f12, b), b) + mul_q30(f20 + mul_q30(f21, b) + mul_q30(f30, a), a);
     s.v = uint64_t(pb + mul_q30(pa, a));
-    if (order >= 1)
-      s.d1 = uint64_t(g00 + mul_q30(g01 + mul_q30(g02, b), b) + mul_q30(g10 + mul_q30(g11, b) + mul_q30(g20, a), a));
-    if (order >= 2) s.d2 = uint64_t(h00 + mul_q30(h10, a) + mul_q30(h01, b));
-    if (order >= 3) s.d3 = uint64_t(d3);
+    // Every field written (0 beyond the order), so callers' arrays need no zeroing first.
+    s.d1 = order >= 1 ? uint64_t(g00 + mul_q30(g01 + mul_q30(g02, b), b) +
+                                 mul_q30(g10 + mul_q30(g11, b) + mul_q30(g20, a), a))
+                      : 0;
+    s.d2 = order >= 2 ? uint64_t(h00 + mul_q30(h10, a) + mul_q30(h01, b)) : 0;
+    s.d3 = order >= 3 ? uint64_t(d3) : 0;
     return s;
   }
 };
