@@ -138,9 +138,10 @@ struct ZienkiewiczChannel {
 
   // Whether the coefficients are within the forward-difference bit budget.
   bool fits_rows() const {
-    // |c| < max as one unsigned comparison: c + max - 1 in [0, 2 max - 2]; no branch per coefficient.
+    // |c| < max as one unsigned comparison: c + max - 1 in [0, 2 max - 2] (added modulo 2^64, so
+    // no overflow whatever c is); no branch per coefficient. 0 or 1, combined with bitwise or.
     auto out = [](int64_t c) {
-      return uint64_t(c + (max_fd_coefficient - 1)) > uint64_t(2 * (max_fd_coefficient - 1));
+      return uint32_t(uint64_t(c) + uint64_t(max_fd_coefficient - 1) > uint64_t(2 * (max_fd_coefficient - 1)));
     };
     return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
              out(p30));
