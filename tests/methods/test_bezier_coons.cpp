@@ -293,7 +293,7 @@ TEST_CASE("the patch pre-fill is the bilinear field", "[bezier][coons]") {
     }
     INFO("trial " << trial);
     Field fast(37, 29, mesh.value_count), reference(37, 29, mesh.value_count);
-    detail::bilinear_prefill(mesh, build_topology(mesh), 37, 29, {}, fast);
+    detail::bilinear_prefill(mesh, build_topology(mesh), detail::triangles_by_cell(mesh), 37, 29, {}, fast);
     render_bilinear(mesh, 37, 29, {}, reference);
     for (std::size_t i = 0; i < fast.v.size(); ++i) {
       REQUIRE(std::isnan(fast.v[i]) == std::isnan(reference.v[i]));

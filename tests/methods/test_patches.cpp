@@ -150,7 +150,6 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
   std::fill(prefill.v.begin(), prefill.v.end(), 0.0);
   std::vector<detail::MicroVertex> nodes;
   detail::ScanScratch rows;
-  detail::PatchScratch scratch;
   std::vector<detail::FoldCell> fold_cells;
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     PatchControl control;
@@ -169,8 +168,8 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
       ++tally.by_rows;
       tally.folded_by_rows += folded;
       detail::rasterize_rows(patch, fold_cells, canvas, rows);
-    } else {
-      detail::rasterize_exact(patch, canvas, scratch);
+    } else if constexpr (detail::kTessellated<Patch>) {
+      detail::rasterize_tessellated(patch, canvas, nodes);
     }
     // The tessellation too where the patch has one (Bezier); else the same as the renderer.
     if constexpr (detail::kTessellated<Patch>)
@@ -297,7 +296,7 @@ TEST_CASE("patch membership does not depend on the solver's start", "[bezier][co
   std::vector<int> seen(64 * 48, -1);
   // Pixel (x, y) with start (s, t) as the renderer gets it, solved from there and from starts
   // moved by up to 1e-3; false where the first solve fails, else (s, t) is its solution.
-  auto examine = [&](const auto& patch, auto&& outside, int x, int y, double& s, double& t) {
+  auto examine = [&](const auto& patch, int x, int y, double& s, double& t) {
     double s0 = s, t0 = t;
     if (!patch.solve(x, y, s0, t0)) return false;
     const double start_s = s, start_t = t;
@@ -305,7 +304,7 @@ TEST_CASE("patch membership does not depend on the solver's start", "[bezier][co
     const bool first = seen[y * 64 + x] != patch_number;
     seen[y * 64 + x] = patch_number;
     candidates += first;
-    boundary += first && std::fabs(outside(s0, t0)) < 1e-10;
+    boundary += first && std::fabs(patch.outside_by(s0, t0)) < 1e-10;
     // Where the Jacobian is nearly singular (the Coons corner M) Newton converges slowly
     // from elsewhere; the renderer starts such a pixel on the node itself.
     double px, py, xs, xt, ys, yt;
@@ -336,24 +335,18 @@ TEST_CASE("patch membership does not depend on the solver's start", "[bezier][co
     if (!patch_control(mesh, topo, t, map, control)) continue;
     // Bezier: the candidates and starts of the tessellation (Bezier patches that may fold).
     const BezierPatch bezier(control);
-    auto bezier_outside = [](double a, double b) { return std::max({-a, -b, a + b - 1}); };
     ++patch_number;
-    bezier.tessellate(64, 48, nodes,
-                      [&](int x, int y, double s, double t) { examine(bezier, bezier_outside, x, y, s, t); });
+    bezier.tessellate(64, 48, nodes, [&](int x, int y, double s, double t) { examine(bezier, x, y, s, t); });
     // Both: those of the rows (Bezier patches that do not fold, every Coons patch).
-    auto by_rows = [&](const auto& patch, auto&& outside) {
+    auto by_rows = [&](const auto& patch) {
       if (!patch.fold_cells(folds)) return;
       ++patch_number;
-      detail::scan_rows(patch, folds, 64, 48, scan,
-                        [&](int x, int y, double& s, double& t) {
-                          if (!examine(patch, outside, x, y, s, t)) return detail::Placed::none;
-                          if (patch.in_domain(s, t)) return detail::Placed::inside;
-                          const bool near = patch.outside_by(s, t) <= detail::kNear;
-                          return near ? detail::Placed::outside : detail::Placed::beyond;
-                        });
+      detail::scan_rows(patch, folds, 64, 48, scan, [&](int x, int y, double& s, double& t) {
+        return examine(patch, x, y, s, t) ? detail::placed_at(patch, s, t) : detail::Placed::none;
+      });
     };
-    by_rows(bezier, bezier_outside);
-    by_rows(CoonsPatch(control), [](double u, double v) { return std::max({-u, -v, u - 1, v - 1}); });
+    by_rows(bezier);
+    by_rows(CoonsPatch(control));
   }
   CHECK(candidates > 10000);
   CHECK(boundary > 200);

@@ -19,7 +19,7 @@ PatchCanvas::PatchCanvas(Field& field)
 void PatchCanvas::resolve_thesis() {
   const int nc = field_.channels;
   for (std::size_t p = 0; p < inside_.size(); ++p) {
-    if (!inside_[p] || count_[p] == 0) continue;
+    if (count_[p] == 0) continue;  // the pre-fill as it is (and no pixel outside the domain counts)
     const double n = double(count_[p]) + 1.0;
     for (int c = 0; c < nc; ++c) field_.v[p * nc + c] /= n;
   }
@@ -52,8 +52,8 @@ std::vector<std::uint32_t> triangles_by_cell(const Mesh& mesh) {
   return order;
 }
 
-void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, int domain_height,
-                      const RenderOptions& options, Field& out) {
+void bilinear_prefill(const Mesh& mesh, const Topology& topo, const std::vector<std::uint32_t>& order,
+                      int domain_width, int domain_height, const RenderOptions& options, Field& out) {
   bool exact = out.width == domain_width && out.height == domain_height;
   for (std::size_t v = 0; v < mesh.vertex_count() && exact; ++v) {
     const double x = mesh.points[v].x * kSubpixelScale, y = mesh.points[v].y * kSubpixelScale;
@@ -65,7 +65,7 @@ void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, 
     return;
   }
   const int nc = mesh.value_count;
-  for (std::uint32_t t : triangles_by_cell(mesh)) {
+  for (std::uint32_t t : order) {
     const auto& v = mesh.triangles[t].v;
     // Parameters (s, t) = barycentric coordinates of v[0] and v[1].
     MicroVertex a, b, c;

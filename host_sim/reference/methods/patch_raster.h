@@ -351,9 +351,9 @@ std::vector<std::uint32_t> triangles_by_cell(const Mesh& mesh);
 // patches' pre-fill and domain. Fast path with exact integer edge tests when the output size
 // equals the domain's and every vertex lies on the 1/256-pixel grid (pixel positions do),
 // where they decide exactly as the exact predicates of reference/coverage.h; otherwise it
-// calls render_bilinear.
-void bilinear_prefill(const Mesh& mesh, const Topology& topo, int domain_width, int domain_height,
-                      const RenderOptions& options, Field& out);
+// calls render_bilinear. `order` lists the triangles (triangles_by_cell).
+void bilinear_prefill(const Mesh& mesh, const Topology& topo, const std::vector<std::uint32_t>& order,
+                      int domain_width, int domain_height, const RenderOptions& options, Field& out);
 
 // The exact variant for a patch with a tessellation (kTessellated below: Bezier): each
 // candidate pixel of patch.tessellate, placed by patch.solve from its guess and kept when in
@@ -378,10 +378,11 @@ template <class Patch>
 void rasterize_rows(const Patch& patch, const std::vector<FoldCell>& folds, PatchCanvas& canvas, ScanScratch& scan) {
   scan_rows(patch, folds, canvas.width(), canvas.height(), scan, [&](int x, int y, double& s, double& t) {
     if (!patch.solve(x, y, s, t)) return Placed::none;
-    if (!patch.in_domain(s, t)) return patch.outside_by(s, t) <= kNear ? Placed::outside : Placed::beyond;
+    const Placed placed = placed_at(patch, s, t);
+    if (placed != Placed::inside) return placed;
     const std::size_t p = canvas.index(x, y);
     if (canvas.inside(p)) canvas.add_inside(p, patch, s, t);
-    return Placed::inside;
+    return placed;
   });
 }
 
@@ -418,12 +419,13 @@ void render_patches(std::string_view method, const Mesh& mesh, int domain_width,
   const bool thesis = is_thesis_variant(method, options.variant);
   const Topology topo = build_topology(mesh);
   const PixelMapping map(domain_width, domain_height, out.width, out.height);
-  bilinear_prefill(mesh, topo, domain_width, domain_height, options, out);
+  const std::vector<std::uint32_t> order = triangles_by_cell(mesh);
+  bilinear_prefill(mesh, topo, order, domain_width, domain_height, options, out);
   PatchCanvas canvas(out);
 
   PatchControl control;
   PatchScratch scratch;
-  for (std::uint32_t t : triangles_by_cell(mesh)) {
+  for (std::uint32_t t : order) {
     if (!patch_control(mesh, topo, t, map, control) || !accept(control)) continue;
     const Patch patch(control);
     if (thesis)

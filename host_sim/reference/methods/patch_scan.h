@@ -134,6 +134,13 @@ inline void add_arc_crossings(const BoundaryArc& arc, int j0, int j1, std::vecto
 enum class Placed { none, outside, beyond, inside };
 inline constexpr double kNear = 0.25;
 
+// Where a solution (s, t) of patch.solve lies.
+template <class Patch>
+Placed placed_at(const Patch& patch, double s, double t) {
+  if (patch.in_domain(s, t)) return Placed::inside;
+  return patch.outside_by(s, t) <= kNear ? Placed::outside : Placed::beyond;
+}
+
 // A part of the parameter domain where a patch may fold: a box that holds its image, and
 // its middle (position and parameters) as a start. The boundary of a folded patch's image
 // lies on its boundary curves or on the image of its fold (where the Jacobian determinant
