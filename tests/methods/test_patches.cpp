@@ -260,6 +260,28 @@ TEST_CASE("coons exact coverage matches an independent inversion of each patch",
   }
 }
 
+// One patch of the 13,000-vertex encoding of the boat photograph (triangle 332, moved 224
+// pixels left and 264 up), which the lattice meshes above never made: pixel (6, 6) lies 0.23
+// inside its domain near the Coons corner M = (5, 6), but the start from the row's crossing
+// reaches a solution 0.246 outside it (within kNear) where the continuation beyond M has
+// folded back over the patch (its Jacobian determinant there has the other sign). That
+// solution must not settle the pixel.
+TEST_CASE("coons: a solution beyond the corner M where the patch folds back settles nothing", "[coons]") {
+  Mesh mesh;
+  // A, B, C (the triangle), then the apexes across CA, AB and BC.
+  mesh.points = {{10, 3}, {10, 7}, {5, 6}, {3, 3}, {12, 4}, {11, 10}};
+  mesh.values = {10, 20, 30, 40, 50, 60};
+  mesh.triangles = {{{0, 1, 2}}, {{2, 3, 0}}, {{0, 4, 1}}, {{1, 5, 2}}};
+  mesh.normalize_winding();
+  const Tally tally = check_coverage<CoonsPatch>(mesh, 16, 14, false, [](const PatchControl& c, const CoonsPatch& p) {
+    return CoonsMap(c, p);
+  });
+  REQUIRE(tally.patches == 1);
+  CHECK(tally.folded == 0);
+  CHECK(tally.pixels > 40);
+  CHECK(tally.ambiguous == 0);
+}
+
 // Patches the image cuts (the lattice mesh moved 13 pixels left and 7 up) are still covered
 // exactly: a row's nearest crossing may then lie far from its first pixel, and where a start
 // reaches a solution far outside the domain (patch_scan.h, kNear) the other starts are tried

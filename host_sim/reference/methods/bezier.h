@@ -69,6 +69,8 @@ class BezierPatch {
   }
   // How far (a, b) lies outside the domain (the largest violated constraint; <= 0 inside).
   static double outside_by(double a, double b) { return std::max({-a, -b, a + b - 1}); }
+  // A point inside the domain.
+  static std::pair<double, double> centre() { return {1.0 / 3, 1.0 / 3}; }
   // The sides of the parameter domain for the exact variant's rows (patch_scan.h): side k
   // (b = 0, a = 0, c = 0) at f in [0, 1] has parameters side(k, f).
   static constexpr int kSides = 3;

@@ -85,6 +85,8 @@ class CoonsPatch {
   }
   // How far (u, v) lies outside the domain (the largest violated constraint; <= 0 inside).
   static double outside_by(double u, double v) { return std::max({-u, -v, u - 1, v - 1}); }
+  // A point inside the domain.
+  static std::pair<double, double> centre() { return {0.5, 0.5}; }
   // The sides of the parameter domain for the exact variant's rows (patch_scan.h): side k
   // (v = 0, v = 1, u = 0, u = 1) at f in [0, 1] has parameters side(k, f).
   static constexpr int kSides = 4;

@@ -16,8 +16,10 @@
 //     does not fold: each pixel between the leftmost and rightmost crossing of its row with
 //     the boundary curves (and with boxes around the fold, where a Coons patch folds), each
 //     once, started from the pixel before it or from a crossing, or from a grid over the
-//     domain where these starts reach no solution, one far outside the domain (kNear) or,
-//     where the patch folds, none in it;
+//     domain where these starts reach no solution, one far outside the domain (kNear), one
+//     outside where the Jacobian determinant has turned (the continuation beyond the domain
+//     folds back over the patch there, as beside the Coons corner M) or, where the patch
+//     folds, none in it;
 //   - by a coarse tessellation (rasterize_tessellated), for a Bezier patch that may fold:
 //     its micro-triangles, rasterized with exact integer edge tests, give the pixels inside
 //     the tessellation's polygon with a linear guess good to kGuessTolerance pixels; between
@@ -50,7 +52,10 @@
 // beside a boundary point that is a mesh vertex, and was not counted).
 // tests/methods/test_patches.cpp checks each patch's counts against an independent long
 // double inversion (both ways; exactly where the patch does not fold), and that moving
-// Newton's start does not change any decision.
+// Newton's start does not change any decision. On the 13,000-vertex boat and peppers
+// encodings (26,000 patches each) that check found unfolded Coons patches missing pixels
+// 0.23 inside their domain, beside M; the determinant test fixed them (one patch is kept as
+// a test).
 //
 // The bilinear field (pre-fill and domain) comes from bilinear_prefill below.
 // Pixels outside the triangulation's domain (NaN in the bilinear field) are never written.

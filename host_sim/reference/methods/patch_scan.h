@@ -141,6 +141,14 @@ Placed placed_at(const Patch& patch, double s, double t) {
   return patch.outside_by(s, t) <= kNear ? Placed::outside : Placed::beyond;
 }
 
+// The Jacobian determinant of the patch's position at (s, t).
+template <class Patch>
+double jacobian_determinant(const Patch& patch, double s, double t) {
+  double x, y, xs, xt, ys, yt;
+  patch.position(s, t, x, y, xs, xt, ys, yt);
+  return xs * yt - xt * ys;
+}
+
 // A part of the parameter domain where a patch may fold: a box that holds its image, and
 // its middle (position and parameters) as a start. The boundary of a folded patch's image
 // lies on its boundary curves or on the image of its fold (where the Jacobian determinant
@@ -218,13 +226,21 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
   };
 
   // A start settles a pixel when the patch covers it from there or, for a patch that does
-  // not fold, when Newton finds a solution near the domain: the pixel then lies beside the
-  // patch. The polynomial goes on beyond the domain and may fold back over the patch there,
-  // so a solution far outside (a start from a crossing near the Coons corner M, where the
-  // inverse Jacobian is large, can reach one) does not settle the pixel: nor, where the patch
-  // folds, does any solution outside the domain. The other starts are then tried too.
-  auto settles = [&folds](Placed placed) {
-    return placed == Placed::inside || (placed == Placed::outside && folds.empty());
+  // not fold, when Newton finds a solution near the domain where the Jacobian determinant
+  // keeps the patch's sign: the pixel then lies beside the patch. The polynomial goes on
+  // beyond the domain and may fold back over the patch there, so a solution far outside (a
+  // start from a crossing near the Coons corner M, where the inverse Jacobian is large, can
+  // reach one) does not settle the pixel, nor does one where the determinant has turned: the
+  // continuation is folded there. Beside the Coons corner M, where the determinant vanishes,
+  // it turns within kNear of the domain and the sheet beyond covers the patch's own pixels
+  // (boat, 13,000 vertices: pixels with a preimage 0.23 inside the domain had been left out).
+  // Where the patch folds no solution outside the domain settles a pixel. The other starts
+  // are then tried too.
+  const auto [centre_s, centre_t] = Patch::centre();
+  const double centre_det = folds.empty() ? jacobian_determinant(patch, centre_s, centre_t) : 0;
+  auto settles = [&](Placed placed, double s, double t) {
+    return placed == Placed::inside ||
+           (placed == Placed::outside && jacobian_determinant(patch, s, t) * centre_det > 0);
   };
   constexpr int kGridStart = -2;  // and -3: the grid's two starts
 
@@ -264,7 +280,7 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
         // The common case: the last three solutions extrapolated (two at a stretch's start).
         ns = s + ds + dds, nt = t + dt + ddt;
         const Placed placed = visit(i, j, ns, nt);
-        if (settles(placed)) {
+        if (settles(placed, ns, nt)) {
           dds = ns - s - ds, ddt = nt - t - dt, ds = ns - s, dt = nt - t, s = ns, t = nt;
           continue;
         }
@@ -288,7 +304,7 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
         const Placed placed = visit(i, j, ns, nt);
         if (placed == Placed::none) continue;
         continued = true, s = ns, t = nt, ds = cds, dt = cdt;
-        if (settles(placed)) break;
+        if (settles(placed, ns, nt)) break;
       }
     }
   }
@@ -310,13 +326,6 @@ inline bool one_sign(const double* b, int n, const bool* corner) {
     negative = negative && (b[k] < -floor || (corner[k] && b[k] <= floor));
   }
   return positive || negative;
-}
-
-template <class Patch>
-double jacobian_determinant(const Patch& patch, double s, double t) {
-  double x, y, xs, xt, ys, yt;
-  patch.position(s, t, x, y, xs, xt, ys, yt);
-  return xs * yt - xt * ys;
 }
 
 // Bernstein coefficients b[0..n] on [0, 1] split at 1/2 into those on [0, 1/2] (lo) and on
