@@ -252,34 +252,51 @@ TEST_CASE("coons exact coverage matches an independent inversion of each patch",
     CHECK(tally.by_rows == tally.patches);  // folded ones too: their fold cells bound the fold
     CHECK(tally.folded_by_rows > 5);
     CHECK(tally.on_boundary_counted > 20);
-    // Beside the folds: 3 of 3,801 (34 when, as before, a start that reached any solution
-    // keeps the grid's starts from being tried).
+    // Beside the folds: 0 of 3,801 (3 with the grid on the domain's corners and edges, 34
+    // when, as before, a start that reached any solution keeps the grid's starts from being
+    // tried).
     INFO("fold pixels " << tally.fold_pixels << " missed " << tally.fold_missed << " by tessellation "
                         << tally.fold_missed_tessellated);
     CHECK(tally.fold_missed * 700 < tally.fold_pixels);
   }
 }
 
-// One patch of the 13,000-vertex encoding of the boat photograph (triangle 332, moved 224
-// pixels left and 264 up), which the lattice meshes above never made: pixel (6, 6) lies 0.23
-// inside its domain near the Coons corner M = (5, 6), but the start from the row's crossing
-// reaches a solution 0.246 outside it (within kNear) where the continuation beyond M has
-// folded back over the patch (its Jacobian determinant there has the other sign). That
-// solution must not settle the pixel.
-TEST_CASE("coons: a solution beyond the corner M where the patch folds back settles nothing", "[coons]") {
-  Mesh mesh;
-  // A, B, C (the triangle), then the apexes across CA, AB and BC.
-  mesh.points = {{10, 3}, {10, 7}, {5, 6}, {3, 3}, {12, 4}, {11, 10}};
-  mesh.values = {10, 20, 30, 40, 50, 60};
-  mesh.triangles = {{{0, 1, 2}}, {{2, 3, 0}}, {{0, 4, 1}}, {{1, 5, 2}}};
-  mesh.normalize_winding();
-  const Tally tally = check_coverage<CoonsPatch>(mesh, 16, 14, false, [](const PatchControl& c, const CoonsPatch& p) {
-    return CoonsMap(c, p);
-  });
-  REQUIRE(tally.patches == 1);
-  CHECK(tally.folded == 0);
-  CHECK(tally.pixels > 40);
-  CHECK(tally.ambiguous == 0);
+// Patches of the 13,000-vertex encoding of the boat photograph, moved next to the origin,
+// that the lattice meshes above never made; each lost a pixel well inside its domain.
+// - Triangle 332 (moved 224 pixels left and 264 up): pixel (6, 6) lies 0.23 inside the domain
+//   near the Coons corner M = (5, 6), but the start from the row's crossing reaches a
+//   solution 0.246 outside it (within kNear) where the continuation beyond M has folded back
+//   over the patch (its Jacobian determinant there has the other sign). That solution must
+//   not settle the pixel.
+// - Triangle 2031 (moved 344 left, 196 up): at pixel (6, 12) the starts from the crossings
+//   fail or land far outside, and so did the grid's nearest points on the domain's corner
+//   (1, 1) and side u = 1, where the determinant vanishes: the grid's points lie inside.
+TEST_CASE("coons: patches of a photograph's triangulation are covered exactly", "[coons]") {
+  struct Case {
+    const char* name;
+    std::vector<Point> points;  // A, B, C (the triangle), then the apexes across CA, AB and BC
+    int width, height;
+  };
+  const Case cases[] = {
+      {"boat 332", {{10, 3}, {10, 7}, {5, 6}, {3, 3}, {12, 4}, {11, 10}}, 16, 14},
+      {"boat 2031", {{10, 14}, {6, 10}, {12, 9}, {14, 12}, {5, 12}, {9, 4}}, 20, 20},
+  };
+  for (const Case& c : cases) {
+    INFO(c.name);
+    Mesh mesh;
+    mesh.points = c.points;
+    mesh.values = {10, 20, 30, 40, 50, 60};
+    mesh.triangles = {{{0, 1, 2}}, {{2, 3, 0}}, {{0, 4, 1}}, {{1, 5, 2}}};
+    mesh.normalize_winding();
+    const Tally tally = check_coverage<CoonsPatch>(mesh, c.width, c.height, false,
+                                                   [](const PatchControl& control, const CoonsPatch& p) {
+                                                     return CoonsMap(control, p);
+                                                   });
+    REQUIRE(tally.patches == 1);
+    CHECK(tally.folded == 0);
+    CHECK(tally.pixels > 40);
+    CHECK(tally.ambiguous == 0);
+  }
 }
 
 // Patches the image cuts (the lattice mesh moved 13 pixels left and 7 up) are still covered
