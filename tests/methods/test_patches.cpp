@@ -273,6 +273,9 @@ TEST_CASE("coons exact coverage matches an independent inversion of each patch",
 // - Triangle 2031 (moved 344 left, 196 up): at pixel (6, 12) the starts from the crossings
 //   fail or land far outside, and so did the grid's nearest points on the domain's corner
 //   (1, 1) and side u = 1, where the determinant vanishes: the grid's points lie inside.
+// - Triangle 7233 (moved 40 left, 286 up): its side u = 1 runs straight along row 10, from
+//   (10, 10) to (8, 10), and the determinant vanishes all along it, so Newton only creeps
+//   towards pixel (9, 10) on it from any start but the side's own point there, now the last.
 TEST_CASE("coons: patches of a photograph's triangulation are covered exactly", "[coons]") {
   struct Case {
     const char* name;
@@ -282,6 +285,7 @@ TEST_CASE("coons: patches of a photograph's triangulation are covered exactly", 
   const Case cases[] = {
       {"boat 332", {{10, 3}, {10, 7}, {5, 6}, {3, 3}, {12, 4}, {11, 10}}, 16, 14},
       {"boat 2031", {{10, 14}, {6, 10}, {12, 9}, {14, 12}, {5, 12}, {9, 4}}, 20, 20},
+      {"boat 7233", {{10, 10}, {10, 9}, {12, 8}, {14, 10}, {8, 10}, {11, 6}}, 20, 16},
   };
   for (const Case& c : cases) {
     INFO(c.name);

@@ -54,8 +54,10 @@
 // double inversion (both ways; exactly where the patch does not fold), and that moving
 // Newton's start does not change any decision. On the 13,000-vertex boat and peppers
 // encodings (26,000 patches each) that check found unfolded Coons patches missing pixels
-// 0.23 inside their domain, beside M; the determinant test fixed them (one patch is kept as
-// a test).
+// (87 on the boat): 0.23 inside their domain beside M (fixed by the determinant test of
+// settles(), patch_scan.h), where the grid's starts sat on a singular corner (the grid now
+// lies inside the domain), and on straight sides along a pixel row where the determinant
+// vanishes (the side's own point at the pixel as a last start). The patches are kept as tests.
 //
 // The bilinear field (pre-fill and domain) comes from bilinear_prefill below.
 // Pixels outside the triangulation's domain (NaN in the bilinear field) are never written.

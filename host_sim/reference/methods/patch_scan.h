@@ -18,7 +18,7 @@
 // (two at a stretch's start). The starts are a pixel or less from the solutions and at least
 // second-order accurate, so Newton mostly takes two or three steps. A pixel that none of
 // these settles (see settles() in scan_rows) tries the two nearest points of a 5 x 5 grid
-// inside the domain.
+// inside the domain, then, on a row that a straight side runs along, the side's point there.
 //
 // Where does it fold? one_sign below bounds the Jacobian determinant's sign by its Bernstein
 // coefficients (the determinant lies in their convex hull): all of one sign prove that the
@@ -27,6 +27,7 @@
 // tessellation.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -65,9 +66,10 @@ struct RowCrossings {
   static constexpr int kMaxRowCrossings = 20;
   int count = 0;
   double x_min = 1e300, x_max = -1e300;
+  unsigned along = 0;  // bit k: side k of the patch runs along the row
   RowCrossing crossing[kMaxRowCrossings];
 
-  void clear() { count = 0, x_min = 1e300, x_max = -1e300; }
+  void clear() { count = 0, x_min = 1e300, x_max = -1e300, along = 0; }
 
   void add(double x, double y, double s, double t) {
     x_min = std::min(x_min, x), x_max = std::max(x_max, x);
@@ -92,8 +94,25 @@ struct BoundaryArc {
   double s0 = 0, t0 = 0, ds = 0, dt = 0;
 };
 
-// Adds the crossings of `arc` with rows j0..j1 to rows[j - j0].
-inline void add_arc_crossings(const BoundaryArc& arc, int j0, int j1, std::vector<RowCrossings>& rows) {
+// Calls f(r) for each root r in [0, 1] of a r^2 + b r + c = 0 (stable quadratic formula; a
+// double root once; nothing where a = b = 0).
+template <class F>
+void unit_roots(double a, double b, double c, F&& f) {
+  if (a == 0) {
+    if (b != 0 && -c / b >= 0 && -c / b <= 1) f(-c / b);
+    return;
+  }
+  const double disc = b * b - 4 * a * c;
+  if (disc < 0) return;
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  const double f1 = q / a, f2 = q != 0 ? c / q : f1;
+  if (f1 >= 0 && f1 <= 1) f(f1);
+  if (f2 >= 0 && f2 <= 1 && f2 != f1) f(f2);
+}
+
+// Adds the crossings of `arc` (side k of the patch) with rows j0..j1 to rows[j - j0], and
+// marks k in the row's `along` where the arc runs along the row (a straight side on it).
+inline void add_arc_crossings(const BoundaryArc& arc, int k, int j0, int j1, std::vector<RowCrossings>& rows) {
   const Parabola& y = arc.y;
   auto add = [&](int j, double f) {
     rows[std::size_t(j - j0)].add(arc.x(f), j, arc.s0 + f * arc.ds, arc.t0 + f * arc.dt);
@@ -106,26 +125,15 @@ inline void add_arc_crossings(const BoundaryArc& arc, int j0, int j1, std::vecto
   const int first = std::max(j0, int(std::ceil(lo - kRowTolerance)));
   const int last = std::min(j1, int(std::floor(hi + kRowTolerance)));
   for (int j = first; j <= last; ++j) {
-    // Roots of y(f) = j in [0, 1] (stable quadratic formula), and the points of the curve
-    // within kRowTolerance of the row among its ends and vertices (tangent or flat rows).
+    // Roots of y(f) = j in [0, 1], and the points of the curve within kRowTolerance of the
+    // row among its ends and vertices (tangent or flat rows).
     const double a = y.a, b = y.b, c = y.c - j;
     if (std::fabs(c) <= kRowTolerance) add(j, 0);
     if (std::fabs(a + b + c) <= kRowTolerance) add(j, 1);
     if (y_vertex && std::fabs(y(fy) - j) <= kRowTolerance) add(j, fy);
     if (x_vertex && std::fabs(y(fx) - j) <= kRowTolerance) add(j, fx);
-    if (a == 0) {
-      if (b != 0) {
-        const double f = -c / b;
-        if (f >= 0 && f <= 1) add(j, f);
-      }
-      continue;
-    }
-    const double disc = b * b - 4 * a * c;
-    if (disc < 0) continue;
-    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-    const double f1 = q / a, f2 = q != 0 ? c / q : f1;
-    if (f1 >= 0 && f1 <= 1) add(j, f1);
-    if (f2 >= 0 && f2 <= 1 && f2 != f1) add(j, f2);
+    unit_roots(a, b, c, [&](double f) { add(j, f); });
+    if (a == 0 && b == 0 && c == 0) rows[std::size_t(j - j0)].along |= 1u << k;
   }
 }
 
@@ -198,7 +206,7 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
       row.add(std::clamp(cell.middle.x, cell.x_lo, cell.x_hi), cell.middle.y, cell.middle.s, cell.middle.t);
     }
   }
-  for (const BoundaryArc& arc : arcs) add_arc_crossings(arc, j0, j1, rows);
+  for (int k = 0; k < Patch::kSides; ++k) add_arc_crossings(arcs[std::size_t(k)], k, j0, j1, rows);
 
   // The last resort, for a pixel no other start placed: the two nearest points of a grid
   // over the domain (made once per patch, when first needed), nearer first. The points are
@@ -298,6 +306,7 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
       const bool left_first = right < 0 || (left >= 0 && i - crossing[left].x <= crossing[right].x - i);
       const int order[4] = {left_first ? left : right, left_first ? right : left, kGridStart, kGridStart - 1};
       continued = false;
+      bool settled = false;
       double grid_s[2], grid_t[2];
       for (int k : order) {
         double cds = 0, cdt = 0;
@@ -310,7 +319,17 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
         const Placed placed = visit(i, j, ns, nt);
         if (placed == Placed::none) continue;
         continued = true, s = ns, t = nt, ds = cds, dt = cdt;
-        if (settles(placed, ns, nt)) break;
+        if ((settled = settles(placed, ns, nt))) break;
+      }
+      // Still nothing, on a row a straight side runs along: the side's own points at the
+      // pixel, x(f) = i, as starts. The Jacobian may vanish all along such a side, so that
+      // Newton only creeps towards a pixel on it from anywhere else.
+      for (unsigned along = settled ? 0 : row.along; along != 0; along &= along - 1) {
+        const BoundaryArc& arc = arcs[std::size_t(std::countr_zero(along))];
+        unit_roots(arc.x.a, arc.x.b, arc.x.c - i, [&](double f) {
+          double fs = arc.s0 + f * arc.ds, ft = arc.t0 + f * arc.dt;
+          if (!settled && visit(i, j, fs, ft) == Placed::inside) settled = true;
+        });
       }
     }
   }
