@@ -264,7 +264,7 @@ TEST_CASE("coons exact coverage matches an independent inversion of each patch",
 }
 
 // Patches of the 13,000-vertex encoding of the boat photograph, moved next to the origin,
-// that the lattice meshes above never made; each lost a pixel well inside its domain.
+// that the lattice meshes above never made; each lost a pixel it covers.
 // - Triangle 332 (moved 224 pixels left and 264 up): pixel (6, 6) lies 0.23 inside the domain
 //   near the Coons corner M = (5, 6), but the start from the row's crossing reaches a
 //   solution 0.246 outside it (within kNear) where the continuation beyond M has folded back
