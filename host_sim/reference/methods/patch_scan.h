@@ -212,8 +212,7 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
   // over the domain (made once per patch, when first needed), nearer first. The points are
   // the centres of a 5 x 5 split of the square, inside the domain: on its boundary the
   // Jacobian may vanish (the Coons corner M, and sides of degenerate patches), where Newton
-  // fails (boat, 13,000 vertices: 2 pixels of unfolded patches were lost with a grid of the
-  // square's corners and edges; the lattice test's misses beside folds went from 3 to 0).
+  // fails.
   constexpr int kGrid = 4;
   std::array<double, 4> grid[(kGrid + 1) * (kGrid + 1)];
   int grid_size = 0;
@@ -245,16 +244,14 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
   // beyond the domain and may fold back over the patch there, so a solution far outside (a
   // start from a crossing near the Coons corner M, where the inverse Jacobian is large, can
   // reach one) does not settle the pixel, nor does one where the determinant has turned: the
-  // continuation is folded there. Beside the Coons corner M, where the determinant vanishes,
-  // it turns within kNear of the domain and the sheet beyond covers the patch's own pixels
-  // (boat, 13,000 vertices: pixels with a preimage 0.23 inside the domain had been left out).
-  // Where the patch folds no solution outside the domain settles a pixel. The other starts
-  // are then tried too.
+  // continuation is folded there (beside the Coons corner M, where the determinant vanishes,
+  // it turns within kNear of the domain). Where the patch folds (centre_det = 0) no solution
+  // outside the domain settles a pixel. The other starts are then tried too.
   const auto [centre_s, centre_t] = Patch::centre();
   const double centre_det = folds.empty() ? jacobian_determinant(patch, centre_s, centre_t) : 0;
   auto settles = [&](Placed placed, double s, double t) {
     return placed == Placed::inside ||
-           (placed == Placed::outside && jacobian_determinant(patch, s, t) * centre_det > 0);
+           (placed == Placed::outside && centre_det != 0 && jacobian_determinant(patch, s, t) * centre_det > 0);
   };
   constexpr int kGridStart = -2;  // and -3: the grid's two starts
 
