@@ -314,16 +314,15 @@ TEST_CASE("survey: coverage of every patch of a triangulation file", "[.survey]"
   if (!file) FAIL("set PATCH_COVERAGE_TRI to a .tri file");
   const Triangulation tri = read_tri_file(file);
   const Mesh& mesh = tri.layers.at(0);
-  for (const bool coons : {true, false}) {
-    const Tally tally =
-        coons ? check_coverage<CoonsPatch>(mesh, tri.width, tri.height, false,
-                                           [](const PatchControl& c, const CoonsPatch& p) { return CoonsMap(c, p); })
-              : check_coverage<BezierPatch>(mesh, tri.width, tri.height, true,
-                                            [](const PatchControl& c, const BezierPatch&) { return BezierMap(c); });
-    WARN((coons ? "coons" : "bezier") << ": patches " << tally.patches << ", folded " << tally.folded << ", pixels "
-                                      << tally.pixels << ", in folded patches " << tally.fold_pixels << " of which missed "
-                                      << tally.fold_missed << ", ambiguous " << tally.ambiguous);
-  }
+  auto report = [](const char* method, const Tally& tally) {
+    WARN(method << ": patches " << tally.patches << ", folded " << tally.folded << ", pixels " << tally.pixels
+                << ", in folded patches " << tally.fold_pixels << " of which missed " << tally.fold_missed
+                << ", ambiguous " << tally.ambiguous);
+  };
+  const auto coons_map = [](const PatchControl& c, const CoonsPatch& p) { return CoonsMap(c, p); };
+  const auto bezier_map = [](const PatchControl& c, const BezierPatch&) { return BezierMap(c); };
+  report("coons", check_coverage<CoonsPatch>(mesh, tri.width, tri.height, false, coons_map));
+  report("bezier", check_coverage<BezierPatch>(mesh, tri.width, tri.height, true, bezier_map));
 }
 
 // Patches the image cuts (the lattice mesh moved 13 pixels left and 7 up) are still covered
