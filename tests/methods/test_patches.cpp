@@ -305,6 +305,53 @@ TEST_CASE("coons: patches of a photograph's triangulation are covered exactly", 
   }
 }
 
+// Bezier patches of the same boat encoding at vertices of degree 3: two corners of the patch
+// are one vertex (the apex of two edge neighbours), so the side between them runs out and
+// back along a segment, and its turning point (a cusp, where the Jacobian is singular) lands
+// on a pixel. Newton does not converge there from any guess nearby; BezierPatch::tessellate
+// starts that pixel on the cusp. Points: A, B, C, then the apexes across CA, AB and BC.
+// - Triangle 9330 (moved 430 left, 150 up): apexes across CA and BC at (7, 4), the side
+//   b = 0 turns back at pixel (7, 5).
+// - Triangle 6779 (moved 3 right, 410 up): apexes across CA and AB at (4, 6), the side
+//   c = 0 turns back at pixel (4, 9).
+// Both tessellate with 2 subdivisions, so a node lies on the cusp, and that node's exact
+// start is kept (BezierPatch::solve). Scaled by 3, triangle 9330 tessellates with 3: no node
+// there, and only the start on the cusp itself places pixel (21, 15).
+TEST_CASE("bezier: patches of a photograph's triangulation are covered exactly", "[bezier]") {
+  struct Case {
+    const char* name;
+    std::vector<Point> points;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    int width, height;
+    int subdivisions;  // of the tessellation: even puts a node on the cusp, odd does not
+  };
+  const Case cases[] = {
+      {"boat 9330", {{8, 7}, {6, 6}, {7, 6}, {7, 4}, {5, 7}}, {{0, 1, 2}, {2, 3, 0}, {0, 4, 1}, {1, 3, 2}}, 14, 12, 2},
+      {"boat 6779", {{4, 12}, {5, 13}, {3, 12}, {4, 6}, {4, 15}}, {{0, 1, 2}, {2, 3, 0}, {0, 3, 1}, {1, 4, 2}}, 10, 18, 2},
+      {"boat 9330 x 3", {{24, 21}, {18, 18}, {21, 18}, {21, 12}, {15, 21}}, {{0, 1, 2}, {2, 3, 0}, {0, 4, 1}, {1, 3, 2}},
+       42, 36, 3},
+  };
+  for (const Case& c : cases) {
+    INFO(c.name);
+    Mesh mesh;
+    mesh.points = c.points;
+    mesh.values = {10, 20, 30, 40, 50};
+    for (const auto& t : c.triangles) mesh.triangles.push_back({t});
+    mesh.normalize_winding();
+    const Tally tally = check_coverage<BezierPatch>(mesh, c.width, c.height, true,
+                                                    [](const PatchControl& control, const BezierPatch&) {
+                                                      return BezierMap(control);
+                                                    });
+    PatchControl control;
+    REQUIRE(patch_control(mesh, build_topology(mesh), 0, PixelMapping(c.width, c.height, c.width, c.height), control));
+    CHECK(BezierPatch(control).subdivisions() == c.subdivisions);
+    REQUIRE(tally.patches == 1);
+    CHECK(tally.folded == 0);
+    CHECK(tally.pixels > 30);
+    CHECK(tally.ambiguous == 0);
+  }
+}
+
 // Not run by ctest (about half an hour for 13,000 vertices): the same check on every patch
 // of a triangulation file's first mesh, e.g.
 //   PATCH_COVERAGE_TRI=boat.tri build/bin/test_patches "[.survey]"

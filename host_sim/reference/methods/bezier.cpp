@@ -60,6 +60,11 @@ bool BezierPatch::unfolded() const {
   return detail::one_sign(b, 6, corner);
 }
 
+bool BezierPatch::exact_start(double x, double y, double a, double b) const {
+  const Point p = position(a, b);
+  return std::fabs(x - p.x) + std::fabs(y - p.y) < detail::kExactResidual;
+}
+
 int BezierPatch::subdivisions() const {
   // In monomials: P200 - 2 P101 + P002 = kss, P020 - 2 P011 + P002 = ktt and
   // P200 - 2 P110 + P020 = kss - kst + ktt.
