@@ -276,6 +276,18 @@ TEST_CASE("coons exact coverage matches an independent inversion of each patch",
 // - Triangle 7233 (moved 40 left, 286 up): its side u = 1 runs straight along row 10, from
 //   (10, 10) to (8, 10), and the determinant vanishes all along it, so Newton only creeps
 //   towards pixel (9, 10) on it from any start but the side's own point there, now the last.
+// The mesh of one such patch: its triangle (points 0, 1, 2) and its three edge neighbours,
+// values 10, 20, ... at the points.
+static Mesh photograph_patch_mesh(const std::vector<Point>& points,
+                                  const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  Mesh mesh;
+  mesh.points = points;
+  for (std::size_t k = 0; k < points.size(); ++k) mesh.values.push_back(10.0 * double(k + 1));
+  for (const auto& t : triangles) mesh.triangles.push_back({t});
+  mesh.normalize_winding();
+  return mesh;
+}
+
 TEST_CASE("coons: patches of a photograph's triangulation are covered exactly", "[coons]") {
   struct Case {
     const char* name;
@@ -289,11 +301,7 @@ TEST_CASE("coons: patches of a photograph's triangulation are covered exactly", 
   };
   for (const Case& c : cases) {
     INFO(c.name);
-    Mesh mesh;
-    mesh.points = c.points;
-    mesh.values = {10, 20, 30, 40, 50, 60};
-    mesh.triangles = {{{0, 1, 2}}, {{2, 3, 0}}, {{0, 4, 1}}, {{1, 5, 2}}};
-    mesh.normalize_winding();
+    const Mesh mesh = photograph_patch_mesh(c.points, {{0, 1, 2}, {2, 3, 0}, {0, 4, 1}, {1, 5, 2}});
     const Tally tally = check_coverage<CoonsPatch>(mesh, c.width, c.height, false,
                                                    [](const PatchControl& control, const CoonsPatch& p) {
                                                      return CoonsMap(control, p);
@@ -308,8 +316,9 @@ TEST_CASE("coons: patches of a photograph's triangulation are covered exactly", 
 // Bezier patches of the same boat encoding at vertices of degree 3: two corners of the patch
 // are one vertex (the apex of two edge neighbours), so the side between them runs out and
 // back along a segment, and its turning point (a cusp, where the Jacobian is singular) lands
-// on a pixel. Newton does not converge there from any guess nearby; BezierPatch::tessellate
-// starts that pixel on the cusp. Points: A, B, C, then the apexes across CA, AB and BC.
+// on a pixel. Newton does not converge there from any guess nearby; the boundary candidates
+// of the tessellation (detail::visit_boundary_side) start that pixel on the cusp.
+// Points: A, B, C, then the apexes across CA, AB and BC.
 // - Triangle 9330 (moved 430 left, 150 up): apexes across CA and BC at (7, 4), the side
 //   b = 0 turns back at pixel (7, 5).
 // - Triangle 6779 (moved 3 right, 410 up): apexes across CA and AB at (4, 6), the side
@@ -327,17 +336,18 @@ TEST_CASE("bezier: patches of a photograph's triangulation are covered exactly",
   };
   const Case cases[] = {
       {"boat 9330", {{8, 7}, {6, 6}, {7, 6}, {7, 4}, {5, 7}}, {{0, 1, 2}, {2, 3, 0}, {0, 4, 1}, {1, 3, 2}}, 14, 12, 2},
-      {"boat 6779", {{4, 12}, {5, 13}, {3, 12}, {4, 6}, {4, 15}}, {{0, 1, 2}, {2, 3, 0}, {0, 3, 1}, {1, 4, 2}}, 10, 18, 2},
-      {"boat 9330 x 3", {{24, 21}, {18, 18}, {21, 18}, {21, 12}, {15, 21}}, {{0, 1, 2}, {2, 3, 0}, {0, 4, 1}, {1, 3, 2}},
-       42, 36, 3},
+      {"boat 6779", {{4, 12}, {5, 13}, {3, 12}, {4, 6}, {4, 15}}, {{0, 1, 2}, {2, 3, 0}, {0, 3, 1}, {1, 4, 2}}, 10, 18,
+       2},
+      {"boat 9330 x 3",
+       {{24, 21}, {18, 18}, {21, 18}, {21, 12}, {15, 21}},
+       {{0, 1, 2}, {2, 3, 0}, {0, 4, 1}, {1, 3, 2}},
+       42,
+       36,
+       3},
   };
   for (const Case& c : cases) {
     INFO(c.name);
-    Mesh mesh;
-    mesh.points = c.points;
-    mesh.values = {10, 20, 30, 40, 50};
-    for (const auto& t : c.triangles) mesh.triangles.push_back({t});
-    mesh.normalize_winding();
+    const Mesh mesh = photograph_patch_mesh(c.points, c.triangles);
     const Tally tally = check_coverage<BezierPatch>(mesh, c.width, c.height, true,
                                                     [](const PatchControl& control, const BezierPatch&) {
                                                       return BezierMap(control);

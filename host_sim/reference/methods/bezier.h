@@ -12,6 +12,7 @@
 // Border triangles (fewer than three neighbours) have no patch (§4.2); a mesh without
 // interior triangles renders as bilinear. Pixels outside the domain stay NaN.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -95,8 +96,9 @@ class BezierPatch {
   // calls visit(x, y, a, b) for every pixel of the width x height image that a micro-triangle
   // covers, with the micro-triangle's linear guess of its parameters, then for the pixels
   // near each boundary arc beyond its chord (detail::visit_boundary_side), guessed from the
-  // chord, and for the pixel nearest a side's cusp, started on it: the candidates of
-  // patch_raster.h, every pixel of the patch among them, some more than once.
+  // chord, and for the pixel nearest a side's cusp, started on it (both
+  // detail::visit_boundary_side): the candidates of patch_raster.h, every pixel of the patch
+  // among them, some more than once.
   template <class Visit>
   void tessellate(int width, int height, std::vector<detail::MicroVertex>& node, Visit&& visit) const;
 
@@ -131,27 +133,9 @@ void BezierPatch::tessellate(int width, int height, std::vector<detail::MicroVer
         detail::rasterize_micro_triangle(node[index(i + 1, j)], node[index(i + 1, j + 1)], node[index(i, j + 1)], width,
                                          height, visit);
     }
-  for (int k = 0; k < kSides; ++k) {
-    detail::visit_boundary_side(*this, n, [k](double f) { return side(k, f); }, width, height, visit);
-    // A side that turns back on itself (two corners at one vertex, the apex of both edge
-    // neighbours: a vertex of degree 3) has a cusp where its velocity vanishes, and the
-    // Jacobian with it; Newton does not converge to a pixel there from any guess nearby, so
-    // the pixel nearest the cusp starts on it (kept when the cusp is its sample point).
-    const auto [s0, t0] = side(k, 0.0);
-    const auto [sm, tm] = side(k, 0.5);
-    const auto [s1, t1] = side(k, 1.0);
-    const Point p0 = position(s0, t0), pm = position(sm, tm), p1 = position(s1, t1);
-    const Parabola cx = Parabola::through(p0.x, pm.x, p1.x), cy = Parabola::through(p0.y, pm.y, p1.y);
-    const double speed2 = cx.a * cx.a + cy.a * cy.a;
-    if (speed2 == 0) continue;
-    const double f = -(cx.a * cx.b + cy.a * cy.b) / (2 * speed2);  // nearest to zero velocity
-    const double vx = 2 * cx.a * f + cx.b, vy = 2 * cy.a * f + cy.b;
-    if (!(f > 0 && f < 1) || vx * vx + vy * vy > 1e-18 * speed2) continue;
-    const auto [cs, ct] = side(k, f);
-    const Point c = position(cs, ct);
-    const double i = std::floor(c.x + 0.5), j = std::floor(c.y + 0.5);
-    if (i >= 0 && j >= 0 && i < width && j < height) visit(int(i), int(j), cs, ct);
-  }
+  std::array<detail::BoundaryArc, kSides> arcs;
+  if (!detail::side_arcs(*this, arcs)) return;
+  for (int k = 0; k < kSides; ++k) detail::visit_boundary_side(*this, n, k, arcs[std::size_t(k)], width, height, visit);
 }
 
 inline bool BezierPatch::solve(double x, double y, double& a, double& b) const {
@@ -179,9 +163,9 @@ inline bool BezierPatch::solve(double x, double y, double& a, double& b) const {
     ja += 2 * da * kaa + db * kab;
     jb += da * kab + 2 * db * kbb;
   }
-  // Where the Jacobian is singular (a side's cusp, see tessellate) Newton cannot step, not
-  // even from the solution itself (elsewhere such a start converges at once): a start that
-  // already solves the equation stays as it is, as in CoonsPatch::solve.
+  // Where the Jacobian is singular (a side's cusp, see detail::visit_boundary_side) Newton
+  // cannot step, not even from the solution itself (elsewhere such a start converges at
+  // once): a start that already solves the equation stays as it is, as in CoonsPatch::solve.
   return exact_start(x, y, a, b);
 }
 

@@ -335,20 +335,31 @@ void visit_boundary_arc(Point p, Point m, Point q, double ps, double pt, double 
   }
 }
 
-// The boundary arcs of one side of a patch's parameter domain, n chords: side(f) gives the
-// parameters (s, t) at f in [0, 1]; chord k runs from side(k / n) to side((k + 1) / n), its
-// arc's middle is side((k + 1/2) / n). Each goes to visit_boundary_arc.
-template <class Patch, class Side, class Visit>
-void visit_boundary_side(const Patch& patch, int n, Side&& side, int width, int height, Visit&& visit) {
-  auto [s0, t0] = side(0.0);
+// The boundary candidates of side k of a patch's parameter domain (Patch::side(k, f), f in
+// [0, 1]; its curve `arc` from side_arcs), in n chords: chord c runs from side(c / n) to
+// side((c + 1) / n), its arc's middle is side((c + 1/2) / n), and each goes to
+// visit_boundary_arc. Where the side turns back on
+// itself (BoundaryArc::cusp: two patch corners at one vertex, the apex of both edge
+// neighbours, a vertex of degree 3) the Jacobian vanishes with its velocity and Newton
+// converges to no pixel there from a guess nearby, so the pixel nearest the cusp also gets
+// the cusp as its start (kept when the cusp is its sample point: the solvers keep a start
+// that solves the equation exactly).
+template <class Patch, class Visit>
+void visit_boundary_side(const Patch& patch, int n, int k, const BoundaryArc& arc, int width, int height,
+                         Visit&& visit) {
+  auto [s0, t0] = Patch::side(k, 0.0);
   Point p0 = patch.position(s0, t0);
-  for (int k = 0; k < n; ++k) {
-    const auto [s1, t1] = side(double(k + 1) / n);
-    const auto [sm, tm] = side((k + 0.5) / n);
+  for (int c = 0; c < n; ++c) {
+    const auto [s1, t1] = Patch::side(k, double(c + 1) / n);
+    const auto [sm, tm] = Patch::side(k, (c + 0.5) / n);
     const Point p1 = patch.position(s1, t1);
     visit_boundary_arc(p0, patch.position(sm, tm), p1, s0, t0, s1, t1, width, height, visit);
     p0 = p1, s0 = s1, t0 = t1;
   }
+  double f;
+  if (!arc.cusp(f)) return;
+  const double i = std::floor(arc.x(f) + 0.5), j = std::floor(arc.y(f) + 0.5);
+  if (i >= 0 && j >= 0 && i < width && j < height) visit(int(i), int(j), arc.s0 + f * arc.ds, arc.t0 + f * arc.dt);
 }
 
 // The triangles of `mesh` cell by cell (16 x 16 domain units, cells row by row) by their

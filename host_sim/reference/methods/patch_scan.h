@@ -92,7 +92,37 @@ inline constexpr double kSpanMargin = 1e-7;
 struct BoundaryArc {
   Parabola x, y;
   double s0 = 0, t0 = 0, ds = 0, dt = 0;
+
+  // The parameter f in (0, 1) where the curve turns back on itself (a cusp: its velocity
+  // vanishes there; the side runs out along a segment and back), if it does.
+  bool cusp(double& f) const {
+    const double speed2 = x.a * x.a + y.a * y.a;
+    if (speed2 == 0) return false;
+    f = -(x.a * x.b + y.a * y.b) / (2 * speed2);  // the least velocity
+    const double vx = 2 * x.a * f + x.b, vy = 2 * y.a * f + y.b;
+    return f > 0 && f < 1 && vx * vx + vy * vy <= 1e-18 * speed2;
+  }
 };
+
+// The sides of `patch` (Patch::side(k, f), k < Patch::kSides) as boundary curves: the
+// position is quadratic along a side, the parabola through its ends and middle. False when
+// one of those lies beyond kMaxPatchCoordinate (the patch is skipped).
+template <class Patch>
+bool side_arcs(const Patch& patch, std::array<BoundaryArc, Patch::kSides>& arcs) {
+  for (int k = 0; k < Patch::kSides; ++k) {
+    BoundaryArc& arc = arcs[std::size_t(k)];
+    const auto [s0, t0] = Patch::side(k, 0.0);
+    const auto [s1, t1] = Patch::side(k, 1.0);
+    const auto [sm, tm] = Patch::side(k, 0.5);
+    const Point p0 = patch.position(s0, t0), pm = patch.position(sm, tm), p1 = patch.position(s1, t1);
+    for (const Point& p : {p0, pm, p1})
+      if (!(std::fabs(p.x) <= kMaxPatchCoordinate && std::fabs(p.y) <= kMaxPatchCoordinate)) return false;
+    arc.x = Parabola::through(p0.x, pm.x, p1.x);
+    arc.y = Parabola::through(p0.y, pm.y, p1.y);
+    arc.s0 = s0, arc.t0 = t0, arc.ds = s1 - s0, arc.dt = t1 - t0;
+  }
+  return true;
+}
 
 // Calls f(r) for each root r in [0, 1] of a r^2 + b r + c = 0 (stable quadratic formula; a
 // double root once; nothing where a = b = 0).
@@ -177,20 +207,11 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
   std::vector<RowCrossings>& rows = scratch.rows;
   std::array<BoundaryArc, Patch::kSides> arcs;
   double y_lo = 1e300, y_hi = -1e300;
-  for (int k = 0; k < Patch::kSides; ++k) {
-    BoundaryArc& arc = arcs[std::size_t(k)];
-    const auto [s0, t0] = Patch::side(k, 0.0);
-    const auto [s1, t1] = Patch::side(k, 1.0);
-    const auto [sm, tm] = Patch::side(k, 0.5);
-    const Point p0 = patch.position(s0, t0), pm = patch.position(sm, tm), p1 = patch.position(s1, t1);
-    for (const Point& p : {p0, pm, p1})
-      if (!(std::fabs(p.x) <= kMaxPatchCoordinate && std::fabs(p.y) <= kMaxPatchCoordinate)) return;
-    arc.x = Parabola::through(p0.x, pm.x, p1.x);
-    arc.y = Parabola::through(p0.y, pm.y, p1.y);
-    arc.s0 = s0, arc.t0 = t0, arc.ds = s1 - s0, arc.dt = t1 - t0;
-    // The curve lies in the triangle of its ends and control point 2 pm - (p0 + p1) / 2.
-    const double cy = 2 * pm.y - 0.5 * (p0.y + p1.y);
-    y_lo = std::min({y_lo, p0.y, p1.y, cy}), y_hi = std::max({y_hi, p0.y, p1.y, cy});
+  if (!side_arcs(patch, arcs)) return;
+  for (const BoundaryArc& arc : arcs) {
+    // The curve lies in the triangle of its ends and control point y(0) + y'(0) / 2.
+    const double y0 = arc.y.c, y1 = arc.y(1), cy = arc.y.c + 0.5 * arc.y.b;
+    y_lo = std::min({y_lo, y0, y1, cy}), y_hi = std::max({y_hi, y0, y1, cy});
   }
   for (const FoldCell& cell : folds) y_lo = std::min(y_lo, cell.y_lo), y_hi = std::max(y_hi, cell.y_hi);
   const int j0 = std::max(0, int(std::ceil(y_lo - 1))), j1 = std::min(height - 1, int(std::floor(y_hi + 1)));
