@@ -223,15 +223,23 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
   return tally;
 }
 
+// check_coverage of each method, with its independent map (Bezier's domain is a triangle).
+Tally bezier_coverage(const Mesh& mesh, int width, int height) {
+  return check_coverage<BezierPatch>(mesh, width, height, true,
+                                     [](const PatchControl& c, const BezierPatch&) { return BezierMap(c); });
+}
+Tally coons_coverage(const Mesh& mesh, int width, int height) {
+  return check_coverage<CoonsPatch>(mesh, width, height, false,
+                                    [](const PatchControl& c, const CoonsPatch& p) { return CoonsMap(c, p); });
+}
+
 }  // namespace
 
 TEST_CASE("bezier exact coverage matches an independent inversion of each patch", "[bezier]") {
   for (std::uint32_t seed : {21u}) {
     INFO("seed " << seed);
     const Mesh mesh = testing::random_lattice_mesh(40, 30, 60, seed, 10);
-    const Tally tally = check_coverage<BezierPatch>(mesh, 40, 30, true, [](const PatchControl& c, const BezierPatch&) {
-      return BezierMap(c);
-    });
+    const Tally tally = bezier_coverage(mesh, 40, 30);
     CHECK(tally.ambiguous == 0);
     CHECK(tally.pixels > 1000);
     CHECK(tally.patches - tally.folded > 15);
@@ -245,9 +253,7 @@ TEST_CASE("coons exact coverage matches an independent inversion of each patch",
   for (std::uint32_t seed : {22u}) {
     INFO("seed " << seed);
     const Mesh mesh = testing::random_lattice_mesh(40, 30, 60, seed, 10);
-    const Tally tally = check_coverage<CoonsPatch>(mesh, 40, 30, false, [](const PatchControl& c, const CoonsPatch& p) {
-      return CoonsMap(c, p);
-    });
+    const Tally tally = coons_coverage(mesh, 40, 30);
     CHECK(tally.ambiguous == 0);
     CHECK(tally.pixels > 1000);
     CHECK(tally.patches - tally.folded > 15);
@@ -302,10 +308,7 @@ TEST_CASE("coons: patches of a photograph's triangulation are covered exactly", 
   for (const Case& c : cases) {
     INFO(c.name);
     const Mesh mesh = photograph_patch_mesh(c.points, {{0, 1, 2}, {2, 3, 0}, {0, 4, 1}, {1, 5, 2}});
-    const Tally tally = check_coverage<CoonsPatch>(mesh, c.width, c.height, false,
-                                                   [](const PatchControl& control, const CoonsPatch& p) {
-                                                     return CoonsMap(control, p);
-                                                   });
+    const Tally tally = coons_coverage(mesh, c.width, c.height);
     REQUIRE(tally.patches == 1);
     CHECK(tally.folded == 0);
     CHECK(tally.pixels > 40);
@@ -348,10 +351,7 @@ TEST_CASE("bezier: patches of a photograph's triangulation are covered exactly",
   for (const Case& c : cases) {
     INFO(c.name);
     const Mesh mesh = photograph_patch_mesh(c.points, c.triangles);
-    const Tally tally = check_coverage<BezierPatch>(mesh, c.width, c.height, true,
-                                                    [](const PatchControl& control, const BezierPatch&) {
-                                                      return BezierMap(control);
-                                                    });
+    const Tally tally = bezier_coverage(mesh, c.width, c.height);
     PatchControl control;
     REQUIRE(patch_control(mesh, build_topology(mesh), 0, PixelMapping(c.width, c.height, c.width, c.height), control));
     CHECK(BezierPatch(control).subdivisions() == c.subdivisions);
@@ -376,10 +376,8 @@ TEST_CASE("survey: coverage of every patch of a triangulation file", "[.survey]"
                 << ", in folded patches " << tally.fold_pixels << " of which missed " << tally.fold_missed
                 << ", ambiguous " << tally.ambiguous);
   };
-  const auto coons_map = [](const PatchControl& c, const CoonsPatch& p) { return CoonsMap(c, p); };
-  const auto bezier_map = [](const PatchControl& c, const BezierPatch&) { return BezierMap(c); };
-  report("coons", check_coverage<CoonsPatch>(mesh, tri.width, tri.height, false, coons_map));
-  report("bezier", check_coverage<BezierPatch>(mesh, tri.width, tri.height, true, bezier_map));
+  report("coons", coons_coverage(mesh, tri.width, tri.height));
+  report("bezier", bezier_coverage(mesh, tri.width, tri.height));
 }
 
 // Patches the image cuts (the lattice mesh moved 13 pixels left and 7 up) are still covered
@@ -389,12 +387,8 @@ TEST_CASE("survey: coverage of every patch of a triangulation file", "[.survey]"
 TEST_CASE("patches cut by the image's edge are covered exactly", "[bezier][coons]") {
   Mesh mesh = testing::random_lattice_mesh(40, 30, 60, 23, 10);
   for (Point& p : mesh.points) p.x -= 13, p.y -= 7;
-  const Tally bezier = check_coverage<BezierPatch>(mesh, 27, 23, true, [](const PatchControl& c, const BezierPatch&) {
-    return BezierMap(c);
-  });
-  const Tally coons = check_coverage<CoonsPatch>(mesh, 27, 23, false, [](const PatchControl& c, const CoonsPatch& p) {
-    return CoonsMap(c, p);
-  });
+  const Tally bezier = bezier_coverage(mesh, 27, 23);
+  const Tally coons = coons_coverage(mesh, 27, 23);
   CHECK(bezier.pixels > 500);
   CHECK(coons.pixels > 500);
   INFO("coons fold pixels " << coons.fold_pixels << " missed " << coons.fold_missed);
