@@ -28,13 +28,30 @@ struct Edge {
   int64_t exact_at(int32_t x, int32_t y) const { return a * x + b * y + c_exact; }
 };
 
+// The tie rule, for an edge P -> Q with dx = Qx - Px, dy = Qy - Py: inclusive when on the domain
+// boundary, or A < 0, or A == 0 and B < 0 (A = -dy 2^S, B = dx 2^S), i.e. dy > 0, or dy == 0 and
+// dx < 0. Every path of the rasterizer takes its biases from here (or from the lane form below).
+constexpr bool inclusive_edge(int64_t dx, int64_t dy, bool boundary) {
+  return boundary | (dy > 0) | ((dy == 0) & (dx < 0));
+}
+
+#if TS_USE_SSE2
+// inclusive_edge in int32 lanes: all ones where inclusive, 0 elsewhere (boundary: all ones or 0).
+inline __m128i inclusive_edge_lanes(__m128i dx, __m128i dy, __m128i boundary) {
+  const __m128i zero = _mm_setzero_si128();
+  return _mm_or_si128(
+      _mm_or_si128(_mm_cmpgt_epi32(dy, zero), _mm_and_si128(_mm_cmpeq_epi32(dy, zero), _mm_cmpgt_epi32(zero, dx))),
+      boundary);
+}
+#endif
+
 inline Edge make_edge(int32_t px, int32_t py, int32_t qx, int32_t qy, bool boundary) {
   const int64_t dx = int64_t(qx) - px;
   const int64_t dy = int64_t(qy) - py;
   Edge e;
   e.a = -dy * (int64_t(1) << config::subpixel_bits);
   e.b = dx * (int64_t(1) << config::subpixel_bits);
-  const bool inclusive = boundary | (e.a < 0) | ((e.a == 0) & (e.b < 0));
+  const bool inclusive = inclusive_edge(dx, dy, boundary);
   e.c_exact = dy * px - dx * py;
   e.c = e.c_exact - (inclusive ? 0 : 1);
   return e;

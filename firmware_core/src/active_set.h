@@ -1,0 +1,117 @@
+#pragma once
+// The active set of a layer: the triangles that meet the current band, as a ring bitmap in the
+// caller's workspace.
+#include <stddef.h>
+#include <stdint.h>
+
+#include "frame_plan.h"
+#include "output_mapping.h"
+#include "triangle_view.h"
+#include "tristream/blob.h"
+
+namespace tristream::core::detail {
+namespace {
+
+// The active triangles of one layer: a bitmap over the window [base, cursor) of the triangle
+// stream (sorted by top row), in caller memory, addressed as a ring (triangle t at bit
+// t mod capacity, unique while the window is no longer than the capacity). base only passes
+// triangles that ended above the current band, so the window is the stretch from the oldest
+// live triangle to the newest started one: at most the layer's triangle count, and one bit per
+// triangle instead of an index per live triangle.
+struct ActiveSet {
+  const BlobLayer* layer = nullptr;
+  uint32_t* words = nullptr;
+  uint32_t capacity = 0;  // bits, a multiple of 32
+  uint32_t base = 0;
+  uint32_t cursor = 0;
+  int32_t view_x1 = 0;  // the viewport's right end: tiles ending there are the last of their band
+
+  // Bit positions: pos(t) = t mod capacity, stepped with next() to avoid a division per test.
+  uint32_t pos(uint32_t t) const { return t % capacity; }
+  uint32_t next(uint32_t p) const { return p + 1 == capacity ? 0 : p + 1; }
+  bool test_at(uint32_t p) const { return (words[p / 32] >> (p % 32)) & 1u; }
+  void set_at(uint32_t p) { words[p / 32] |= 1u << (p % 32); }
+
+  // Calls f(t, w, span, p) for the live triangles of the window a word at a time, in order: bit i
+  // of w (nonzero) is triangle t + i, triangles t .. t + span - 1 are in the window (span <= 32),
+  // and p is the bit position of triangle t (bit p % 32 of words[p / 32]).
+  template <typename F>
+  void for_each_live_word(F&& f) const {
+    uint32_t t = base, p = base < cursor ? pos(base) : 0;
+    while (t < cursor) {
+      uint32_t w = words[p / 32] >> (p % 32);
+      uint32_t span = 32 - p % 32;
+      if (span > cursor - t) {
+        span = cursor - t;
+        w &= (1u << span) - 1;  // span < 32 here
+      }
+      if (w) f(t, w, span, p);
+      t += span;
+      p += span;
+      if (p == capacity) p = 0;
+    }
+  }
+
+  void reset() {
+    for (uint32_t i = 0; i < capacity / 32; ++i) words[i] = 0;
+    base = cursor = 0;
+  }
+  // Drops triangles ending above row y0, adds those starting at or before row y1 (inclusive).
+  // False when the window would exceed the capacity.
+  bool advance(const Mapping& map, int32_t y0, int32_t y1) {
+    if (base < cursor) {
+      // A word of the bitmap at a time: the ended triangles' bits collected without branches on
+      // the data, then cleared at once (no division per triangle for its bit position).
+      for_each_live_word([&](uint32_t t, uint32_t w, uint32_t, uint32_t p) {
+        uint32_t ended = 0;
+        for (; w; w &= w - 1) {
+          const uint32_t i = uint32_t(__builtin_ctz(w));
+          int32_t top, bottom;
+          row_extent(*layer, t + i, map, &top, &bottom);
+          ended |= uint32_t(bottom < y0) << i;
+        }
+        words[p / 32] &= ~(ended << (p % 32));
+      });
+      uint32_t p = pos(base);
+      while (base < cursor && !test_at(p)) ++base, p = next(p);
+    }
+    for (uint32_t p = cursor < layer->triangle_count ? pos(cursor) : 0; cursor < layer->triangle_count; p = next(p)) {
+      int32_t top, bottom;
+      row_extent(*layer, cursor, map, &top, &bottom);
+      if (top > y1) break;
+      const bool live = bottom >= y0 && top <= bottom;
+      if (live) {
+        if (cursor - base >= capacity) return false;
+        set_at(p);
+      } else if (base == cursor) {
+        ++base;
+      }
+      ++cursor;
+    }
+    return true;
+  }
+};
+
+// Longest window of a layer's active set over the bands of the viewport (see ActiveSet).
+inline uint32_t max_window(const BlobLayer& layer, const Resolved& r) {
+  uint32_t best = 0, base = 0, cursor = 0;
+  for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
+    const int32_t y1 = (by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1) - 1;
+    int32_t top, bottom;
+    while (cursor < layer.triangle_count) {
+      row_extent(layer, cursor, r.map, &top, &bottom);
+      if (top > y1) break;
+      ++cursor;
+    }
+    while (base < cursor) {
+      row_extent(layer, base, r.map, &top, &bottom);
+      if (bottom >= by && top <= bottom) break;
+      ++base;
+    }
+    best = cursor - base > best ? cursor - base : best;
+  }
+  return best;
+}
+
+}  // namespace
+}  // namespace tristream::core::detail

@@ -1,0 +1,149 @@
+#pragma once
+// The bilinear (linear per triangle) shader: values stepped by their exact per-pixel gradients.
+#include <stdint.h>
+
+#include "shader.h"
+#include "triangle_view.h"
+#include "tristream/config.h"
+#if TS_USE_SSE2
+#include <emmintrin.h>
+#endif
+#include "tristream/detail/arith.h"
+#include "tristream/detail/interpolate.h"
+#include "tristream/fixed_point.h"
+
+namespace tristream::core::detail {
+namespace {
+
+// Whether bilinear setup of scan-path triangles may use ShortRoundingDivider: |2n + d| 2d < 2^64 for
+// every numerator n. Such a triangle's box is below 16 pixels, so its extents (and |dx|, |dy| of its
+// edges) are below 17 * 2^S, the offsets of its vertices from the reference pixel below 18 * 2^S,
+// its doubled area d below (17 * 2^S)^2 (at most its box), and |e_ref| < 2 * 17 * 18 * 2^(2S) =
+// 612 * 2^(2S). With values below 2^16 the largest numerator, 2^8 sum v e_ref (dv/dx and dv/dy
+// have |A|, |B| < 17 * 2^(2S) instead), is below 2^24 * 3 * 612 * 2^(2S). S = 4: |2n + d| < 2^43.9
+// and 2d < 2^17.2.
+constexpr bool short_division_fits(int s) {
+  const uint64_t d = uint64_t(17 * 17) << (2 * s);
+  const uint64_t x = (uint64_t(3 * 612) << (25 + 2 * s)) + d;
+  return x < ~uint64_t(0) / (2 * d);
+}
+// Only where the high multiply is one instruction (a 128-bit type): elsewhere (Cortex-M) it saves
+// less than the flash of a second copy of the channel setup costs.
+#if defined(__SIZEOF_INT128__)
+constexpr bool bilinear_short_division = short_division_fits(config::subpixel_bits);
+#else
+constexpr bool bilinear_short_division = false;
+#endif
+static_assert(short_division_fits(4), "the default configuration divides scan-path numerators without correction");
+
+#if TS_USE_SSE2
+// Lane by lane, the low 32 bits of v * k (SSE2 has no 32-bit lane product: two 32 x 32 -> 64
+// products of the even and the odd lanes).
+inline __m128i mullo_lanes(__m128i v, uint32_t k) {
+  const __m128i kk = _mm_set1_epi32(int32_t(k));
+  const __m128i even = _mm_mul_epu32(v, kk), odd = _mm_mul_epu32(_mm_srli_epi64(v, 32), kk);
+  return _mm_unpacklo_epi32(_mm_shuffle_epi32(even, _MM_SHUFFLE(0, 0, 2, 0)), _mm_shuffle_epi32(odd, _MM_SHUFFLE(0, 0, 2, 0)));
+}
+#endif
+
+template <int Channels, typename Writer>
+struct BilinearShader {
+  const BlobLayer* layer;
+  int per_vertex;
+  int first_channel;
+  Writer writer;
+  int bpp;
+  BilinearChannel ch[Channels];
+  int32_t xr = 0, yr = 0;
+#if TS_USE_SSE2
+  // RGB to a writer that takes rounded values: the channels' values (rounding offset included),
+  // steps per column and per row in the writer's lanes.
+  static constexpr bool in_lanes = Channels == 3 && Writer::takes_rounded;
+  __m128i lane_ref{}, lane_dx{}, lane_dy{};
+#endif
+
+  void begin(const TriangleView& tv, const TriangleSetup& s) {
+    xr = s.xr;
+    yr = s.yr;
+    int32_t vals[3][Channels];
+    for (int k = 0; k < 3; ++k) vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
+    auto setup = [&](const auto& by_area2) {
+      for (int c = 0; c < Channels; ++c) {
+        const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
+        ch[c].setup(s.a, s.b, s.e_ref, by_area2, v3);
+      }
+    };
+    // The scan path's numerators are small enough for the division without correction.
+    if (bilinear_short_division && s.scan_path) {
+      setup(ShortRoundingDivider(s.area2));
+    } else {
+      setup(RoundingDivider(s.area2));
+    }
+#if TS_USE_SSE2
+    if constexpr (in_lanes) {
+      // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded in.
+      constexpr uint32_t half = 1u << (q16_16::frac_bits - 1);
+      lane_ref = Writer::lanes(uint32_t(ch[0].v_ref) + half, uint32_t(ch[1].v_ref) + half, uint32_t(ch[2].v_ref) + half,
+                               true);
+      lane_dx = Writer::lanes(uint32_t(ch[0].dvdx), uint32_t(ch[1].dvdx), uint32_t(ch[2].dvdx), false);
+      lane_dy = Writer::lanes(uint32_t(ch[0].dvdy), uint32_t(ch[1].dvdy), uint32_t(ch[2].dvdy), false);
+    }
+#endif
+  }
+  void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {
+#if TS_USE_SSE2
+    if constexpr (in_lanes) {
+      // BilinearChannel::at in lanes: the same sums modulo 2^32.
+      const __m128i v = _mm_add_epi32(lane_ref, _mm_add_epi32(mullo_lanes(lane_dx, uint32_t(x0 - xr)),
+                                                              mullo_lanes(lane_dy, uint32_t(y - yr))));
+      writer.put_span_lanes(writer.at(x0, y), x0, x1, y, v, lane_dx);
+      return;
+    }
+#endif
+    uint32_t v[Channels], dv[Channels];
+    for (int c = 0; c < Channels; ++c) {
+      v[c] = ch[c].at(x0, y, xr, yr);
+      dv[c] = ch[c].step();
+    }
+    auto* p = writer.at(x0, y);
+    if constexpr (Writer::takes_rounded) {
+      // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded into
+      // the start value (covered pixels hold values far from the int32 limits).
+      for (int c = 0; c < Channels; ++c) v[c] += 1u << (q16_16::frac_bits - 1);
+      // Values are linear along the span, so when both ends round into [0, 255] every pixel
+      // does: no clamping (the exact values of covered pixels are far from the int32 limits).
+      uint32_t out_of_range = 0;
+      for (int c = 0; c < Channels; ++c) {
+        const int32_t first = int32_t(v[c]) >> q16_16::frac_bits;
+        const int32_t last = int32_t(v[c] + dv[c] * uint32_t(x1 - x0)) >> q16_16::frac_bits;
+        out_of_range |= uint32_t(first) | uint32_t(last);
+      }
+      if (out_of_range <= 255) {
+        writer.put_span_in_range(p, x0, x1, y, v, dv);
+        return;
+      }
+      for (int32_t x = x0; x <= x1; ++x) {
+        int32_t r[Channels];
+        for (int c = 0; c < Channels; ++c) {
+          r[c] = int32_t(v[c]) >> q16_16::frac_bits;
+          v[c] += dv[c];
+        }
+        writer.put_rounded(p, x, y, r);
+        p += bpp;
+      }
+      return;
+    }
+    for (int32_t x = x0; x <= x1; ++x) {
+      int32_t q8[Channels];
+      for (int c = 0; c < Channels; ++c) {
+        q8[c] = int32_t(v[c]) >> (q16_16::frac_bits - q24_8::frac_bits);
+        v[c] += dv[c];
+      }
+      writer.put(p, x, y, q8);
+      p += bpp;
+    }
+  }
+};
+
+}  // namespace
+}  // namespace tristream::core::detail

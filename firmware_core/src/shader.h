@@ -1,0 +1,30 @@
+#pragma once
+// The per-triangle input of a shader, and the Shader interface.
+//
+// A Shader interpolates one triangle's values and hands each covered pixel to its Writer
+// (pixel_writers.h). The rasterizer (rasterize.h, scan_path.h) calls, per triangle and tile:
+//   void begin(const TriangleView& tv, const TriangleSetup& s)
+//       once, before the first span, only when the triangle covers a pixel of the tile;
+//   void span(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1)
+//       for each covered row y in order: the row's covered columns are [xs, xe] (whole row, also
+//       outside the tile), of which [x0, x1] (non-empty) are in the tile and are to be written.
+// The values of a pixel must not depend on the tile: a shader may use xs and xe (the whole row)
+// to choose how it steps, never x0 and x1. Shaders: BilinearShader, ZienkiewiczShader.
+#include <stdint.h>
+
+namespace tristream::core::detail {
+namespace {
+
+// What a shader's begin needs besides the vertices: the edge coefficients (|a|, |b| < 2^20, see
+// detail/edge.h), the exact edge values at the reference pixel (xr, yr) (vertex 0 floored), and the
+// doubled area.
+struct TriangleSetup {
+  int32_t a[4], b[4];  // a[3], b[3] unused (whole vectors for SSE2)
+  int64_t e_ref[3];
+  int32_t xr, yr;
+  int64_t area2;
+  bool scan_path;  // a triangle of the scan path (small: see SmallEdges)
+};
+
+}  // namespace
+}  // namespace tristream::core::detail

@@ -1,0 +1,118 @@
+#pragma once
+// The tile cull: which live triangles meet a tile's columns, from the raw vertex x alone.
+#include <stddef.h>
+#include <stdint.h>
+
+#include "output_mapping.h"
+#include "tristream/blob.h"
+#include "tristream/config.h"
+#if TS_USE_SSE2
+#include <emmintrin.h>
+#endif
+#include "tristream/detail/arith.h"
+#include "tristream/detail/bytes.h"
+#include "tristream/tile.h"
+
+namespace tristream::core::detail {
+namespace {
+
+// The columns [rect.x0, rect.x1) of a tile as thresholds on raw (domain, unmapped) vertex x:
+// a triangle's columns [ceil(min x'), floor(max x')] (x' mapped) miss the tile exactly when
+// max x < lo or min x >= hi, because the mapping is monotone: floor(m / 2^S) < x0 iff m < x0 2^S,
+// and ceil(m / 2^S) >= x1 iff m >= (x1 - 1) 2^S + 1. One cheap test per live triangle and tile.
+struct ColumnWindow {
+  int32_t lo, hi;
+
+  // Smallest raw v in [0, 65536] with map.x(v) >= target (65536 when there is none).
+  static int32_t first_at_least(const Mapping& map, int32_t target) {
+    if (map.identity) return target < 0 ? 0 : (target > 65536 ? 65536 : target);
+    int32_t lo = 0, hi = 65536;
+    while (lo < hi) {
+      const int32_t mid = lo + (hi - lo) / 2;
+      if (map.x(mid) >= target) {
+        hi = mid;
+      } else {
+        lo = mid + 1;
+      }
+    }
+    return lo;
+  }
+  ColumnWindow(const Mapping& map, const Rect& rect)
+      : lo(first_at_least(map, rect.x0 * (1 << config::subpixel_bits))),
+        hi(first_at_least(map, (rect.x1 - 1) * (1 << config::subpixel_bits) + 1)) {}
+
+  // The triangles t + i (bit i of live) whose columns meet the tile, as bits. A loop without
+  // branches on the data and without calls (so its pointers and bounds stay in registers): the
+  // test is one sign, not (max < lo) | (min >= hi), which compilers turn into two branches, the
+  // first taken for a share of the triangles that grows along the band (unpredictable in the
+  // middle tiles).
+  uint32_t meeting(const BlobLayer& layer, uint32_t t, uint32_t live, uint32_t span) const {
+    const uint8_t* const triangles = layer.triangles + size_t(t) * blob_triangle_size;
+    const uint8_t* const positions = layer.positions;
+    const int32_t low = lo, high = hi - 1;
+    uint32_t hits = 0;
+#if TS_USE_SSE2
+    if (span == 32) {
+      // Bytes of the word with two live triangles or more: all eight triangles in 16-bit lanes
+      // (they are in the window, so their records are valid), the other bytes one by one below.
+      uint32_t rest = 0;
+      for (int g = 0; g < 4; ++g) {
+        const uint32_t byte = (live >> (8 * g)) & 0xFFu;
+        if (byte & (byte - 1)) {
+          hits |= (meeting8(triangles + size_t(8 * g) * blob_triangle_size, positions) & byte) << (8 * g);
+        } else {
+          rest |= byte << (8 * g);
+        }
+      }
+      live = rest;
+    }
+#else
+    (void)span;
+#endif
+    for (; live; live &= live - 1) {
+      const uint32_t i = uint32_t(__builtin_ctz(live));
+      const uint8_t* p = triangles + size_t(i) * blob_triangle_size;
+      const int32_t x0 = load_u16(positions + 4 * size_t(load_u16(p)));
+      const int32_t x1 = load_u16(positions + 4 * size_t(load_u16(p + 2)));
+      const int32_t x2 = load_u16(positions + 4 * size_t(load_u16(p + 4)));
+      const int32_t outside = (max3(x0, x1, x2) - low) | (high - min3(x0, x1, x2));  // < 0: misses
+      hits |= uint32_t(outside >= 0) << i;
+    }
+    return hits;
+  }
+#if TS_USE_SSE2
+  // Bit j: triangle j of the eight records at p meets the columns. Coordinates (16 bits) and
+  // bounds are compared as signed 16-bit lanes after flipping the top bit (the order of the
+  // unsigned values); the bounds are clamped to 16 bits only in the direction that keeps more
+  // triangles (a triangle kept in error is clipped away exactly by rasterize, one missed would be
+  // wrong): min(lo, 65535) for max < lo, max(hi - 1, 0) for min > hi - 1.
+  uint32_t meeting8(const uint8_t* p, const uint8_t* positions) const {
+    // As the 16-bit lane it goes to (the same bits).
+    auto x = [&](int j, int k) {
+      return int16_t(load_u16(positions + 4 * size_t(load_u16(p + j * blob_triangle_size + 2 * k))));
+    };
+    const __m128i top_bit = _mm_set1_epi16(int16_t(0x8000));
+    __m128i v[3];
+    for (int k = 0; k < 3; ++k) {
+      __m128i w = _mm_cvtsi32_si128(x(0, k));
+      w = _mm_insert_epi16(w, x(1, k), 1);
+      w = _mm_insert_epi16(w, x(2, k), 2);
+      w = _mm_insert_epi16(w, x(3, k), 3);
+      w = _mm_insert_epi16(w, x(4, k), 4);
+      w = _mm_insert_epi16(w, x(5, k), 5);
+      w = _mm_insert_epi16(w, x(6, k), 6);
+      w = _mm_insert_epi16(w, x(7, k), 7);
+      v[k] = _mm_xor_si128(w, top_bit);
+    }
+    const __m128i mn = _mm_min_epi16(_mm_min_epi16(v[0], v[1]), v[2]);
+    const __m128i mx = _mm_max_epi16(_mm_max_epi16(v[0], v[1]), v[2]);
+    const int32_t low = lo < 65535 ? lo : 65535, high = hi - 1 > 0 ? hi - 1 : 0;
+    const __m128i outside = _mm_or_si128(_mm_cmpgt_epi16(_mm_set1_epi16(int16_t(low ^ 0x8000)), mx),
+                                         _mm_cmpgt_epi16(mn, _mm_set1_epi16(int16_t(high ^ 0x8000))));
+    return ~uint32_t(_mm_movemask_epi8(_mm_packs_epi16(outside, outside))) & 0xFFu;
+  }
+#endif
+};
+
+}  // namespace
+}  // namespace tristream::core::detail

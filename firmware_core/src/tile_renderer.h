@@ -1,0 +1,143 @@
+#pragma once
+// One tile of a frame: the background, then each layer's live triangles that meet the tile with the
+// shader of the blob's method and the writer of the pixel format; the tile function per format.
+#include <stdint.h>
+#include <string.h>
+
+#include "active_set.h"
+#include "bilinear_shader.h"
+#include "channel_scratch.h"
+#include "output_mapping.h"
+#include "pixel_writers.h"
+#include "rasterize.h"
+#include "tile_cull.h"
+#include "triangle_view.h"
+#include "workspace_layout.h"
+#include "zienkiewicz_shader.h"
+#include "tristream/blob.h"
+#include "tristream/config.h"
+#include "tristream/detail/pixel_writer.h"
+#include "tristream/render.h"
+
+namespace tristream::core::detail {
+namespace {
+
+// Draws the live triangles of a layer that meet the tile `rect`. A triangle whose last pixel column
+// is in this tile or left of it (nothing for the band's later tiles) and whose last row is in this
+// band (the band advance would drop it) leaves the active set now: the later tiles of the band then
+// skip it without the column test. The pixels are the same (those tiles would have culled it).
+template <typename Shader>
+void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
+  const ColumnWindow columns(map, rect);
+  const bool later_tiles = rect.x1 < set.view_x1;
+  set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span, uint32_t p) {
+    uint32_t done = 0;
+    for (uint32_t hits = columns.meeting(*set.layer, t, live, span); hits; hits &= hits - 1) {
+      const uint32_t i = uint32_t(__builtin_ctz(hits));
+      TriangleView tv;
+      load_triangle(*set.layer, t + i, map, &tv);
+      done |= uint32_t(rasterize(tv, rect, shader)) << i;
+    }
+    if (later_tiles) set.words[p / 32] &= ~(done << (p % 32));
+  });
+}
+
+template <int Channels, typename Writer>
+void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& list, const Mapping& map,
+               const Rect& rect, const Writer& writer, int step) {
+  const BlobLayer* layer = &blob.layers[layer_index];
+  // Only the methods compiled in (resolve rejects the others before any tile is drawn).
+  if (blob.method == Method::bilinear) {
+    if constexpr (config::methods & 1) {
+      BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
+      draw_layer(list, map, rect, s);
+    }
+  } else {
+    if constexpr (config::methods & 2) {
+      ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, {}, 0};
+      draw_layer(list, map, rect, s);
+    }
+  }
+}
+
+template <PixelFormat F>
+void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const RenderParams& p, bool grey) {
+  // Without dithering every row is the same: write the first, copy it to the others.
+  const bool same_rows = !(p.dither && (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be));
+  for (int32_t y = rect.y0; y < rect.y1; ++y) {
+    uint8_t* row = base + (y - rect.y0) * stride;
+    if (same_rows && y > rect.y0) {
+      memcpy(row, base, size_t(rect.width()) * bytes_per_pixel(F));
+      continue;
+    }
+    for (int32_t x = rect.x0; x < rect.x1; ++x) {
+      uint8_t* px = row + (x - rect.x0) * bytes_per_pixel(F);
+      if constexpr (F == PixelFormat::coverage8) {
+        px[0] = 0;
+      } else if (grey) {
+        store_grey<F>(px, p.background[0], x, y, p.dither);
+      } else {
+        store_rgb<F>(px, p.background[0], p.background[1], p.background[2], x, y, p.dither);
+      }
+    }
+  }
+}
+
+template <PixelFormat F>
+void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, ActiveSet* sets, const Rect& rect,
+                 uint8_t* base, int32_t stride, int16_t* scratch) {
+  const bool grey = blob.space == ColorSpace::grey;
+  fill_background<F>(base, stride, rect, p, grey);
+  constexpr int bpp = bytes_per_pixel(F);
+  if (F == PixelFormat::coverage8 || !layered(blob)) {
+    if (F == PixelFormat::coverage8 && layered(blob)) {
+      const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
+      for (int l = 0; l < blob.layer_count; ++l) draw_with<1>(blob, l, 0, sets[l], map, rect, w, bpp);
+    } else if (grey) {
+      const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
+      draw_with<1>(blob, 0, 0, sets[0], map, rect, w, bpp);
+    } else if (blob.space == ColorSpace::ycbcr) {
+      const DirectWriter<F, 3, true> w{base, stride, rect, p.dither};
+      draw_with<3>(blob, 0, 0, sets[0], map, rect, w, bpp);
+    } else {
+      const DirectWriter<F, 3, false> w{base, stride, rect, p.dither};
+      draw_with<3>(blob, 0, 0, sets[0], map, rect, w, bpp);
+    }
+    return;
+  }
+  const int32_t n = rect.width() * rect.height() * 3;
+  for (int32_t i = 0; i < n; ++i) scratch[i] = scratch_empty;
+  for (int l = 0; l < blob.layer_count; ++l) {
+    const ScratchWriter w{scratch, rect.width(), rect, l};
+    draw_with<1>(blob, l, 0, sets[l], map, rect, w, 3);
+  }
+  convert_scratch<F>(scratch, base, stride, rect, p, blob.space == ColorSpace::ycbcr);
+}
+
+using TileRenderer = void (*)(const Blob&, const RenderParams&, const Mapping&, ActiveSet*, const Rect&, uint8_t*,
+                              int32_t, int16_t*);
+
+template <PixelFormat F>
+constexpr TileRenderer compiled_renderer() {
+  if constexpr (config::pixel_formats >> int(F) & 1) {
+    return render_tile<F>;
+  } else {
+    return nullptr;
+  }
+}
+
+// The tile function of a format; null for a format not compiled in (resolve rejects those).
+inline TileRenderer tile_renderer(PixelFormat f) {
+  switch (f) {
+    case PixelFormat::l8: return compiled_renderer<PixelFormat::l8>();
+    case PixelFormat::rgb888: return compiled_renderer<PixelFormat::rgb888>();
+    case PixelFormat::rgb565_le: return compiled_renderer<PixelFormat::rgb565_le>();
+    case PixelFormat::rgb565_be: return compiled_renderer<PixelFormat::rgb565_be>();
+    case PixelFormat::xrgb8888: return compiled_renderer<PixelFormat::xrgb8888>();
+    case PixelFormat::coverage8: return compiled_renderer<PixelFormat::coverage8>();
+  }
+  return nullptr;
+}
+
+}  // namespace
+}  // namespace tristream::core::detail

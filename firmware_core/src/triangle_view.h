@@ -1,0 +1,52 @@
+#pragma once
+// Reading triangles and vertex values from a validated blob layer: a triangle's vertices in
+// output positions, its rows, and the values of a vertex.
+#include <stddef.h>
+#include <stdint.h>
+
+#include "output_mapping.h"
+#include "tristream/blob.h"
+#include "tristream/detail/arith.h"
+#include "tristream/detail/bytes.h"
+#include "tristream/fixed_point.h"
+
+namespace tristream::core::detail {
+namespace {
+
+// A triangle of a layer with its vertices in output position_fx.
+struct TriangleView {
+  uint16_t v[3];
+  uint16_t flags;
+  int32_t x[4], y[4];  // x[3], y[3]: 0 (whole vectors for SSE2)
+};
+
+inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map, TriangleView* tv) {
+  const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
+  for (int k = 0; k < 3; ++k) {
+    tv->v[k] = load_u16(p + 2 * k);
+    const uint8_t* pos = layer.positions + 4 * size_t(tv->v[k]);
+    tv->x[k] = map.x(load_u16(pos));
+    tv->y[k] = map.y(load_u16(pos + 2));
+  }
+  tv->flags = load_u16(p + 6);
+  tv->x[3] = tv->y[3] = 0;
+}
+
+// First and last pixel row whose sample points may lie in the triangle.
+inline void row_extent(const BlobLayer& layer, uint32_t t, const Mapping& map, int32_t* top, int32_t* bottom) {
+  const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
+  const int32_t y0 = load_u16(layer.positions + 4 * size_t(load_u16(p)) + 2);
+  const int32_t y1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)) + 2);
+  const int32_t y2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)) + 2);
+  *top = position_fx::from_raw(map.y(min3(y0, y1, y2))).ceil_to_int();
+  *bottom = position_fx::from_raw(map.y(max3(y0, y1, y2))).floor_to_int();
+}
+
+// Values of vertex v for `channels` channels starting at `first` (q8_8).
+inline void vertex_values(const BlobLayer& layer, int per_vertex, int first, int channels, uint16_t v, int32_t* out) {
+  const uint8_t* p = layer.values + 2 * (size_t(v) * per_vertex + first);
+  for (int c = 0; c < channels; ++c) out[c] = load_u16(p + 2 * c);
+}
+
+}  // namespace
+}  // namespace tristream::core::detail

@@ -1,0 +1,169 @@
+#pragma once
+// The Zienkiewicz (cubic) shader: values from integer barycentrics per pixel, or forward
+// differenced along long rows of large triangles.
+#include <stddef.h>
+#include <stdint.h>
+
+#include "shader.h"
+#include "triangle_view.h"
+#include "tristream/config.h"
+#if TS_USE_SSE2
+#include <emmintrin.h>
+#endif
+#include "tristream/detail/arith.h"
+#include "tristream/detail/bytes.h"
+#include "tristream/detail/interpolate.h"
+#include "tristream/fixed_point.h"
+
+namespace tristream::core::detail {
+namespace {
+
+template <int Channels, typename Writer>
+struct ZienkiewiczShader {
+  const BlobLayer* layer;
+  int per_vertex;
+  int first_channel;
+  Writer writer;
+  int bpp;
+  ZienkiewiczChannel ch[Channels];
+  BarycentricStepper steps;
+  int fd_state = 0;  // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
+
+  void begin(const TriangleView& tv, const TriangleSetup& s) {
+    const int64_t a2 = s.area2;
+    const RoundingDivider by_area2(a2);
+    steps.setup(s.a, s.b, s.e_ref, by_area2, s.xr, s.yr);
+    int32_t dx[3], dy[3];
+    const uint8_t* values[3];
+    const uint8_t* gradients[3];
+    for (int k = 0; k < 3; ++k) {
+      const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
+      const uint8_t* pn = layer->positions + 4 * size_t(tv.v[(k + 1) % 3]);
+      dx[k] = int32_t(load_u16(pn)) - int32_t(load_u16(pk));
+      dy[k] = int32_t(load_u16(pn + 2)) - int32_t(load_u16(pk + 2));
+      const size_t first = size_t(tv.v[k]) * per_vertex + first_channel;
+      values[k] = layer->values + 2 * first;
+      gradients[k] = layer->gradients + 8 * first;
+    }
+    fd_state = a2 >= zienkiewicz_fd_min_area2 ? 0 : -1;
+    // Each channel's values and gradients loaded where its setup uses them (no staging arrays of
+    // all channels, which kept the compiler spilling registers to the stack).
+    for (int c = 0; c < Channels; ++c) {
+      const int32_t v3[3] = {load_u16(values[0] + 2 * c), load_u16(values[1] + 2 * c), load_u16(values[2] + 2 * c)};
+      const int32_t g6[6] = {load_i32(gradients[0] + 8 * c), load_i32(gradients[0] + 8 * c + 4),
+                             load_i32(gradients[1] + 8 * c), load_i32(gradients[1] + 8 * c + 4),
+                             load_i32(gradients[2] + 8 * c), load_i32(gradients[2] + 8 * c + 4)};
+      ch[c].setup(dx, dy, v3, g6);
+    }
+  }
+  // Forward differencing set up on the first row that uses it; false for a small triangle or one
+  // outside the bit budget (then every row is evaluated per pixel).
+  __attribute__((noinline)) bool rows_ready_slow() {
+    fd_state = 1;
+    for (int c = 0; c < Channels; ++c)
+      if (!ch[c].setup_rows(int32_t(steps.dadx), int32_t(steps.dbdx))) fd_state = -1;
+    return fd_state > 0;
+  }
+  bool rows_ready() { return fd_state == 0 ? rows_ready_slow() : fd_state > 0; }
+  // Row y of the triangle covers [xs, xe]; pixels x0..x1 of it are in the tile. Rows of at least
+  // zienkiewicz_fd_min_length pixels (of large enough triangles) are forward-differenced, others
+  // evaluated per pixel: the choice depends on the whole row, not on the tile. Out of line (both
+  // loops): their code generation then does not depend on the rest of the tile function (inlined,
+  // changes elsewhere in it swung its speed by 20%).
+  __attribute__((noinline)) void span(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
+    uint32_t a, b;
+    if (xe - xs + 1 >= zienkiewicz_fd_min_length && rows_ready()) {
+      steps.at(xs, y, &a, &b);
+      forward_differenced(y, xs, x0, x1, a, b);
+      return;
+    }
+    // The weights at x0 directly: the same sums modulo 2^32 as at xs plus (x0 - xs) steps.
+    steps.at(x0, y, &a, &b);
+    constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
+    auto* p = writer.at(x0, y);
+    for (int32_t x = x0; x <= x1; ++x) {
+      const int64_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;
+      if constexpr (Writer::takes_rounded) {
+        // Rounded and clamped in 64 bits (as to_u8 of the int32-clamped value); the writer's
+        // clamp then folds away, and values are rarely out of range.
+        int32_t r[Channels];
+        for (int c = 0; c < Channels; ++c) {
+          int64_t v = (ch[c].eval_wide(a15, b15) + (1 << (q24_8::frac_bits - 1))) >> q24_8::frac_bits;
+          if (uint64_t(v) > 255) v = v < 0 ? 0 : 255;
+          r[c] = int32_t(v);
+        }
+        writer.put_rounded(p, x, y, r);
+      } else {
+        int32_t q8[Channels];
+        for (int c = 0; c < Channels; ++c) q8[c] = ch[c].eval(a15, b15);
+        writer.put(p, x, y, q8);
+      }
+      p += bpp;
+      a += steps.dadx;
+      b += steps.dbdx;
+    }
+  }
+  // Pixels x0..x1 of row y by forward differencing from the weights a, b at xs.
+  __attribute__((noinline)) void forward_differenced(int32_t y, int32_t xs, int32_t x0, int32_t x1, uint32_t a,
+                                                     uint32_t b) {
+    constexpr int vf = ZienkiewiczChannel::value_frac_bits;
+    auto* p = writer.at(x0, y);
+    const int step = bpp;  // a local: the pixel stores could alias the member
+#if TS_USE_SSE2
+    if constexpr (Writer::takes_rounded && Channels == 3) {
+      // The three channels' values and differences in 64-bit lanes (channels 0, 1 in one vector,
+      // 2 in another): six additions a pixel, the rounded values are the high words.
+      const int32_t last = x1 - xs;
+      zienkiewicz_row_chunks<3>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, last, uint64_t(1) << (vf - 1),
+                                [&](int32_t n, int32_t end, const CubicSteps* s) {
+                                  auto pair = [](uint64_t c0, uint64_t c1) {
+                                    return _mm_set_epi64x(int64_t(c1), int64_t(c0));
+                                  };
+                                  __m128i v01 = pair(s[0].v, s[1].v), v2 = pair(s[2].v, 0);
+                                  __m128i d01 = pair(s[0].d1, s[1].d1), d2 = pair(s[2].d1, 0);
+                                  __m128i e01 = pair(s[0].d2, s[1].d2), e2 = pair(s[2].d2, 0);
+                                  const __m128i f01 = pair(s[0].d3, s[1].d3), f2 = pair(s[2].d3, 0);
+                                  for (; n <= end; ++n) {
+                                    const __m128i q = _mm_unpacklo_epi64(_mm_shuffle_epi32(v01, _MM_SHUFFLE(3, 1, 3, 1)),
+                                                                         _mm_shuffle_epi32(v2, _MM_SHUFFLE(1, 1, 1, 1)));
+                                    writer.put_lanes(p, Writer::ordered(q), xs + n, y, n != last);
+                                    p += step;
+                                    v01 = _mm_add_epi64(v01, d01), v2 = _mm_add_epi64(v2, d2);
+                                    d01 = _mm_add_epi64(d01, e01), d2 = _mm_add_epi64(d2, e2);
+                                    e01 = _mm_add_epi64(e01, f01), e2 = _mm_add_epi64(e2, f2);
+                                  }
+                                });
+      return;
+    }
+#endif
+    if constexpr (Writer::takes_rounded) {
+      // Rounding to nearest folded into the values (exact: the differences are unchanged).
+      zienkiewicz_row<Channels>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),
+                                [&](int32_t n, const CubicSteps* s) {
+                                  int32_t r[Channels];
+                                  for (int c = 0; c < Channels; ++c) {
+                                    int32_t v = int32_t(int64_t(s[c].v) >> vf);
+                                    // Clamped here, rarely needed: the writer's clamp then folds away.
+                                    if (uint32_t(v) > 255) v = v < 0 ? 0 : 255;
+                                    r[c] = v;
+                                  }
+                                  writer.put_rounded(p, xs + n, y, r);
+                                  p += step;
+                                });
+    } else {
+      zienkiewicz_row<Channels>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, 0,
+                                [&](int32_t n, const CubicSteps* s) {
+                                  int32_t q8[Channels];
+                                  for (int c = 0; c < Channels; ++c) {
+                                    const int64_t v = int64_t(s[c].v) >> (vf - q24_8::frac_bits);
+                                    q8[c] = int32_t(v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : v));
+                                  }
+                                  writer.put(p, xs + n, y, q8);
+                                  p += step;
+                                });
+    }
+  }
+};
+
+}  // namespace
+}  // namespace tristream::core::detail
