@@ -27,7 +27,8 @@ struct ActiveSet {
   int32_t view_x1 = 0;  // the viewport's right end: tiles ending there are the last of their band
 
   // Bit positions: pos(t) = t mod capacity, stepped with next() to avoid a division per test.
-  uint32_t pos(uint32_t t) const { return t % capacity; }
+  // A capacity of 0 (a workspace without room for a bitmap) is valid for a window of 0.
+  uint32_t pos(uint32_t t) const { return capacity ? t % capacity : 0; }
   uint32_t next(uint32_t p) const { return p + 1 == capacity ? 0 : p + 1; }
   bool test_at(uint32_t p) const { return (words[p / 32] >> (p % 32)) & 1u; }
   void set_at(uint32_t p) { words[p / 32] |= 1u << (p % 32); }

@@ -26,7 +26,8 @@ const char* status_text(Status s) {
     case Status::bad_triangle: return "triangle with non-positive area or unknown flags";
     case Status::unsorted: return "triangles not sorted by top row";
     case Status::bad_params: return "invalid render parameters";
-    case Status::buffer_too_small: return "buffer too small";
+    case Status::tile_buffer_too_small: return "tile buffer too small (see tile_buffer_size)";
+    case Status::workspace_too_small: return "workspace too small (see workspace_size)";
     case Status::not_compiled: return "pixel format or method not compiled into this core (config.h)";
   }
   return "unknown status";

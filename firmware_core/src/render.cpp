@@ -46,7 +46,7 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
   if (s != Status::ok) return s;
   const int bpp = bytes_per_pixel(r.format);
   const int32_t stride = r.tile_w * bpp;
-  if (tile_buffer_bytes < size_t(stride) * r.tile_h) return Status::buffer_too_small;
+  if (tile_buffer_bytes < size_t(stride) * r.tile_h) return Status::tile_buffer_too_small;
 
   // Workspace: [alignment padding][channel scratch][active-set bitmaps, one equal share per layer].
   uint8_t* ws = static_cast<uint8_t*>(workspace);
@@ -54,7 +54,7 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
                               detail::workspace_alignment
                         : 0;
   const size_t scratch = detail::scratch_bytes(blob, r, r.format);
-  if (workspace_bytes < pad + scratch) return Status::buffer_too_small;
+  if (workspace_bytes < pad + scratch) return Status::workspace_too_small;
   int16_t* scratch_ptr = scratch ? reinterpret_cast<int16_t*>(ws + pad) : nullptr;
   const size_t set_bytes = (workspace_bytes - pad - scratch) / blob.layer_count / 4 * 4;
   detail::ActiveSet sets[3];
@@ -65,12 +65,17 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
     sets[l].view_x1 = r.view.x1;
     if (sets[l].capacity) sets[l].reset();
   }
+  // Every buffer is checked before the first tile goes to the sink (no partial frame): a bitmap
+  // of all its triangles always holds a layer's window, else the window is measured.
+  for (int l = 0; l < blob.layer_count; ++l)
+    if (sets[l].capacity < blob.layers[l].triangle_count && sets[l].capacity < detail::max_window(blob.layers[l], r))
+      return Status::workspace_too_small;
   const detail::TileRenderer draw = detail::tile_renderer(r.format);
   uint8_t* base = static_cast<uint8_t*>(tile_buffer);
   for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
     const int32_t by1 = by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1;
     for (int l = 0; l < blob.layer_count; ++l)
-      if (!sets[l].advance(r.map, by, by1 - 1)) return Status::buffer_too_small;
+      if (!sets[l].advance(r.map, by, by1 - 1)) return Status::workspace_too_small;  // excluded above
     for (int32_t bx = r.view.x0; bx < r.view.x1; bx += r.tile_w) {
       const int32_t bx1 = bx + r.tile_w < r.view.x1 ? bx + r.tile_w : r.view.x1;
       Tile tile;

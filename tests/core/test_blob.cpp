@@ -179,8 +179,8 @@ TEST_CASE("render parameters and buffers are checked") {
   CHECK(tile == 8 * 8 * 3);
   std::vector<std::uint8_t> tb(tile), ws(work);
   auto sink = [](void*, const core::Tile*) {};
-  CHECK(core::render(blob, p, tb.data(), tile - 1, ws.data(), ws.size(), sink, nullptr) == core::Status::buffer_too_small);
-  CHECK(core::render(blob, p, tb.data(), tile, ws.data(), 8, sink, nullptr) == core::Status::buffer_too_small);
+  CHECK(core::render(blob, p, tb.data(), tile - 1, ws.data(), ws.size(), sink, nullptr) == core::Status::tile_buffer_too_small);
+  CHECK(core::render(blob, p, tb.data(), tile, ws.data(), 8, sink, nullptr) == core::Status::workspace_too_small);
   CHECK(core::render(blob, p, tb.data(), tile, ws.data(), ws.size(), nullptr, nullptr) == core::Status::null_argument);
   core::RenderParams bad = p;
   bad.viewport = core::Rect{0, 0, 41, 30};

@@ -5,6 +5,7 @@
 
 #include "bench_support.h"
 #include "core_support.h"
+#include "io/tri_file.h"
 
 using namespace tristream;
 
@@ -41,6 +42,42 @@ TEST_CASE("one byte less workspace than reported is refused, never overrun") {
     // Aligned start: the alignment slack is then unused, so the last 8 bytes are spare; beyond
     // them the bitmap no longer fits.
     CHECK(core::render(b, p, tiles.data(), tb, work.data(), ws, sink, nullptr) == core::Status::ok);
-    CHECK(core::render(b, p, tiles.data(), tb, work.data(), ws - 12, sink, nullptr) == core::Status::buffer_too_small);
+    CHECK(core::render(b, p, tiles.data(), tb, work.data(), ws - 12, sink, nullptr) == core::Status::workspace_too_small);
+  }
+}
+
+// Issue 17, items 1 and 2: every workspace size short of the need, down to none at all, is refused
+// with workspace_too_small before any tile reaches the sink (no division by a zero capacity, no
+// partial frame), for a single-mesh and a layered blob; a tile buffer one byte short likewise.
+TEST_CASE("a buffer too small for the frame is refused before the first tile") {
+  const Triangulation single = testing::bench_scene(4000);
+  const Triangulation layers = read_tri_file(TRISTREAM_SOURCE_DIR "/data/demo/kodim23.ycbcr-layers.tri");
+  for (const Triangulation* tri : {&single, &layers}) {
+    const auto blob = pack_blob(*tri, core::Method::bilinear);
+    core::Blob b;
+    REQUIRE(core::open_blob(blob.data(), blob.size(), &b) == core::Status::ok);
+    core::RenderParams p;
+    p.tile_width = p.tile_height = 32;
+    p.format = core::PixelFormat::rgb565_be;
+    std::size_t tb = 0, ws = 0;
+    REQUIRE(core::tile_buffer_size(b, p, &tb) == core::Status::ok);
+    REQUIRE(core::workspace_size(b, p, &ws) == core::Status::ok);
+    std::vector<std::uint8_t> tiles(tb);
+    // 8-aligned storage, so the alignment padding is 0 and a size below ws - 8 is really short.
+    std::vector<std::uint64_t> work(ws / 8 + 1);
+    int delivered = 0;
+    auto sink = [](void* c, const core::Tile*) { ++*static_cast<int*>(c); };
+    INFO("layers " << b.layer_count << ", workspace " << ws);
+    CHECK(core::render(b, p, tiles.data(), tb, nullptr, 0, sink, &delivered) == core::Status::workspace_too_small);
+    for (std::size_t n = 0; n + 8 < ws; ++n) {
+      const core::Status s = core::render(b, p, tiles.data(), tb, work.data(), n, sink, &delivered);
+      if (s != core::Status::workspace_too_small) FAIL_CHECK("workspace of " << n << " bytes: status " << int(s));
+    }
+    CHECK(delivered == 0);
+    CHECK(core::render(b, p, tiles.data(), tb - 1, work.data(), ws, sink, &delivered) ==
+          core::Status::tile_buffer_too_small);
+    CHECK(delivered == 0);
+    CHECK(core::render(b, p, tiles.data(), tb, work.data(), ws, sink, &delivered) == core::Status::ok);
+    CHECK(delivered > 0);
   }
 }

@@ -20,8 +20,9 @@ enum class [[nodiscard]] Status : uint8_t {
   bad_triangle,         // a triangle with zero or negative area, or unknown flag bits
   unsorted,             // triangles not sorted by their top row
   bad_params,           // render parameters invalid (size, viewport, tile, format)
-  buffer_too_small,     // tile buffer or workspace smaller than required
+  tile_buffer_too_small,  // tile buffer smaller than tile_buffer_size() says
   not_compiled,         // pixel format or method left out of this build (TS_PIXEL_FORMATS, TS_METHODS)
+  workspace_too_small,  // workspace smaller than workspace_size() says (checked before the first tile)
 };
 
 // A short English description, for logs.
