@@ -94,7 +94,7 @@ struct ActiveSet {
 };
 
 // Longest window of a layer's active set over the bands of the viewport (see ActiveSet).
-inline uint32_t max_window(const BlobLayer& layer, const Resolved& r) {
+inline uint32_t max_window(const BlobLayer& layer, const FramePlan& r) {
   uint32_t best = 0, base = 0, cursor = 0;
   for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
     const int32_t y1 = (by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1) - 1;

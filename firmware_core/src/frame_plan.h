@@ -11,7 +11,7 @@
 namespace tristream::core::detail {
 namespace {
 
-struct Resolved {
+struct FramePlan {
   int32_t out_w = 0, out_h = 0;
   Rect view;
   int32_t tile_w = 0, tile_h = 0;
@@ -19,7 +19,7 @@ struct Resolved {
   Mapping map;
 };
 
-inline Status resolve(const Blob& blob, const RenderParams& p, Resolved* r) {
+inline Status plan_frame(const Blob& blob, const RenderParams& p, FramePlan* r) {
   if (!blob.bytes) return Status::null_argument;
   r->out_w = p.output_width ? p.output_width : blob.width;
   r->out_h = p.output_height ? p.output_height : blob.height;

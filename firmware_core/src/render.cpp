@@ -16,8 +16,8 @@ namespace tristream::core {
 
 Status tile_buffer_size(const Blob& blob, const RenderParams& params, size_t* bytes) {
   if (!bytes) return Status::null_argument;
-  detail::Resolved r;
-  Status s = detail::resolve(blob, params, &r);
+  detail::FramePlan r;
+  Status s = detail::plan_frame(blob, params, &r);
   if (s != Status::ok) return s;
   *bytes = size_t(r.tile_w) * r.tile_h * bytes_per_pixel(r.format);
   return Status::ok;
@@ -25,8 +25,8 @@ Status tile_buffer_size(const Blob& blob, const RenderParams& params, size_t* by
 
 Status workspace_size(const Blob& blob, const RenderParams& params, size_t* bytes) {
   if (!bytes) return Status::null_argument;
-  detail::Resolved r;
-  Status s = detail::resolve(blob, params, &r);
+  detail::FramePlan r;
+  Status s = detail::plan_frame(blob, params, &r);
   if (s != Status::ok) return s;
   uint32_t longest = 0;
   for (int l = 0; l < blob.layer_count; ++l) {
@@ -41,8 +41,8 @@ Status workspace_size(const Blob& blob, const RenderParams& params, size_t* byte
 Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,
               void* workspace, size_t workspace_bytes, TileSink sink, void* context) {
   if (!tile_buffer || !sink || (!workspace && workspace_bytes)) return Status::null_argument;
-  detail::Resolved r;
-  Status s = detail::resolve(blob, params, &r);
+  detail::FramePlan r;
+  Status s = detail::plan_frame(blob, params, &r);
   if (s != Status::ok) return s;
   const int bpp = bytes_per_pixel(r.format);
   const int32_t stride = r.tile_w * bpp;

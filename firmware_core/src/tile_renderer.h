@@ -46,7 +46,7 @@ template <int Channels, typename Writer>
 void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& list, const Mapping& map,
                const Rect& rect, const Writer& writer, int step) {
   const BlobLayer* layer = &blob.layers[layer_index];
-  // Only the methods compiled in (resolve rejects the others before any tile is drawn).
+  // Only the methods compiled in (plan_frame rejects the others before any tile is drawn).
   if (blob.method == Method::bilinear) {
     if constexpr (config::methods & 1) {
       BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
@@ -126,7 +126,7 @@ constexpr TileRenderer compiled_renderer() {
   }
 }
 
-// The tile function of a format; null for a format not compiled in (resolve rejects those).
+// The tile function of a format; null for a format not compiled in (plan_frame rejects those).
 inline TileRenderer tile_renderer(PixelFormat f) {
   switch (f) {
     case PixelFormat::l8: return compiled_renderer<PixelFormat::l8>();

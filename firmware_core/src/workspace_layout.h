@@ -17,7 +17,7 @@ inline size_t bitmap_bytes(uint32_t bits) { return size_t((bits + 31) / 32) * 4;
 
 inline bool layered(const Blob& blob) { return blob.layer_count > 1; }
 
-inline size_t scratch_bytes(const Blob& blob, const Resolved& r, PixelFormat f) {
+inline size_t scratch_bytes(const Blob& blob, const FramePlan& r, PixelFormat f) {
   if (!layered(blob) || f == PixelFormat::coverage8) return 0;
   // Rounded up to the alignment so that the bitmaps after it are word aligned.
   const size_t bytes = size_t(r.tile_w) * r.tile_h * 3 * sizeof(int16_t);
