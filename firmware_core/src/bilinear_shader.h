@@ -15,26 +15,37 @@
 namespace tristream::core::detail {
 namespace {
 
-// Whether bilinear setup of scan-path triangles may use ShortRoundingDivider: |2n + d| 2d < 2^64 for
-// every numerator n. Such a triangle's box is below 16 pixels, so its extents (and |dx|, |dy| of its
-// edges) are below 17 * 2^S, the offsets of its vertices from the reference pixel below 18 * 2^S,
-// its doubled area d below (17 * 2^S)^2 (at most its box), and |e_ref| < 2 * 17 * 18 * 2^(2S) =
-// 612 * 2^(2S). With values below 2^16 the largest numerator, 2^8 sum v e_ref (dv/dx and dv/dy
-// have |A|, |B| < 17 * 2^(2S) instead), is below 2^24 * 3 * 612 * 2^(2S). S = 4: |2n + d| < 2^43.9
-// and 2d < 2^17.2.
-constexpr bool short_division_fits(int s) {
-  const uint64_t d = uint64_t(17 * 17) << (2 * s);
-  const uint64_t x = (uint64_t(3 * 612) << (25 + 2 * s)) + d;
-  return x < ~uint64_t(0) / (2 * d);
+// The bit budget of the bilinear setup of scan-path triangles (boxes below scan_max_extent = m
+// pixels each way): with e = m + 1 their extents (and |dx|, |dy| of their edges) are below e 2^S,
+// the offsets of their vertices from the reference pixel below (e + 1) 2^S, the doubled area d
+// below (e 2^S)^2 (at most the box), and |e_ref| < 2 e (e + 1) 2^(2S). With values below 2^16 the
+// largest numerator, 2^8 sum v e_ref (dv/dx and dv/dy have |A|, |B| < e 2^(2S) instead), is below
+// 2^24 * 3 * 2 e (e + 1) 2^(2S). m = 16, S = 4: |2n + d| < 2^43.9 and 2d < 2^17.2; m = 12:
+// |2n + d| < 2^43.1 and 2d < 2^16.4.
+constexpr uint64_t scan_area2_bound(int m, int s) { return uint64_t(m + 1) * (m + 1) << (2 * s); }
+constexpr uint64_t scan_numerator_bound(int m, int s) {
+  return (uint64_t(3 * 2 * (m + 1) * (m + 2)) << (25 + 2 * s)) + scan_area2_bound(m, s);
 }
-// Only where the high multiply is one instruction (a 128-bit type): elsewhere (Cortex-M) it saves
-// less than the flash of a second copy of the channel setup costs.
-#if defined(__SIZEOF_INT128__)
-constexpr bool bilinear_short_division = short_division_fits(config::subpixel_bits);
+// Whether ShortRoundingDivider is exact for them: |2n + d| 2d < 2^64.
+constexpr bool short_division_fits(int m, int s) {
+  return scan_numerator_bound(m, s) < ~uint64_t(0) / (2 * scan_area2_bound(m, s));
+}
+// Whether ChunkedRoundingDivider is exact for them.
+constexpr bool chunked_division_fits(int m, int s) {
+  return 2 * scan_area2_bound(m, s) <= ChunkedRoundingDivider::max_divisor &&
+         scan_numerator_bound(m, s) < (uint64_t(1) << ChunkedRoundingDivider::numerator_bits);
+}
+// Where the high multiply is one instruction (a 128-bit type) the short division, else (Cortex-M)
+// the chunked one where the budget allows; RoundingDivider for the span path and otherwise.
+#if TS_USE_INT128
+constexpr bool bilinear_short_division = short_division_fits(scan_max_extent, config::subpixel_bits);
+constexpr bool bilinear_chunked_division = false;
 #else
 constexpr bool bilinear_short_division = false;
+constexpr bool bilinear_chunked_division = chunked_division_fits(scan_max_extent, config::subpixel_bits);
 #endif
-static_assert(short_division_fits(4), "the default configuration divides scan-path numerators without correction");
+static_assert(short_division_fits(16, 4), "the default configuration divides scan-path numerators without correction");
+static_assert(chunked_division_fits(12, 4), "the default configuration divides scan-path numerators in chunks");
 
 #if TS_USE_SSE2
 // Lane by lane, the low 32 bits of v * k (SSE2 has no 32-bit lane product: two 32 x 32 -> 64
@@ -76,6 +87,8 @@ struct BilinearShader {
     // The scan path's numerators are small enough for the division without correction.
     if (bilinear_short_division && s.scan_path) {
       setup(ShortRoundingDivider(s.area2));
+    } else if (bilinear_chunked_division && s.scan_path) {
+      setup(ChunkedRoundingDivider(s.area2));
     } else {
       setup(RoundingDivider(s.area2));
     }
@@ -100,28 +113,32 @@ struct BilinearShader {
       return;
     }
 #endif
+    auto* p = writer.at(x0, y);
+    if constexpr (Writer::takes_rounded) {
+      // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded into
+      // the start value (covered pixels hold values far from the int32 limits). Values are linear
+      // along the span, so when both ends round into [0, 255] (int32(v) >> 16 in [0, 255], i.e.
+      // v < 2^24 unsigned) every pixel does: no clamping.
+      constexpr uint32_t half = 1u << (q16_16::frac_bits - 1);
+      constexpr uint32_t in_range = 1u << (q16_16::frac_bits + 8);
+      const uint32_t dx = uint32_t(x0 - xr), dy = uint32_t(y - yr), n = uint32_t(x1 - x0);
+      const BilinearChannel &c0 = ch[0], &c1 = ch[Channels > 1 ? 1 : 0], &c2 = ch[Channels - 1];
+      const uint32_t v0 = c0.at_offset(dx, dy) + half, d0 = c0.step();
+      const uint32_t v1 = Channels == 3 ? c1.at_offset(dx, dy) + half : 0, d1 = Channels == 3 ? c1.step() : 0;
+      const uint32_t v2 = Channels == 3 ? c2.at_offset(dx, dy) + half : 0, d2 = Channels == 3 ? c2.step() : 0;
+      if ((v0 | (v0 + d0 * n) | v1 | (v1 + d1 * n) | v2 | (v2 + d2 * n)) < in_range) {
+        writer.put_span_in_range(p, x0, x1, y, v0, v1, v2, d0, d1, d2);
+        return;
+      }
+    }
     uint32_t v[Channels], dv[Channels];
     for (int c = 0; c < Channels; ++c) {
       v[c] = ch[c].at(x0, y, xr, yr);
       dv[c] = ch[c].step();
     }
-    auto* p = writer.at(x0, y);
     if constexpr (Writer::takes_rounded) {
-      // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded into
-      // the start value (covered pixels hold values far from the int32 limits).
+      // Some pixel out of [0, 255]: rounded and clamped one by one (rare).
       for (int c = 0; c < Channels; ++c) v[c] += 1u << (q16_16::frac_bits - 1);
-      // Values are linear along the span, so when both ends round into [0, 255] every pixel
-      // does: no clamping (the exact values of covered pixels are far from the int32 limits).
-      uint32_t out_of_range = 0;
-      for (int c = 0; c < Channels; ++c) {
-        const int32_t first = int32_t(v[c]) >> q16_16::frac_bits;
-        const int32_t last = int32_t(v[c] + dv[c] * uint32_t(x1 - x0)) >> q16_16::frac_bits;
-        out_of_range |= uint32_t(first) | uint32_t(last);
-      }
-      if (out_of_range <= 255) {
-        writer.put_span_in_range(p, x0, x1, y, v, dv);
-        return;
-      }
       for (int32_t x = x0; x <= x1; ++x) {
         int32_t r[Channels];
         for (int c = 0; c < Channels; ++c) {

@@ -37,10 +37,10 @@ inline Status plan_frame(const Blob& blob, const RenderParams& p, FramePlan* r) 
     return Status::not_compiled;
   r->format = p.format;
   r->map.identity = r->out_w == blob.width && r->out_h == blob.height;
-  r->map.nx = r->out_w - 1;
-  r->map.dx = blob.width - 1;
-  r->map.ny = r->out_h - 1;
-  r->map.dy = blob.height - 1;
+  r->map.nx = uint32_t(r->out_w - 1);
+  r->map.dx = uint32_t(blob.width - 1);
+  r->map.ny = uint32_t(r->out_h - 1);
+  r->map.dy = uint32_t(blob.height - 1);
   return Status::ok;
 }
 

@@ -50,20 +50,36 @@ struct DirectWriter {
       store_rgb<F>(p, clamp_u8(r[0]), clamp_u8(r[1]), clamp_u8(r[2]), x, y, dither);
     }
   }
-  // Pixels x0..x1 of row y from q16_16 values v (rounding offset included) stepped by dv, every
-  // one known to round into [0, 255].
-  void put_span_in_range(uint8_t* p, int32_t x0, int32_t x1, int32_t y, const uint32_t* v, const uint32_t* dv) const {
+  // Pixels x0..x1 of row y from q16_16 values (rounding offset included) v0, v1, v2 stepped by d0,
+  // d1, d2 (channels 1 and 2 unused for grey), every one known to round into [0, 255]. Scalars, not
+  // arrays: on Cortex-M the whole loop state then stays in registers.
+  void put_span_in_range(uint8_t* p, int32_t x0, int32_t x1, int32_t y, uint32_t v0, uint32_t v1, uint32_t v2,
+                         uint32_t d0, uint32_t d1, uint32_t d2) const {
     constexpr int s = q16_16::frac_bits;
     constexpr int bpp = bytes_per_pixel(F);
+    if constexpr (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be) {
+      // Without dithering the loop neither reads the flag nor the position.
+      if (!dither) {
+        if constexpr (Channels == 1) {
+          for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0) {
+            const uint32_t u = v0 >> s;
+            store565<F>(p, pack565_nearest(u, u, u));
+          }
+        } else {
+          for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0, v1 += d1, v2 += d2)
+            store565<F>(p, pack565_nearest(v0 >> s, v1 >> s, v2 >> s));
+        }
+        return;
+      }
+    }
     if constexpr (Channels == 1) {
-      uint32_t g = v[0];
-      for (int32_t x = x0; x <= x1; ++x, p += bpp, g += dv[0]) store_grey<F>(p, uint8_t(g >> s), x, y, dither);
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0) store_grey<F>(p, uint8_t(v0 >> s), x, y, dither);
     } else {
-      uint32_t r = v[0], g = v[1], b = v[2];
-      for (int32_t x = x0; x <= x1; ++x, p += bpp, r += dv[0], g += dv[1], b += dv[2])
-        store_rgb<F>(p, uint8_t(r >> s), uint8_t(g >> s), uint8_t(b >> s), x, y, dither);
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0, v1 += d1, v2 += d2)
+        store_rgb<F>(p, uint8_t(v0 >> s), uint8_t(v1 >> s), uint8_t(v2 >> s), x, y, dither);
     }
   }
+
 #if TS_USE_SSE2
   // Pixels x0..x1 of row y from the three q16_16 values in lanes 0..2 of v (rounding offset
   // included), stepped by the lanes of dv: a pixel is one vector addition, its bytes come from

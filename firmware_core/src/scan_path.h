@@ -20,10 +20,6 @@
 namespace tristream::core::detail {
 namespace {
 
-// Small triangles: the rows and columns of their pixel box (at most this many) are scanned
-// with the three edge functions stepped in int32. With SSE2 a row of a 16-column box costs about as much as the span steppers' row, without their
-// setup; the column scan of other targets pays per column.
-constexpr int32_t scan_max_extent = TS_USE_SSE2 ? 16 : 12;
 static_assert(scan_max_extent <= 62, "the scan path's int32 edge values need boxes below 64 pixels");
 
 // Edge values on the pixel box of a triangle whose box is below 64 x 64 pixels: for a pixel x of
@@ -35,7 +31,8 @@ static_assert(2 * (int64_t(64) << config::subpixel_bits) * (int64_t(64) << confi
 // RowMasks<Groups> (scan_row_masks_sse2.h, scan_row_masks_scalar.h): the covered columns of a box
 // row as a 16-bit mask (bit i: column left + i), from the three edge values at the row's first
 // column and their steps per column (a) and per row (b):
-//   RowMasks(row, a, b)   the edges at the box's first pixel, per column, per row;
+//   RowMasks(row, a, b, box)  the edges at the box's first pixel, per column, per row, and the
+//                         box's columns as a mask;
 //   uint32_t covered()    the current row's mask;
 //   void next_row()       steps to the next row.
 // With SSE2 four columns at a time and without branches, whose mispredictions cost more than the
@@ -164,7 +161,7 @@ void scan_small(const TriangleView& tv, int32_t area2, int32_t left, int32_t rig
 template <int Groups, typename Shader>
 void scan_rows(const TriangleView& tv, const SmallEdges& e, int32_t left, uint32_t box, int32_t y0, int32_t y1,
                int32_t cx0, int32_t cx1, Shader& shader) {
-  RowMasks<Groups> masks(e.row, e.a, e.b);
+  RowMasks<Groups> masks(e.row, e.a, e.b, box);
   bool started = false;
   for (int32_t y = y0; y <= y1; ++y, masks.next_row()) {
     const uint32_t mask = masks.covered() & box;

@@ -19,8 +19,9 @@ constexpr bool small_a_fits_int16 = (int32_t(18) << (2 * config::subpixel_bits))
 template <int Groups>
 class RowMasks {
  public:
-  // From the edges in lanes 0..2 of row, a and b.
-  __attribute__((always_inline)) RowMasks(__m128i row, __m128i a, __m128i b) {
+  // From the edges in lanes 0..2 of row, a and b (all the groups' columns are tested: the caller
+  // masks the result with the box).
+  __attribute__((always_inline)) RowMasks(__m128i row, __m128i a, __m128i b, uint32_t) {
     init<0>(row, a, b);
     init<1>(row, a, b);
     init<2>(row, a, b);

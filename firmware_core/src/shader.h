@@ -12,12 +12,19 @@
 // to choose how it steps, never x0 and x1. Shaders: BilinearShader, ZienkiewiczShader.
 #include <stdint.h>
 
+#include "tristream/config.h"
+
 namespace tristream::core::detail {
 namespace {
 
 // What a shader's begin needs besides the vertices: the edge coefficients (|a|, |b| < 2^20, see
 // detail/edge.h), the exact edge values at the reference pixel (xr, yr) (vertex 0 floored), and the
 // doubled area.
+// Triangles of the scan path (scan_path.h): pixel box below this many pixels each way and no
+// explicit corner. With SSE2 a row of a 16-column box costs about as much as the span steppers'
+// row, without their setup; the column scan of other targets pays per column.
+constexpr int32_t scan_max_extent = TS_USE_SSE2 ? 16 : 12;
+
 struct TriangleSetup {
   int32_t a[4], b[4];  // a[3], b[3] unused (whole vectors for SSE2)
   int64_t e_ref[3];

@@ -36,6 +36,25 @@ TEST_CASE("mulhi_u64_portable equals the 128-bit product's high half") {
   }
 }
 
+TEST_CASE("div_64_32 and reciprocal_portable equal 64-bit division") {
+  std::mt19937_64 rng(5);
+  // Divisors of every length, with edge values near powers of two and the corrections' worst cases.
+  std::vector<std::uint64_t> divisors = {1, 2, 3, 0xFFFFu, 0x10000u, 0x10001u, 0x7FFFFFFFu, 0x80000000u, 0x80000001u,
+                                         0xFFFFFFFEu, 0xFFFFFFFFu, 0x100000000ull, 0x100000001ull, 1ull << 62};
+  for (int i = 0; i < 200000; ++i) divisors.push_back((rng() >> (rng() % 64)) | 1u);
+  for (std::uint64_t d : divisors) {
+    REQUIRE(reciprocal_portable(d) == ~0ull / d);
+    if (d >> 32) continue;
+    const std::uint32_t v = std::uint32_t(d);
+    for (int j = 0; j < 4; ++j) {
+      const std::uint32_t u1 = std::uint32_t(rng() % v), u0 = std::uint32_t(j == 0 ? 0xFFFFFFFFu : j == 1 ? 0 : rng());
+      const std::uint64_t u = (std::uint64_t(u1) << 32) | u0;
+      REQUIRE(div_64_32(u1, u0, v) == u / v);
+    }
+    REQUIRE(div_64_32(v - 1, 0xFFFFFFFFu, v) == ((std::uint64_t(v - 1) << 32) | 0xFFFFFFFFu) / v);
+  }
+}
+
 TEST_CASE("Divider and RoundingDivider equal floor_div64 and round_div") {
   std::mt19937_64 rng(11);
   // Divisors: small, powers of two and their neighbours, random up to 2^61 (doubled areas
@@ -86,6 +105,35 @@ TEST_CASE("ShortRoundingDivider equals round_div wherever |2n + d| 2d < 2^64") {
       const std::int64_t n = (((rng() & 1) ? x : -x) - d) / 2;
       INFO("n " << n << " d " << d);
       REQUIRE(round(n) == round_div(n, d));
+    }
+  }
+}
+
+TEST_CASE("ChunkedRoundingDivider equals round_div wherever 2d <= 2^17 and |2n + d| < 2^47") {
+  std::mt19937_64 rng(17);
+  constexpr std::int64_t d_max = std::int64_t(ChunkedRoundingDivider::max_divisor / 2);
+  constexpr std::int64_t x_max = (std::int64_t(1) << ChunkedRoundingDivider::numerator_bits) - 1;
+  std::vector<std::int64_t> divisors = {1, 2, 3, 255, 256, 257, d_max - 1, d_max};
+  for (int i = 0; i < 3000; ++i) divisors.push_back(1 + std::int64_t(rng() % std::uint64_t(d_max)));
+  for (std::int64_t d : divisors) {
+    const ChunkedRoundingDivider round(d);
+    // n at the ends of the range (2n + d = +-x_max, or as near as integers allow), around 0 and
+    // at the halves (2n + d a multiple of 2d: the ties).
+    const std::int64_t specials[] = {0, 1, -1, d, -d, d - 1, -d + 1, d / 2, -d / 2, (x_max - d) / 2,
+                                     (-x_max - d) / 2 + 1, (x_max - d) / 2 - 1, (-x_max - d) / 2 + 2};
+    for (std::int64_t n : specials) {
+      INFO("n " << n << " d " << d);
+      REQUIRE(round(n) == round_div(n, d));
+    }
+    for (int i = 0; i < 500; ++i) {
+      const std::int64_t x = std::int64_t(rng() >> (17 + rng() % 40)) % x_max;
+      const std::int64_t n = (((rng() & 1) ? x : -x) - d) / 2;
+      INFO("n " << n << " d " << d);
+      REQUIRE(round(n) == round_div(n, d));
+    }
+    for (std::int64_t k = -3; k <= 3; ++k) {  // exact halves: 2n + d = k 2d
+      const std::int64_t n = (k * 2 * d - d) / 2;
+      if ((k * 2 * d - d) % 2 == 0) REQUIRE(round(n) == round_div(n, d));
     }
   }
 }

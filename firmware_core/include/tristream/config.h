@@ -50,12 +50,24 @@
 // tile cull eight triangles at a time, and the RGB pixels of bilinear spans and of
 // forward-differenced zienkiewicz rows with the three channels in vector lanes; 0: column by
 // column, triangle by triangle and channel by channel (the only choice on other targets). The
-// pixels are the same either way (test_core_golden_scalar runs the golden cases with 0 on the host).
+// pixels are the same either way (test_core_golden_portable runs the golden cases with 0 on the host).
 #ifndef TS_USE_SSE2
 #if defined(__SSE2__)
 #define TS_USE_SSE2 1
 #else
 #define TS_USE_SSE2 0
+#endif
+#endif
+
+// 1: the setup's wide products and divisions use the compiler's 128-bit integers where it has them
+// (64-bit hosts); 0: the portable forms Cortex-M uses (four-multiply high products, the reciprocal
+// by 32-bit divisions, bilinear scan-path quotients in 15-bit chunks). The pixels are the same
+// either way (test_core_golden_portable runs the golden cases with 0 and the scalar paths on the host).
+#ifndef TS_USE_INT128
+#if defined(__SIZEOF_INT128__)
+#define TS_USE_INT128 1
+#else
+#define TS_USE_INT128 0
 #endif
 #endif
 

@@ -2,6 +2,8 @@
 // Exact integer helpers of the per-triangle setup (64-bit; never used per pixel).
 #include <stdint.h>
 
+#include "tristream/config.h"
+
 namespace tristream::core::detail {
 
 // floor(n / d) for d > 0.
@@ -26,11 +28,57 @@ inline uint64_t mulhi_u64_portable(uint64_t a, uint64_t b) {
 }
 
 inline uint64_t mulhi_u64(uint64_t a, uint64_t b) {
-#if defined(__SIZEOF_INT128__)
+#if TS_USE_INT128
   __extension__ typedef unsigned __int128 u128;
   return uint64_t((u128(a) * b) >> 64);
 #else
   return mulhi_u64_portable(a, b);
+#endif
+}
+
+// floor((2^32 u1 + u0) / v) for u1 < v (the quotient fits 32 bits), by two 32-bit divisions of
+// 16-bit digits (Hacker's Delight, divlu): a hardware divide on Cortex-M4, where a 64-bit division
+// is a library call of about 430 instructions. Each digit's estimate is corrected at most twice.
+inline uint32_t div_64_32(uint32_t u1, uint32_t u0, uint32_t v) {
+  const int s = __builtin_clz(v);  // v > u1 >= 0
+  v <<= s;
+  const uint32_t vn1 = v >> 16, vn0 = v & 0xFFFFu;
+  const uint32_t un32 = s ? (u1 << s) | (u0 >> (32 - s)) : u1;
+  const uint32_t un10 = u0 << s;
+  const uint32_t un1 = un10 >> 16, un0 = un10 & 0xFFFFu;
+  uint32_t q1 = un32 / vn1, rhat = un32 - q1 * vn1;
+  while (q1 > 0xFFFFu || q1 * vn0 > ((rhat << 16) | un1)) {
+    --q1;
+    rhat += vn1;
+    if (rhat > 0xFFFFu) break;
+  }
+  const uint32_t un21 = (un32 << 16) + un1 - q1 * v;  // modulo 2^32: the true value is below v
+  uint32_t q0 = un21 / vn1;
+  rhat = un21 - q0 * vn1;
+  while (q0 > 0xFFFFu || q0 * vn0 > ((rhat << 16) | un0)) {
+    --q0;
+    rhat += vn1;
+    if (rhat > 0xFFFFu) break;
+  }
+  return (q1 << 16) | q0;
+}
+
+// floor((2^64 - 1) / d) for d > 0: the native division where it is one instruction (64-bit
+// hosts), else two 32-bit steps when d < 2^32 (every divisor of the default configuration: twice
+// the doubled area of a triangle of a 2048 x 2048 domain in 1/16 pixel is below 2^32).
+inline uint64_t reciprocal_portable(uint64_t d) {
+  if (d >> 32) return ~uint64_t(0) / d;
+  const uint32_t d32 = uint32_t(d);
+  const uint32_t hi = 0xFFFFFFFFu / d32;
+  const uint32_t rem = 0xFFFFFFFFu - hi * d32;
+  return (uint64_t(hi) << 32) | div_64_32(rem, 0xFFFFFFFFu, d32);
+}
+
+inline uint64_t reciprocal(uint64_t d) {
+#if TS_USE_INT128
+  return ~uint64_t(0) / d;
+#else
+  return reciprocal_portable(d);
 #endif
 }
 
@@ -44,7 +92,7 @@ class Divider {
   // k = 2^(62 - floor(log2 d)), so 2^62 <= k d < 2^63.
   explicit Divider(int64_t d)
       : d_(uint64_t(d)),
-        m_(~uint64_t(0) / uint64_t(d)),
+        m_(reciprocal(uint64_t(d))),
         k_(uint64_t(1) << (62 - (63 - __builtin_clzll(uint64_t(d))))),
         kd_(k_ * uint64_t(d)) {}
 
@@ -88,7 +136,7 @@ class RoundingDivider {
 // s = x >> 63 (all ones), floor(x / D) = ~floor(~x / D) (~x = -x - 1 >= 0), both as s ^ q(x ^ s).
 class ShortRoundingDivider {
  public:
-  explicit ShortRoundingDivider(int64_t d) : half_(d), m_(~uint64_t(0) / uint64_t(2 * d) + 1) {}
+  explicit ShortRoundingDivider(int64_t d) : half_(d), m_(reciprocal(uint64_t(2 * d)) + 1) {}
   int64_t operator()(int64_t n) const {
     const int64_t x = 2 * n + half_;
     const int64_t s = x >> 63;
@@ -98,6 +146,38 @@ class ShortRoundingDivider {
  private:
   int64_t half_;
   uint64_t m_;
+};
+
+// n / d rounded to nearest (halves up) like RoundingDivider, for small divisors: 2d <= 2^17 and
+// |2n + d| < 2^47 (the caller proves both from its bit budget). x = 2n + d is divided by D = 2d in
+// three 15-bit chunks by 32-bit divisions: each remainder is below D <= 2^17, so remainder * 2^15
+// + chunk < 2^32. No reciprocal and no 64-bit product: on Cortex-M4 three hardware divides of a few
+// cycles against a library division for the reciprocal and four-multiply high products. Negative
+// x: floor(x / D) = ~floor(~x / D), both as s ^ q(x ^ s) with s = x >> 63 (as ShortRoundingDivider).
+class ChunkedRoundingDivider {
+ public:
+  static constexpr int chunk_bits = 15;
+  static constexpr uint64_t max_divisor = uint64_t(1) << (32 - chunk_bits);  // D = 2d at most this
+  static constexpr int numerator_bits = 3 * chunk_bits + 2;                  // |2n + d| < 2^47
+
+  explicit ChunkedRoundingDivider(int64_t d) : half_(d), den_(uint32_t(2 * d)) {}
+  int64_t operator()(int64_t n) const {
+    constexpr uint32_t mask = (uint32_t(1) << chunk_bits) - 1;
+    const int64_t x = 2 * n + half_;
+    const int64_t s = x >> 63;
+    const uint64_t u = uint64_t(x ^ s);
+    const uint32_t top = uint32_t(u >> (2 * chunk_bits));
+    const uint32_t q2 = top / den_;
+    const uint32_t t1 = ((top - q2 * den_) << chunk_bits) | (uint32_t(u >> chunk_bits) & mask);
+    const uint32_t q1 = t1 / den_;
+    const uint32_t t0 = ((t1 - q1 * den_) << chunk_bits) | (uint32_t(u) & mask);
+    const uint32_t q0 = t0 / den_;
+    return int64_t((uint64_t(q2) << (2 * chunk_bits)) | (uint64_t(q1) << chunk_bits) | q0) ^ s;
+  }
+
+ private:
+  int64_t half_;
+  uint32_t den_;
 };
 
 // floor(x * y / 2^30) for |x| < 2^61 and any int32 y (a q2_30 weight): the 96-bit product from
@@ -110,7 +190,7 @@ inline int64_t mul_q30_portable(int64_t x, int32_t y) {
 }
 
 inline int64_t mul_q30(int64_t x, int32_t y) {
-#if defined(__SIZEOF_INT128__)
+#if TS_USE_INT128
   __extension__ typedef __int128 i128;
   return int64_t((i128(x) * y) >> 30);
 #else

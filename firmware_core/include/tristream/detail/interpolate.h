@@ -23,13 +23,11 @@ struct BilinearChannel {
   // rounded to nearest (RoundingDivider, or ShortRoundingDivider where the numerators allow).
   template <typename Divider>
   void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const Divider& by_area2, const int32_t* values) {
-    int64_t nx = 0, ny = 0, nv = 0;
-    for (int k = 0; k < 3; ++k) {
-      const int64_t v = values[(k + 2) % 3];
-      nx += v * a[k];
-      ny += v * b[k];
-      nv += v * e_ref[k];
-    }
+    // E_k / area2 weighs vertex k + 2: written out, no index arithmetic per term.
+    const int64_t v2 = values[2], v0 = values[0], v1 = values[1];
+    const int64_t nx = v2 * a[0] + v0 * a[1] + v1 * a[2];
+    const int64_t ny = v2 * b[0] + v0 * b[1] + v1 * b[2];
+    const int64_t nv = v2 * e_ref[0] + v0 * e_ref[1] + v1 * e_ref[2];
     constexpr int shift = q16_16::frac_bits - q8_8::frac_bits;
     dvdx = by_area2(nx * (int64_t(1) << shift));
     dvdy = by_area2(ny * (int64_t(1) << shift));
@@ -39,6 +37,8 @@ struct BilinearChannel {
   uint32_t at(int32_t x, int32_t y, int32_t xr, int32_t yr) const {
     return uint32_t(v_ref) + uint32_t(dvdx) * uint32_t(x - xr) + uint32_t(dvdy) * uint32_t(y - yr);
   }
+  // The same at offsets (dx, dy) = (x - xr, y - yr) from the reference pixel.
+  uint32_t at_offset(uint32_t dx, uint32_t dy) const { return uint32_t(v_ref) + uint32_t(dvdx) * dx + uint32_t(dvdy) * dy; }
   uint32_t step() const { return uint32_t(dvdx); }
 };
 

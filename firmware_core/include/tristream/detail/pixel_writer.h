@@ -2,6 +2,7 @@
 // Turning interpolated channel values (q24_8, unclamped) into output pixels: colour conversion,
 // clamping, rounding, RGB565 packing (with optional Bayer dithering on absolute position).
 #include <stdint.h>
+#include <string.h>
 
 #include "tristream/pixel_format.h"
 
@@ -48,6 +49,28 @@ inline uint16_t pack565(uint8_t r, uint8_t g, uint8_t b, uint32_t offset) {
   return uint16_t((reduce(r, 31, offset) << 11) | (reduce(g, 63, offset) << 5) | reduce(b, 31, offset));
 }
 
+// pack565 without dithering (offset 127) by multiply-adds: (v 31 + 127) / 255 = (v 249 + 1014) >> 11
+// and (v 63 + 127) / 255 = (v 253 + 505) >> 10 for every 8-bit v (test_formats checks all of them),
+// and the fields placed by masks: no division and no shift back.
+inline uint16_t pack565_nearest(uint32_t r, uint32_t g, uint32_t b) {
+  return uint16_t(((r * 249 + 1014) & 0xF800u) | (((g * 253 + 505) >> 5) & 0x07E0u) | ((b * 249 + 1014) >> 11));
+}
+
+// The two bytes of an RGB565 pixel in the format's byte order, as one store where the host is
+// little-endian (a halfword store on Cortex-M4; the byte order is that of the format, not the host's).
+template <PixelFormat F>
+inline void store565(uint8_t* p, uint16_t w) {
+  static_assert(F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be, "an RGB565 format");
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  const uint16_t bytes = F == PixelFormat::rgb565_be ? uint16_t(w >> 8 | w << 8) : w;
+  memcpy(p, &bytes, 2);
+#else
+  const int lo = F == PixelFormat::rgb565_le ? 0 : 1;
+  p[lo] = uint8_t(w & 0xFF);
+  p[1 - lo] = uint8_t(w >> 8);
+#endif
+}
+
 // Writes one pixel of 8-bit R, G, B at screen position (x, y) (used for dithering).
 template <PixelFormat F>
 inline void store_rgb(uint8_t* p, uint8_t r, uint8_t g, uint8_t b, int32_t x, int32_t y, bool dither) {
@@ -58,10 +81,7 @@ inline void store_rgb(uint8_t* p, uint8_t r, uint8_t g, uint8_t b, int32_t x, in
     p[1] = g;
     p[2] = b;
   } else if constexpr (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be) {
-    const uint16_t w = pack565(r, g, b, dither ? bayer_offset(x, y) : 127u);
-    const int lo = F == PixelFormat::rgb565_le ? 0 : 1;
-    p[lo] = uint8_t(w & 0xFF);
-    p[1 - lo] = uint8_t(w >> 8);
+    store565<F>(p, dither ? pack565(r, g, b, bayer_offset(x, y)) : pack565_nearest(r, g, b));
   } else if constexpr (F == PixelFormat::xrgb8888) {
     p[0] = b;
     p[1] = g;
