@@ -136,6 +136,16 @@ const M4Emulator::Block& M4Emulator::block_at(std::uint32_t address, std::uint32
   return blocks_[index];
 }
 
+// A conditional branch ran last: it was taken when execution continues elsewhere than after it.
+void M4Emulator::resolve_pending(std::uint32_t next_address) {
+  if (!pending_) return;
+  pending_ = false;
+  if (next_address == pending_fallthrough_) return;
+  pending_counts_->cycles += pipeline_refill;
+  pending_counts_->taken_branches += 1;
+  if (pending_counts_ == &run_.counted) run_.function_cycles[pending_function_] += pipeline_refill;
+}
+
 void M4Emulator::on_block(std::uint32_t address, std::uint32_t size) {
   if (address == halt_) return;
   if (size == 0 || address < flash_base || address - flash_base >= flash_size) {
@@ -149,14 +159,7 @@ void M4Emulator::on_block(std::uint32_t address, std::uint32_t size) {
     current_insn_ = 0;
     return;
   }
-  if (pending_) {
-    if (address != pending_fallthrough_) {
-      pending_counts_->cycles += pipeline_refill;
-      pending_counts_->taken_branches += 1;
-      if (pending_counts_ == &run_.counted) run_.function_cycles[pending_function_] += pipeline_refill;
-    }
-    pending_ = false;
-  }
+  resolve_pending(address);
   Counts& c = b.excluded ? run_.excluded : run_.counted;
   c.instructions += b.decoded.insns.size();
   c.cycles += b.decoded.cycles;
@@ -202,14 +205,7 @@ void M4Emulator::on_insn(std::uint32_t address, std::uint32_t size) {
 void M4Emulator::count_insn(const DecodedInsn& insn) {
   ++current_insn_;
   const std::uint32_t address = insn.address, size = insn.size;
-  if (pending_) {
-    if (address != pending_fallthrough_) {
-      pending_counts_->cycles += pipeline_refill;
-      pending_counts_->taken_branches += 1;
-      if (pending_counts_ == &run_.counted) run_.function_cycles[pending_function_] += pipeline_refill;
-    }
-    pending_ = false;
-  }
+  resolve_pending(address);
   Counts& c = current_->excluded ? run_.excluded : run_.counted;
   c.instructions += 1;
   c.cycles += insn.cycles;
@@ -263,10 +259,10 @@ RunCounts M4Emulator::call(std::uint32_t function, std::uint32_t stack_top, cons
   std::uint32_t pc = 0;
   uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
   if ((pc & ~1u) != halt_) throw std::runtime_error("bench-mcu: the call stopped at pc " + std::to_string(pc));
-  if (per_instruction_) {
-    finish_block();
-    if (!error_.empty()) throw std::runtime_error("bench-mcu: " + error_);
-  }
+  if (per_instruction_) finish_block();
+  // The return to bench_halt decides a conditional branch left pending (a conditional return).
+  resolve_pending(halt_);
+  if (!error_.empty()) throw std::runtime_error("bench-mcu: " + error_);
   return run_;
 }
 

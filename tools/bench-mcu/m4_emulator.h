@@ -78,6 +78,7 @@ class M4Emulator {
   };
   const Block& block_at(std::uint32_t address, std::uint32_t size);
   void fail(const std::string& message);
+  void resolve_pending(std::uint32_t next_address);
   void skip_to(std::uint32_t address);
   void finish_block();
   void count_insn(const DecodedInsn& insn);

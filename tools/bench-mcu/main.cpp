@@ -256,7 +256,6 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
   };
   std::vector<Row> rows;
   bool all_equal = true, stacks_within = true;
-  std::uint32_t max_stack = 0;
   for (const std::string& mesh_name : meshes) {
     const Triangulation tri = make_mesh(mesh_name);
     for (const std::string& method : methods) {
@@ -328,10 +327,10 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
               j["flash_core_full_bytes"] = prog.full.known ? json(prog.full.text) : json(nullptr);
               j["pixels_equal_host"] = m4 == host;
               all_equal &= m4 == host;
-              max_stack = std::max(max_stack, o.stack_bytes);
               if (check_stack) {
-                j["stack_within_core_stack_bytes"] = o.stack_bytes <= core_stack_bytes;
-                stacks_within &= o.stack_bytes <= core_stack_bytes;
+                const bool within = o.stack_bytes <= core_stack_bytes(opened.method);
+                j["stack_within_core_stack_bytes"] = within;
+                stacks_within &= within;
               }
               if (check_counts) {
                 const Outcome slow = run_on(*prog.checker, prog.elf, blob, p);
@@ -364,10 +363,16 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
   for (const Row& r : rows)
     if (std::find(out_names.begin(), out_names.end(), r.output) == out_names.end()) out_names.push_back(r.output);
   print_summary(rows, meshes, out_names, tilings);
-  std::printf("largest stack high-water mark: %u bytes (core_stack_bytes = %zu)\n", max_stack, core_stack_bytes);
+  for (const std::string& method : methods) {
+    std::uint32_t most = 0;
+    for (const Row& r : rows)
+      if (r.method == method) most = std::max(most, r.stack);
+    std::printf("largest stack high-water mark, %s: %u bytes (core_stack_bytes: %zu)\n", method.c_str(), most,
+                core_stack_bytes(parse_core_method(method)));
+  }
   if (!all_equal) std::fprintf(stderr, "bench_mcu: the emulated M4 differs from the host (pixels or counts)\n");
   if (!stacks_within)
-    std::fprintf(stderr, "bench_mcu: a stack high-water mark exceeds core_stack_bytes (%zu)\n", core_stack_bytes);
+    std::fprintf(stderr, "bench_mcu: a stack high-water mark exceeds core_stack_bytes (core_bridge/core_stack.h)\n");
   return all_equal && stacks_within ? 0 : 1;
 }
 
