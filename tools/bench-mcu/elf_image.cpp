@@ -89,11 +89,17 @@ ElfImage read_elf(const std::string& path) {
       }
       if (n.empty() || ELF32_ST_TYPE(sym.st_info) == STT_SECTION || ELF32_ST_TYPE(sym.st_info) == STT_FILE) continue;
       const bool function = ELF32_ST_TYPE(sym.st_info) == STT_FUNC;
+      if (function) image.functions.push_back({sym.st_value & ~1u, (sym.st_value & ~1u) + sym.st_size, n});
       // Local symbols of one name in several files: the first one wins; the harness only looks
       // up the program's own global symbols by name.
       image.symbols.emplace(n, ElfSymbol{function ? sym.st_value & ~1u : sym.st_value, sym.st_size, function});
     }
   }
+  std::sort(image.functions.begin(), image.functions.end(),
+            [](const ElfFunction& a, const ElfFunction& b) { return a.begin < b.begin; });
+  for (std::size_t i = 0; i < image.functions.size(); ++i)
+    if (image.functions[i].end == image.functions[i].begin && i + 1 < image.functions.size())
+      image.functions[i].end = image.functions[i + 1].begin;
   std::sort(mappings.begin(), mappings.end(), [](const Mapping& a, const Mapping& b) {
     return a.section != b.section ? a.section < b.section : a.address < b.address;
   });

@@ -26,10 +26,19 @@ struct CodeRange {
   std::uint32_t end = 0;
 };
 
+struct ElfFunction {
+  std::uint32_t begin = 0;
+  std::uint32_t end = 0;
+  std::string name;
+};
+
 struct ElfImage {
   std::string path;
   std::vector<ElfSegment> segments;
   std::map<std::string, ElfSymbol> symbols;
+  // Every function symbol, local ones of one name included, sorted; one without a size (assembly)
+  // extends to the next function.
+  std::vector<ElfFunction> functions;
   std::vector<CodeRange> thumb_code;  // instructions only (literal pools excluded), sorted
 
   // Throws DataError naming the file when the symbol is missing.

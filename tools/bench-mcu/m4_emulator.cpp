@@ -39,11 +39,7 @@ M4Emulator::M4Emulator(const ElfImage& elf, bool per_instruction) : elf_(elf), p
   }
   reset_data();
   halt_ = elf.symbol("bench_halt").address;
-  for (const auto& [name, sym] : elf.symbols)
-    if (sym.function && sym.size) functions_.push_back({sym.address, sym.address + sym.size, name});
-  std::sort(functions_.begin(), functions_.end(), [](const FunctionRange& a, const FunctionRange& b) {
-    return a.begin < b.begin;
-  });
+  functions_ = elf.functions;
   functions_.push_back({0, 0, "(no symbol)"});
   block_index_.assign(flash_size / 2, -1);
   uc_hook h;
@@ -94,7 +90,7 @@ void M4Emulator::exclude(std::uint32_t begin, std::uint32_t end) {
 
 std::uint32_t M4Emulator::function_of(std::uint32_t address) const {
   auto it = std::upper_bound(functions_.begin(), functions_.end() - 1, address,
-                             [](std::uint32_t a, const FunctionRange& f) { return a < f.begin; });
+                             [](std::uint32_t a, const ElfFunction& f) { return a < f.begin; });
   if (it != functions_.begin()) {
     --it;
     if (address < it->end) return std::uint32_t(it - functions_.begin());

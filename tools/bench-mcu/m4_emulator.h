@@ -37,12 +37,6 @@ struct RunCounts {
   std::vector<std::uint64_t> function_cycles;  // counted cycles per function of functions()
 };
 
-struct FunctionRange {
-  std::uint32_t begin = 0;
-  std::uint32_t end = 0;
-  std::string name;
-};
-
 class M4Emulator {
  public:
   // per_instruction: count with a hook on every instruction instead (slow; the check that block
@@ -63,7 +57,7 @@ class M4Emulator {
   // returns; throws std::runtime_error on a fault or a counting error.
   RunCounts call(std::uint32_t function, std::uint32_t stack_top, const std::vector<std::uint32_t>& args = {});
 
-  const std::vector<FunctionRange>& functions() const { return functions_; }
+  const std::vector<ElfFunction>& functions() const { return functions_; }
 
   // Hook entry points (public for the C callbacks).
   void on_block(std::uint32_t address, std::uint32_t size);
@@ -90,7 +84,7 @@ class M4Emulator {
   bool per_instruction_;
   std::uint32_t halt_ = 0;
   std::uint32_t exclude_begin_ = 0, exclude_end_ = 0;
-  std::vector<FunctionRange> functions_;
+  std::vector<ElfFunction> functions_;  // the image's, then one for code outside them
   std::vector<std::int32_t> block_index_;  // by (address - flash_base) / 2: index into blocks_, or -1
   std::vector<Block> blocks_;
   std::vector<DivideSite> divides_;

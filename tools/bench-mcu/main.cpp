@@ -4,15 +4,17 @@
 //   bench_mcu run --elf-dir <dir> [matrix options]   one JSON line per configuration, then a summary
 //   bench_mcu calibrate <calibrate.elf>              the hand-counted loops must count exactly
 #include <CLI/CLI.hpp>
+#include <cxxabi.h>
+
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -173,6 +175,15 @@ json counts_json(const Counts& c) {
   return j;
 }
 
+std::string demangled(const std::string& name) {
+  int status = 0;
+  char* d = abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status);
+  if (!d) return name;
+  std::string s(d);
+  std::free(d);
+  return s;
+}
+
 double per(std::uint64_t v, double n) { return n > 0 ? double(v) / n : 0; }
 double round2(double v) { return std::round(v * 100) / 100; }
 
@@ -218,13 +229,17 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
         const Row* b2d = find(mesh, out, t.name, "bilinear", "O2", true);
         const Row* z2d = find(mesh, out, t.name, "zienkiewicz", "O2", true);
         if (!b2 && !z2 && !bs && !zs) continue;
-        std::uint32_t s2 = 0, ss = 0;
+        std::uint32_t s2 = 0, ss = 0;  // the largest stack of the row, per optimisation level
         for (const Row& r : rows)
-          if (r.mesh == mesh && r.output == out && r.tiling == t.name) (r.opt == "O2" ? s2 : ss) = std::max(r.opt == "O2" ? s2 : ss, r.stack);
-        std::printf("%-9s %-8s %-8s | %10s %11s | %10s %11s | %11s | %5s %5s | %5s %5s | %5u %5u\n", mesh.c_str(),
+          if (r.mesh == mesh && r.output == out && r.tiling == t.name) {
+            std::uint32_t& s = r.opt == "O2" ? s2 : ss;
+            s = std::max(s, r.stack);
+          }
+        auto bytes = [](std::uint32_t b) { return b ? std::to_string(b) : std::string("-"); };
+        std::printf("%-9s %-8s %-8s | %10s %11s | %10s %11s | %11s | %5s %5s | %5s %5s | %5s %5s\n", mesh.c_str(),
                     out.c_str(), t.name.c_str(), cell(b2).c_str(), cell(bs).c_str(), cell(z2).c_str(),
                     cell(zs).c_str(), ratio(z2, b2).c_str(), ratio(bs, b2).c_str(), ratio(zs, z2).c_str(),
-                    ratio(b2d, b2).c_str(), ratio(z2d, z2).c_str(), s2, ss);
+                    ratio(b2d, b2).c_str(), ratio(z2d, z2).c_str(), bytes(s2).c_str(), bytes(ss).c_str());
       }
 }
 
@@ -348,7 +363,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
                 std::sort(f.rbegin(), f.rend());
                 json top = json::array();
                 for (std::size_t i = 0; i < f.size() && int(i) < profile; ++i)
-                  top.push_back({{"function", prog.emu->functions()[f[i].second].name},
+                  top.push_back({{"function", demangled(prog.emu->functions()[f[i].second].name)},
                                  {"cycles_share", round2(100.0 * double(f[i].first) / double(c.cycles))}});
                 j["profile_percent"] = top;
               }
