@@ -1,6 +1,7 @@
 /* The memory interface between the bench-mcu harness (host) and the benchmark program it runs on
-   the emulated Cortex-M4 (m4/bench_main.cpp). The harness writes bench_params, calls
-   bench_prepare() and then bench_render(), and reads bench_result. Both sides are little-endian
+   the emulated Cortex-M4 (m4/bench_main.cpp). The harness writes a bench_params into the
+   program's bench_params_in, calls bench_prepare() and then bench_render(), and reads the
+   bench_result in bench_result_out. Both sides are little-endian
    with 4-byte alignment of uint32_t, so the layouts are the same (checked by the asserts). */
 #ifndef TRISTREAM_BENCH_MCU_PROTOCOL_H
 #define TRISTREAM_BENCH_MCU_PROTOCOL_H
