@@ -1,13 +1,14 @@
 # tristream: every target installs what it needs first (tools/install-deps.sh), then builds.
 #   make run     build, then render the demo data with every method into out/ and print a table
 #   make test    build, then run every test through ctest
-# More: make build | test-sanitize | fuzz | cross | bench | experiments | experiments-quick | clean
+# More: make build | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | clean
 
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
 FUZZ_TIME  ?= 60
+BENCH_MCU_ARGS ?=
 
-.PHONY: all deps build run test test-sanitize fuzz cross bench clean experiments experiments-quick
+.PHONY: all deps build run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick
 
 all: build
 
@@ -21,8 +22,10 @@ build: deps
 run: build
 	bash tools/run-demo.sh $(BUILD)/bin out
 
-test: build
-	@bash tools/install-deps.sh experiments
+# The mcu group first: the build finds unicorn and capstone when it configures (bench_mcu tests).
+test: deps
+	@bash tools/install-deps.sh experiments mcu
+	$(MAKE) build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
 # The tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer.
@@ -46,6 +49,14 @@ bench: build
 	@bash tools/install-deps.sh bench
 	$(BUILD)/bin/bench_core
 	bash tests/core/callgrind_core.sh $(BUILD)/bin/core_frames
+
+# firmware_core on an emulated Cortex-M4 (docs/MCU_BENCH.md): instructions, modelled cycles,
+# stack, RAM and flash per configuration, pixels checked against the host build. A subset:
+# make bench-mcu BENCH_MCU_ARGS="--meshes kodim23 --opts O2 --dither off".
+bench-mcu: deps
+	@bash tools/install-deps.sh mcu
+	$(MAKE) build
+	bash tools/bench-mcu/run.sh $(BUILD) $(BENCH_MCU_ARGS)
 
 # firmware_core for Cortex-M4 (size report, fails if an allocator is linked), then the golden-image
 # test as a 32-bit ARM binary under qemu-arm (pixels must equal the x86-64 goldens).

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages a task needs, and only those that are missing.
-# Usage: tools/install-deps.sh [build|fuzz|cross|bench|experiments|all]...   (default: build)
+# Usage: tools/install-deps.sh [build|fuzz|cross|bench|mcu|experiments|all]...   (default: build)
 set -euo pipefail
 
 declare -A groups=(
@@ -8,6 +8,7 @@ declare -A groups=(
   [fuzz]="clang-14 libclang-rt-14-dev"
   [cross]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-user file"
   [bench]="valgrind"
+  [mcu]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi libunicorn-dev libcapstone-dev pkg-config"
   [experiments]="python3 python3-numpy python3-scipy python3-matplotlib python3-pil python3-tqdm"
 )
 
@@ -18,7 +19,7 @@ for group in "${@:-build}"; do
   elif [ -n "${groups[$group]:-}" ]; then
     wanted+=(${groups[$group]})
   else
-    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench, experiments or all)" >&2
+    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench, mcu, experiments or all)" >&2
     exit 64
   fi
 done

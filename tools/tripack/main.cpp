@@ -1,5 +1,5 @@
 // tripack: pack a .tri triangulation into a blob for the fixed-point core (binary or C source),
-// and report the RAM the core needs to render it.
+// and report the RAM the core needs to render it (tile buffer, workspace and stack).
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <cstdio>
@@ -9,6 +9,7 @@
 
 #include "common/errors.h"
 #include "common/tool_main.h"
+#include "core_bridge/core_stack.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/render_core.h"
 #include "io/atomic_file.h"
@@ -118,7 +119,9 @@ int main(int argc, char** argv) {
       write_file_atomically(req.output, c_source(id, header.filename().string(), blob, sizes.blob(), req, o.format,
                                                  sizes.tile_buffer_bytes(), sizes.workspace_bytes()));
     }
-    const std::size_t ram = sizes.tile_buffer_bytes() + sizes.workspace_bytes();
+    // The stack is the Cortex-M4 figure make bench-mcu measured (core_bridge/core_stack.h).
+    const std::size_t stack = core_stack_bytes(sizes.blob().method);
+    const std::size_t ram = sizes.tile_buffer_bytes() + sizes.workspace_bytes() + stack;
     if (req.json) {
       nlohmann::json j;
       j["output"] = req.output;
@@ -128,13 +131,15 @@ int main(int argc, char** argv) {
       j["blob_bytes"] = blob.size();
       j["tile_buffer_bytes"] = sizes.tile_buffer_bytes();
       j["workspace_bytes"] = sizes.workspace_bytes();
+      j["stack_bytes"] = stack;
       j["ram_bytes"] = ram;
       std::printf("%s\n", j.dump(2).c_str());
     } else {
       std::printf("%s: blob %zu bytes (%s)\n", req.output.c_str(), blob.size(), req.method.c_str());
-      std::printf("RAM for %s, %s: tile buffer %zu + workspace %zu = %zu bytes\n", req.format.c_str(),
+      std::printf("RAM for %s, %s: tile buffer %zu + workspace %zu + stack %zu (Cortex-M4) = %zu bytes\n",
+                  req.format.c_str(),
                   req.tile ? ("tiles " + std::to_string(req.tile) + "x" + std::to_string(req.tile)).c_str() : "full frame",
-                  sizes.tile_buffer_bytes(), sizes.workspace_bytes(), ram);
+                  sizes.tile_buffer_bytes(), sizes.workspace_bytes(), stack, ram);
     }
     return exit_ok;
   });

@@ -1,0 +1,22 @@
+#pragma once
+// The stack the core needs on a Cortex-M4, for the RAM figures (tripack, docs/FIXED_POINT.md):
+// per method, the largest high-water mark `make bench-mcu` measured below render()'s caller
+// (painted stack; arm-none-eabi-g++ -O2 and -Os; RGB565 big-endian; single-mesh RGB blobs; every
+// mesh, tiling, output size and dithering of its matrix), rounded up to 64 bytes. It includes a
+// leaf sink's frame; a firmware adds the frames of its own sink beyond that. bench_mcu
+// --check-stack (the bench_mcu_pixels test, and make bench-mcu) fails when a measured mark
+// exceeds it, so it is raised, or the core's stack lowered, when the core changes.
+#include <cstddef>
+
+#include "tristream/blob.h"
+
+namespace tristream {
+
+inline constexpr std::size_t core_stack_bytes_bilinear = 1344;     // measured 1,320 (-O2)
+inline constexpr std::size_t core_stack_bytes_zienkiewicz = 2240;  // measured 2,220 (-O2)
+
+constexpr std::size_t core_stack_bytes(core::Method method) {
+  return method == core::Method::zienkiewicz ? core_stack_bytes_zienkiewicz : core_stack_bytes_bilinear;
+}
+
+}  // namespace tristream

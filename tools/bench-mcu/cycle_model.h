@@ -1,0 +1,81 @@
+#pragma once
+// The Cortex-M4 cycle model of bench-mcu (docs/MCU_BENCH.md has the table and its sources): each
+// Thumb-2 instruction gets a static cost from the Technical Reference Manual's instruction timing
+// table, in the context of the instruction before it in its block (load pipelining, the address
+// generation stall, IT folding); two parts are dynamic and added while running: a taken
+// conditional branch costs the pipeline refill P, and a division costs 2..12 cycles by its
+// operands. Zero-wait-state memory.
+#include <cstdint>
+#include <vector>
+
+#include "elf_image.h"
+
+namespace tristream::bench_mcu {
+
+// P of the TRM: the cycles of a pipeline refill after a taken branch (1..3 on the M4, by the
+// target's alignment and width and whether the branch was speculated); one value for all.
+inline constexpr int pipeline_refill = 2;
+
+enum InsnClass : std::uint8_t {
+  class_alu,        // data processing, moves, shifts, compares, extends, bit fields, IT, NOP
+  class_multiply,   // MUL, MLA, MLS, the long multiplies and the DSP multiplies
+  class_divide,     // SDIV, UDIV
+  class_load,       // single loads (LDR, LDRB, LDRH, LDRSB, LDRSH, LDREX)
+  class_store,      // single stores
+  class_multiple,   // LDM, STM, PUSH, POP, LDRD, STRD
+  class_branch,     // B, BL, BX, BLX, CBZ, CBNZ, TBB, TBH and any other write to PC
+  class_other,      // anything else (system, floating point): costed 1, reported to spot surprises
+  class_count
+};
+
+const char* class_name(int c);
+
+struct DecodedInsn {
+  std::uint32_t address = 0;
+  std::uint8_t size = 0;
+  std::uint8_t cycles = 0;  // static cost; a division's minimum (2)
+  InsnClass klass = class_alu;
+  bool conditional_branch = false;  // costs P more when the next instruction is not the next in memory
+  bool conditional = false;         // has a condition (in an IT block, or a conditional branch)
+};
+
+struct DecodedBlock {
+  std::uint32_t address = 0;
+  std::uint32_t size = 0;
+  std::uint32_t cycles = 0;  // sum of the static costs
+  std::uint32_t by_class[class_count] = {};
+  std::vector<DecodedInsn> insns;
+  bool ends_with_conditional_branch() const { return !insns.empty() && insns.back().conditional_branch; }
+};
+
+struct DivideSite {
+  std::uint32_t address = 0;
+  bool is_signed = false;
+  int dividend_reg = 0;  // unicorn register ids
+  int divisor_reg = 0;
+};
+
+class CycleModel {
+ public:
+  CycleModel();
+  ~CycleModel();
+  CycleModel(const CycleModel&) = delete;
+  CycleModel& operator=(const CycleModel&) = delete;
+
+  // Decodes [address, address + size) as one block of Thumb-2 code (a unicorn translation block)
+  // and costs it. Returns false when the bytes do not decode exactly into instructions.
+  bool decode_block(const std::uint8_t* code, std::uint32_t size, std::uint32_t address, DecodedBlock* out) const;
+  // Every SDIV and UDIV in the image's Thumb code ranges.
+  std::vector<DivideSite> find_divides(const ElfImage& elf) const;
+
+ private:
+  std::size_t handle_ = 0;
+};
+
+// Cycles of SDIV / UDIV: 2 when the quotient is 0 (or the divisor is 0), else 2 plus the number
+// of quotient bits q (the leading-bit distance of the magnitudes plus 1) scaled to 1..10:
+// 2 + ceil(10 q / 32), so 2..12 as in the TRM, which documents only the range and early
+// termination on the operands' leading zeros.
+int divide_cycles(std::uint32_t dividend, std::uint32_t divisor, bool is_signed);
+
+}  // namespace tristream::bench_mcu

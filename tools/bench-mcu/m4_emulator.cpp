@@ -1,0 +1,265 @@
+#include "m4_emulator.h"
+
+#include <unicorn/unicorn.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace tristream::bench_mcu {
+
+namespace {
+
+void check(uc_err e, const char* what) {
+  if (e != UC_ERR_OK) throw std::runtime_error(std::string("unicorn: ") + what + ": " + uc_strerror(e));
+}
+
+void block_hook(uc_engine*, std::uint64_t address, std::uint32_t size, void* self) {
+  static_cast<M4Emulator*>(self)->on_block(std::uint32_t(address), size);
+}
+void insn_hook(uc_engine*, std::uint64_t address, std::uint32_t size, void* self) {
+  static_cast<M4Emulator*>(self)->on_insn(std::uint32_t(address), size);
+}
+void divide_hook(uc_engine*, std::uint64_t address, std::uint32_t, void* self) {
+  static_cast<M4Emulator*>(self)->on_divide(std::uint32_t(address));
+}
+
+}  // namespace
+
+M4Emulator::M4Emulator(const ElfImage& elf, bool per_instruction) : elf_(elf), per_instruction_(per_instruction) {
+  check(uc_open(UC_ARCH_ARM, uc_mode(UC_MODE_THUMB | UC_MODE_MCLASS), &uc_), "open");
+  check(uc_ctl_set_cpu_model(uc_, UC_CPU_ARM_CORTEX_M4), "select the Cortex-M4");
+  check(uc_mem_map(uc_, flash_base, flash_size, UC_PROT_READ | UC_PROT_EXEC), "map flash");
+  check(uc_mem_map(uc_, ram_base, ram_size, UC_PROT_READ | UC_PROT_WRITE), "map RAM");
+  check(uc_mem_map(uc_, rom_base, rom_size, UC_PROT_READ), "map the blob region");
+  for (const ElfSegment& s : elf.segments) {
+    const bool in_flash = s.address >= flash_base && std::uint64_t(s.address) + s.memory_size <= flash_base + flash_size;
+    const bool in_ram = s.address >= ram_base && std::uint64_t(s.address) + s.memory_size <= ram_base + ram_size;
+    if (!in_flash && !in_ram) throw std::runtime_error(elf.path + ": a segment lies outside the board's flash and RAM");
+    if (s.executable && !in_flash) throw std::runtime_error(elf.path + ": code outside flash");
+  }
+  reset_data();
+  halt_ = elf.symbol("bench_halt").address;
+  functions_ = elf.functions;
+  functions_.push_back({0, 0, "(no symbol)"});
+  block_index_.assign(flash_size / 2, -1);
+  uc_hook h;
+  if (per_instruction_)
+    check(uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(insn_hook), this, flash_base,
+                      flash_base + flash_size - 1),
+          "add the instruction hook");
+  check(uc_hook_add(uc_, &h, UC_HOOK_BLOCK, reinterpret_cast<void*>(block_hook), this, flash_base,
+                    flash_base + flash_size - 1),
+        "add the block hook");
+  divides_ = model_.find_divides(elf);
+  for (const DivideSite& d : divides_)
+    check(uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(divide_hook), this, d.address, d.address),
+          "add a division hook");
+  std::sort(divides_.begin(), divides_.end(), [](const DivideSite& a, const DivideSite& b) {
+    return a.address < b.address;
+  });
+}
+
+M4Emulator::~M4Emulator() { uc_close(uc_); }
+
+void M4Emulator::write(std::uint32_t address, const void* data, std::size_t size) {
+  check(uc_mem_write(uc_, address, data, size), "write memory");
+}
+
+void M4Emulator::read(std::uint32_t address, void* data, std::size_t size) {
+  check(uc_mem_read(uc_, address, data, size), "read memory");
+}
+
+void M4Emulator::fill(std::uint32_t address, std::uint32_t word, std::size_t words) {
+  const std::vector<std::uint32_t> v(words, word);
+  write(address, v.data(), v.size() * 4);
+}
+
+void M4Emulator::reset_data() {
+  for (const ElfSegment& s : elf_.segments) {
+    std::vector<std::uint8_t> bytes = s.bytes;
+    bytes.resize(s.memory_size, 0);
+    write(s.address, bytes.data(), bytes.size());
+  }
+}
+
+void M4Emulator::exclude(std::uint32_t begin, std::uint32_t end) {
+  exclude_begin_ = begin;
+  exclude_end_ = end;
+  for (Block& b : blocks_) b.excluded = b.decoded.address >= begin && b.decoded.address < end;
+}
+
+std::uint32_t M4Emulator::function_of(std::uint32_t address) const {
+  auto it = std::upper_bound(functions_.begin(), functions_.end() - 1, address,
+                             [](std::uint32_t a, const ElfFunction& f) { return a < f.begin; });
+  if (it != functions_.begin()) {
+    --it;
+    if (address < it->end) return std::uint32_t(it - functions_.begin());
+  }
+  return std::uint32_t(functions_.size() - 1);
+}
+
+void M4Emulator::fail(const std::string& message) {
+  if (error_.empty()) error_ = message;
+  uc_emu_stop(uc_);
+}
+
+const M4Emulator::Block& M4Emulator::block_at(std::uint32_t address, std::uint32_t size) {
+  const std::uint32_t slot = (address - flash_base) / 2;
+  std::int32_t& index = block_index_[slot];
+  if (index >= 0 && blocks_[index].decoded.size == size) return blocks_[index];
+  // A new block, or one translated again with another size: decode it (and keep the latest).
+  std::vector<std::uint8_t> code(size);
+  check(uc_mem_read(uc_, address, code.data(), size), "read code");
+  Block b;
+  if (!model_.decode_block(code.data(), size, address, &b.decoded)) {
+    static const Block none;
+    fail("cannot decode the block at 0x" + std::to_string(address) + " (" + std::to_string(size) + " bytes)");
+    return none;
+  }
+  for (const DecodedInsn& insn : b.decoded.insns)
+    if (insn.klass == class_divide &&
+        !std::binary_search(divides_.begin(), divides_.end(), DivideSite{insn.address},
+                            [](const DivideSite& x, const DivideSite& y) { return x.address < y.address; }))
+      fail("a division at " + std::to_string(insn.address) + " outside the image's code ranges");
+  b.function = function_of(address);
+  b.excluded = address >= exclude_begin_ && address < exclude_end_;
+  if (index < 0) {
+    index = std::int32_t(blocks_.size());
+    blocks_.push_back(std::move(b));
+  } else {
+    blocks_[index] = std::move(b);
+  }
+  return blocks_[index];
+}
+
+// A conditional branch ran last: it was taken when execution continues elsewhere than after it.
+void M4Emulator::resolve_pending(std::uint32_t next_address) {
+  if (!pending_) return;
+  pending_ = false;
+  if (next_address == pending_fallthrough_) return;
+  pending_counts_->cycles += pipeline_refill;
+  pending_counts_->taken_branches += 1;
+  if (pending_counts_ == &run_.counted) run_.function_cycles[pending_function_] += pipeline_refill;
+}
+
+void M4Emulator::on_block(std::uint32_t address, std::uint32_t size) {
+  if (address == halt_) return;
+  if (size == 0 || address < flash_base || address - flash_base >= flash_size) {
+    fail("a translation block of unknown size at " + std::to_string(address));
+    return;
+  }
+  const Block& b = block_at(address, size);
+  if (per_instruction_) {
+    finish_block();
+    current_ = &b;
+    current_insn_ = 0;
+    return;
+  }
+  resolve_pending(address);
+  Counts& c = b.excluded ? run_.excluded : run_.counted;
+  c.instructions += b.decoded.insns.size();
+  c.cycles += b.decoded.cycles;
+  for (int k = 0; k < class_count; ++k) c.by_class[k] += b.decoded.by_class[k];
+  if (!b.excluded) run_.function_cycles[b.function] += b.decoded.cycles;
+  if (b.decoded.ends_with_conditional_branch()) {
+    pending_ = true;
+    pending_fallthrough_ = address + size;
+    pending_counts_ = &c;
+    pending_function_ = b.function;
+  }
+}
+
+// Per-instruction mode: the instructions of the current block up to `address` that did not
+// reach the instruction hook, which unicorn skips for an IT block's instructions whose condition
+// fails. Block counting counts them as executed (the M4 spends a cycle on each), so they are
+// counted here too; any other instruction left out is an error.
+void M4Emulator::skip_to(std::uint32_t address) {
+  while (current_ && current_insn_ < current_->decoded.insns.size() &&
+         current_->decoded.insns[current_insn_].address < address) {
+    const DecodedInsn& insn = current_->decoded.insns[current_insn_];
+    if (!insn.conditional) {
+      fail("the instruction at " + std::to_string(insn.address) + " of its translation block did not run");
+      return;
+    }
+    count_insn(insn);
+  }
+}
+
+void M4Emulator::finish_block() { skip_to(0xFFFFFFFFu); }
+
+void M4Emulator::on_insn(std::uint32_t address, std::uint32_t size) {
+  if (address == halt_) return;
+  skip_to(address);
+  if (!current_ || current_insn_ >= current_->decoded.insns.size() ||
+      current_->decoded.insns[current_insn_].address != address || current_->decoded.insns[current_insn_].size != size) {
+    fail("instruction at " + std::to_string(address) + " is not the next one of its translation block");
+    return;
+  }
+  count_insn(current_->decoded.insns[current_insn_]);
+}
+
+void M4Emulator::count_insn(const DecodedInsn& insn) {
+  ++current_insn_;
+  const std::uint32_t address = insn.address, size = insn.size;
+  resolve_pending(address);
+  Counts& c = current_->excluded ? run_.excluded : run_.counted;
+  c.instructions += 1;
+  c.cycles += insn.cycles;
+  c.by_class[insn.klass] += 1;
+  if (!current_->excluded) run_.function_cycles[current_->function] += insn.cycles;
+  if (insn.conditional_branch) {
+    pending_ = true;
+    pending_fallthrough_ = address + size;
+    pending_counts_ = &c;
+    pending_function_ = current_->function;
+  }
+}
+
+void M4Emulator::on_divide(std::uint32_t address) {
+  const auto it = std::lower_bound(divides_.begin(), divides_.end(), address,
+                                   [](const DivideSite& d, std::uint32_t a) { return d.address < a; });
+  if (it == divides_.end() || it->address != address) return;
+  std::uint32_t n = 0, d = 0;
+  uc_reg_read(uc_, it->dividend_reg, &n);
+  uc_reg_read(uc_, it->divisor_reg, &d);
+  const int extra = divide_cycles(n, d, it->is_signed) - 2;
+  const bool excluded = address >= exclude_begin_ && address < exclude_end_;
+  Counts& c = excluded ? run_.excluded : run_.counted;
+  c.cycles += extra;
+  c.divide_cycles += extra;
+  if (!excluded) run_.function_cycles[function_of(address)] += extra;
+}
+
+RunCounts M4Emulator::call(std::uint32_t function, std::uint32_t stack_top, const std::vector<std::uint32_t>& args) {
+  if (args.size() > 4) throw std::runtime_error("call: at most 4 register arguments");
+  run_ = RunCounts{};
+  run_.function_cycles.assign(functions_.size(), 0);
+  error_.clear();
+  pending_ = false;
+  current_ = nullptr;
+  current_insn_ = 0;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::uint32_t v = args[i];
+    check(uc_reg_write(uc_, UC_ARM_REG_R0 + int(i), &v), "write r0..r3");
+  }
+  std::uint32_t sp = stack_top, lr = halt_ | 1u;
+  check(uc_reg_write(uc_, UC_ARM_REG_SP, &sp), "write SP");
+  check(uc_reg_write(uc_, UC_ARM_REG_LR, &lr), "write LR");
+  const uc_err e = uc_emu_start(uc_, function | 1u, halt_, 0, 0);
+  if (!error_.empty()) throw std::runtime_error("bench-mcu: " + error_);
+  if (e != UC_ERR_OK) {
+    std::uint32_t pc = 0;
+    uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
+    throw std::runtime_error(std::string("unicorn: ") + uc_strerror(e) + " at pc " + std::to_string(pc));
+  }
+  std::uint32_t pc = 0;
+  uc_reg_read(uc_, UC_ARM_REG_PC, &pc);
+  if ((pc & ~1u) != halt_) throw std::runtime_error("bench-mcu: the call stopped at pc " + std::to_string(pc));
+  if (per_instruction_) finish_block();
+  // The return to bench_halt decides a conditional branch left pending (a conditional return).
+  resolve_pending(halt_);
+  if (!error_.empty()) throw std::runtime_error("bench-mcu: " + error_);
+  return run_;
+}
+
+}  // namespace tristream::bench_mcu
