@@ -67,8 +67,10 @@ bool uses(const cs_arm_op* mem, unsigned reg) {
   return mem && reg != ARM_REG_INVALID && (mem->mem.base == reg || mem->mem.index == reg);
 }
 
-// Cost of one instruction after `prev`; fills `next` for the instruction after it.
-DecodedInsn cost(csh h, const cs_insn& insn, const Context& prev, Context* next) {
+// Cost of one instruction after `prev`; fills `next` for the instruction after it. in_it: the
+// instruction is in an IT block (capstone 4 does not give every such instruction its condition,
+// e.g. an addle.w of a negative immediate, so the decoder counts the IT block's instructions).
+DecodedInsn cost(csh h, const cs_insn& insn, const Context& prev, Context* next, bool in_it) {
   const cs_arm& arm = insn.detail->arm;
   const unsigned id = insn.id;
   DecodedInsn d;
@@ -79,7 +81,8 @@ DecodedInsn cost(csh h, const cs_insn& insn, const Context& prev, Context* next)
   if (cs_regs_access(h, &insn, read_regs, &nread, write_regs, &nwrite) != CS_ERR_OK) nread = nwrite = 0;
   bool writes_pc = false;
   for (int i = 0; i < nwrite; ++i) writes_pc |= write_regs[i] == ARM_REG_PC;
-  const bool conditional = (arm.cc != ARM_CC_AL && arm.cc != ARM_CC_INVALID) || id == ARM_INS_CBZ || id == ARM_INS_CBNZ;
+  const bool conditional =
+      in_it || (arm.cc != ARM_CC_AL && arm.cc != ARM_CC_INVALID) || id == ARM_INS_CBZ || id == ARM_INS_CBNZ;
   d.conditional = conditional;
   const cs_arm_op* mem = memory_operand(arm);
   bool agu_stall = false;
@@ -175,7 +178,7 @@ CycleModel::~CycleModel() {
 }
 
 bool CycleModel::decode_block(const std::uint8_t* code, std::uint32_t size, std::uint32_t address,
-                              DecodedBlock* out) const {
+                              DecodedBlock* out, int it_left) const {
   csh h = handle_of(handle_);
   cs_insn* insns = nullptr;
   const std::size_t n = cs_disasm(h, code, size, address, 0, &insns);
@@ -186,7 +189,9 @@ bool CycleModel::decode_block(const std::uint8_t* code, std::uint32_t size, std:
   Context ctx;
   for (std::size_t i = 0; i < n; ++i) {
     Context next;
-    const DecodedInsn d = cost(h, insns[i], ctx, &next);
+    const DecodedInsn d = cost(h, insns[i], ctx, &next, it_left > 0);
+    if (it_left > 0) --it_left;
+    if (insns[i].id == ARM_INS_IT) it_left = int(std::strlen(insns[i].mnemonic)) - 1;  // it, itt, ite, ...
     ctx = next;
     out->cycles += d.cycles;
     out->by_class[d.klass] += 1;

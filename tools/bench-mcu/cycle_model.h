@@ -64,7 +64,10 @@ class CycleModel {
 
   // Decodes [address, address + size) as one block of Thumb-2 code (a unicorn translation block)
   // and costs it. Returns false when the bytes do not decode exactly into instructions.
-  bool decode_block(const std::uint8_t* code, std::uint32_t size, std::uint32_t address, DecodedBlock* out) const;
+  // it_left: instructions of an IT block still to come at the block's start (a block may begin
+  // inside one; from the processor's ITSTATE).
+  bool decode_block(const std::uint8_t* code, std::uint32_t size, std::uint32_t address, DecodedBlock* out,
+                    int it_left = 0) const;
   // Every SDIV and UDIV in the image's Thumb code ranges.
   std::vector<DivideSite> find_divides(const ElfImage& elf) const;
 

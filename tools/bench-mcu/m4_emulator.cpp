@@ -110,8 +110,14 @@ const M4Emulator::Block& M4Emulator::block_at(std::uint32_t address, std::uint32
   // A new block, or one translated again with another size: decode it (and keep the latest).
   std::vector<std::uint8_t> code(size);
   check(uc_mem_read(uc_, address, code.data(), size), "read code");
+  // ITSTATE (xPSR bits 15:10 and 26:25): a block may begin inside an IT block. IT[3:0] shifts left
+  // once per instruction and the block ends when it is 0, so 4 - ctz(IT[3:0]) instructions remain.
+  std::uint32_t xpsr = 0;
+  check(uc_reg_read(uc_, UC_ARM_REG_XPSR, &xpsr), "read xPSR");
+  const std::uint32_t it = ((xpsr >> 8) & 0xFCu) | ((xpsr >> 25) & 3u);
+  const int it_left = (it & 0xFu) ? 4 - __builtin_ctz(it & 0xFu) : 0;
   Block b;
-  if (!model_.decode_block(code.data(), size, address, &b.decoded)) {
+  if (!model_.decode_block(code.data(), size, address, &b.decoded, it_left)) {
     static const Block none;
     fail("cannot decode the block at 0x" + std::to_string(address) + " (" + std::to_string(size) + " bytes)");
     return none;
