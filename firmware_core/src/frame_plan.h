@@ -26,7 +26,12 @@ inline Status plan_frame(const Blob& blob, const RenderParams& p, FramePlan* r) 
   if (r->out_w < 2 || r->out_h < 2 || r->out_w > config::max_dimension || r->out_h > config::max_dimension)
     return Status::bad_params;
   r->view = p.viewport;
-  if (r->view.empty()) r->view = Rect{0, 0, r->out_w, r->out_h};
+  const Rect& v = p.viewport;
+  if (v.x0 == 0 && v.y0 == 0 && v.x1 == 0 && v.y1 == 0) {
+    r->view = Rect{0, 0, r->out_w, r->out_h};
+  } else if (v.empty()) {
+    return Status::bad_params;
+  }
   if (r->view.x0 < 0 || r->view.y0 < 0 || r->view.x1 > r->out_w || r->view.y1 > r->out_h) return Status::bad_params;
   r->tile_w = p.tile_width ? p.tile_width : r->view.width();
   r->tile_h = p.tile_height ? p.tile_height : r->view.height();

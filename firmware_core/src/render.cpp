@@ -38,18 +38,19 @@ Status workspace_size(const Blob& blob, const RenderParams& params, size_t* byte
   return Status::ok;
 }
 
-Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,
-              void* workspace, size_t workspace_bytes, TileSink sink, void* context) {
-  if (!tile_buffer || !sink || (!workspace && workspace_bytes)) return Status::null_argument;
+Status render(const Blob& blob, const RenderParams& params, const RenderBuffers& buffers, FrameSink sink,
+              void* context) {
+  void* const tile_buffer = buffers.tile[0];
+  if (!tile_buffer || !sink || (!buffers.workspace && buffers.workspace_bytes)) return Status::null_argument;
   detail::FramePlan r;
   Status s = detail::plan_frame(blob, params, &r);
   if (s != Status::ok) return s;
   const int bpp = bytes_per_pixel(r.format);
-  const int32_t stride = r.tile_w * bpp;
-  if (tile_buffer_bytes < size_t(stride) * r.tile_h) return Status::tile_buffer_too_small;
+  if (buffers.tile_bytes < size_t(r.tile_w) * r.tile_h * bpp) return Status::tile_buffer_too_small;
 
   // Workspace: [alignment padding][channel scratch][active-set bitmaps, one equal share per layer].
-  uint8_t* ws = static_cast<uint8_t*>(workspace);
+  const size_t workspace_bytes = buffers.workspace_bytes;
+  uint8_t* ws = static_cast<uint8_t*>(buffers.workspace);
   const size_t pad = ws ? (detail::workspace_alignment - uintptr_t(ws) % detail::workspace_alignment) %
                               detail::workspace_alignment
                         : 0;
@@ -71,7 +72,10 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
     if (sets[l].capacity < blob.layers[l].triangle_count && sets[l].capacity < detail::max_window(blob.layers[l], r))
       return Status::workspace_too_small;
   const detail::TileRenderer draw = detail::tile_renderer(r.format);
-  uint8_t* base = static_cast<uint8_t*>(tile_buffer);
+  // With a second buffer the tiles alternate between the two (first, second, first, ...).
+  uint8_t* const base[2] = {static_cast<uint8_t*>(tile_buffer),
+                            static_cast<uint8_t*>(buffers.tile[1] ? buffers.tile[1] : tile_buffer)};
+  int next = 0;
   for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
     const int32_t by1 = by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1;
     for (int l = 0; l < blob.layer_count; ++l)
@@ -79,15 +83,43 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
     for (int32_t bx = r.view.x0; bx < r.view.x1; bx += r.tile_w) {
       const int32_t bx1 = bx + r.tile_w < r.view.x1 ? bx + r.tile_w : r.view.x1;
       Tile tile;
-      tile.pixels = base;
-      tile.stride = stride;
+      tile.pixels = base[next];
+      tile.stride = (params.packed_tiles ? bx1 - bx : r.tile_w) * bpp;
       tile.rect = Rect{bx, by, bx1, by1};
       tile.format = r.format;
-      draw(blob, params, r.map, sets, tile.rect, base, stride, scratch_ptr);
-      sink(context, &tile);
+      draw(blob, params, r.map, sets, tile.rect, tile.pixels, tile.stride, scratch_ptr);
+      if (!sink(context, &tile)) return Status::stopped;
+      next ^= 1;
     }
   }
   return Status::ok;
+}
+
+namespace {
+
+struct TileSinkAdapter {
+  TileSink sink;
+  void* context;
+};
+
+bool forward_tile(void* context, const Tile* tile) {
+  const TileSinkAdapter* a = static_cast<const TileSinkAdapter*>(context);
+  a->sink(a->context, tile);
+  return true;
+}
+
+}  // namespace
+
+Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,
+              void* workspace, size_t workspace_bytes, TileSink sink, void* context) {
+  if (!sink) return Status::null_argument;
+  RenderBuffers buffers;
+  buffers.tile[0] = tile_buffer;
+  buffers.tile_bytes = tile_buffer_bytes;
+  buffers.workspace = workspace;
+  buffers.workspace_bytes = workspace_bytes;
+  TileSinkAdapter adapter{sink, context};
+  return render(blob, params, buffers, forward_tile, &adapter);
 }
 
 }  // namespace tristream::core

@@ -224,3 +224,75 @@ TEST_CASE("the C interface renders the same pixels as the C++ one") {
   CHECK(std::string(ts_status_text(ts_open(broken.data(), broken.size(), &blob, &offset))).find("magic") !=
         std::string::npos);
 }
+
+// Issue 16 (a second tile buffer, a sink that stops the frame) and issue 18 item 9 (packed tiles,
+// empty viewports).
+TEST_CASE("two tile buffers alternate, a sink can stop the frame, tiles can be packed") {
+  const auto bytes = sample_blob(core::Method::bilinear);
+  core::Blob blob;
+  REQUIRE(core::open_blob(bytes.data(), bytes.size(), &blob) == core::Status::ok);
+  core::RenderParams p;
+  p.tile_width = 16;
+  p.tile_height = 8;
+  std::size_t tile = 0, work = 0;
+  REQUIRE(core::tile_buffer_size(blob, p, &tile) == core::Status::ok);
+  REQUIRE(core::workspace_size(blob, p, &work) == core::Status::ok);
+  std::vector<std::uint8_t> one(tile), a(tile), b(tile), ws(work);
+  // The reference: one buffer, every tile's pixels copied out by row.
+  struct Copy {
+    std::vector<std::vector<std::uint8_t>> tiles;
+    std::vector<const std::uint8_t*> where;
+    int stop_after = -1;
+  };
+  auto collect = [](void* c, const core::Tile* t) {
+    Copy* copy = static_cast<Copy*>(c);
+    std::vector<std::uint8_t> px;
+    const int row = t->rect.width() * core::bytes_per_pixel(t->format);
+    for (int y = 0; y < t->rect.height(); ++y) px.insert(px.end(), t->pixels + y * t->stride, t->pixels + y * t->stride + row);
+    copy->tiles.push_back(px);
+    copy->where.push_back(t->pixels);
+    return copy->stop_after < 0 || int(copy->tiles.size()) < copy->stop_after;
+  };
+  Copy single;
+  core::RenderBuffers buffers;
+  buffers.tile[0] = one.data();
+  buffers.tile_bytes = tile;
+  buffers.workspace = ws.data();
+  buffers.workspace_bytes = ws.size();
+  REQUIRE(core::render(blob, p, buffers, collect, &single) == core::Status::ok);
+  REQUIRE(single.tiles.size() > 4);
+
+  Copy twice;
+  buffers.tile[0] = a.data();
+  buffers.tile[1] = b.data();
+  REQUIRE(core::render(blob, p, buffers, collect, &twice) == core::Status::ok);
+  CHECK(twice.tiles == single.tiles);
+  for (std::size_t k = 0; k < twice.where.size(); ++k) CHECK(twice.where[k] == (k % 2 ? b.data() : a.data()));
+
+  Copy stopped;
+  stopped.stop_after = 3;
+  CHECK(core::render(blob, p, buffers, collect, &stopped) == core::Status::stopped);
+  CHECK(stopped.tiles.size() == 3);
+
+  // Packed tiles: the same pixels, every tile's rows back to back (the narrower last column too).
+  Copy packed;
+  core::RenderParams pp = p;
+  pp.packed_tiles = true;
+  auto check_stride = [](void* c, const core::Tile* t) {
+    static_cast<Copy*>(c)->where.push_back(nullptr);
+    return t->stride == t->rect.width() * core::bytes_per_pixel(t->format);
+  };
+  REQUIRE(core::render(blob, pp, buffers, check_stride, &packed) == core::Status::ok);
+  CHECK(packed.where.size() == single.tiles.size());
+  Copy packed_pixels;
+  REQUIRE(core::render(blob, pp, buffers, collect, &packed_pixels) == core::Status::ok);
+  CHECK(packed_pixels.tiles == single.tiles);
+
+  // A viewport of all zeros is the whole output; any other empty one is refused.
+  core::RenderParams empty = p;
+  for (core::Rect r : {core::Rect{5, 5, 5, 9}, core::Rect{0, 3, 10, 3}, core::Rect{7, 0, 2, 4}}) {
+    empty.viewport = r;
+    CHECK(core::render(blob, empty, buffers, collect, &packed_pixels) == core::Status::bad_params);
+  }
+  CHECK(core::render(blob, p, buffers, nullptr, nullptr) == core::Status::null_argument);
+}

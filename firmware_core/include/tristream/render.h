@@ -15,7 +15,8 @@ struct RenderParams {
   // (i * (W-1) / (W'-1), j * (H-1) / (H'-1)): corners map to corners.
   uint16_t output_width = 0;
   uint16_t output_height = 0;
-  // The part of the output to render, in output pixels; an empty rectangle means all of it.
+  // The part of the output to render, in output pixels; all zeros means all of it, and any other
+  // empty rectangle (x0 == x1 or y0 == y1, as from a dirty rectangle of no area) is bad_params.
   Rect viewport;
   // Tile size in pixels; 0 means the viewport's width (bands) or height (one band).
   uint16_t tile_width = 0;
@@ -25,7 +26,27 @@ struct RenderParams {
   bool dither = false;
   // Colour of pixels outside the triangulation's domain (R, G, B; grey uses the first).
   uint8_t background[3] = {0, 0, 0};
+  // Every tile's rows back to back (stride = the tile's own width in bytes, also for the narrower
+  // tiles of the last column), so a tile is one contiguous transfer; otherwise the stride is the
+  // tile width's.
+  bool packed_tiles = false;
 };
+
+// Caller memory of a render: one tile buffer, or two that the tiles alternate between (double
+// buffering: the sink may hand a tile to a DMA transfer and return at once), and the workspace.
+struct RenderBuffers {
+  void* tile[2] = {nullptr, nullptr};  // tile[1] null: every tile in tile[0]
+  size_t tile_bytes = 0;               // bytes of each tile buffer (tile_buffer_size)
+  void* workspace = nullptr;
+  size_t workspace_bytes = 0;          // workspace_size
+};
+
+// Receives each finished tile (in the order of TileSink) and returns whether to go on: false stops
+// the frame, and render returns Status::stopped. With two tile buffers, tile k + 1 goes into the
+// buffer of tile k - 1 as soon as the sink returns from tile k: the sink must not return from tile
+// k while a transfer of tile k - 1 still reads its buffer (wait for it there), and after render
+// returns the last tile's transfer may still be running.
+using FrameSink = bool (*)(void* context, const Tile* tile);
 
 // Bytes of the tile buffer: tile width * tile height * bytes per pixel (tile size after defaults).
 Status tile_buffer_size(const Blob& blob, const RenderParams& params, size_t* bytes);
@@ -41,5 +62,8 @@ Status workspace_size(const Blob& blob, const RenderParams& params, size_t* byte
 // output does not depend on the tile size. Never allocates.
 Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,
               void* workspace, size_t workspace_bytes, TileSink sink, void* context);
+// The same with one or two tile buffers and a sink that may stop the frame early.
+Status render(const Blob& blob, const RenderParams& params, const RenderBuffers& buffers, FrameSink sink,
+              void* context);
 
 }  // namespace tristream::core

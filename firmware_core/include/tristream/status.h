@@ -23,6 +23,7 @@ enum class [[nodiscard]] Status : uint8_t {
   tile_buffer_too_small,  // tile buffer smaller than tile_buffer_size() says
   not_compiled,         // pixel format or method left out of this build (TS_PIXEL_FORMATS, TS_METHODS)
   workspace_too_small,  // workspace smaller than workspace_size() says (checked before the first tile)
+  stopped,              // the sink stopped the frame (FrameSink returned false)
 };
 
 // A short English description, for logs.
