@@ -7,6 +7,28 @@ namespace core = tristream::core;
 static_assert(sizeof(core::Blob) <= sizeof(ts_blob), "ts_blob must hold a core::Blob");
 static_assert(alignof(core::Blob) <= alignof(ts_blob), "ts_blob must be aligned for a core::Blob");
 
+// Every C status name is the value of its C++ enumerator, and none is missing.
+#define TS_SAME_STATUS(c_name, cxx_name) \
+  static_assert(c_name == int(core::Status::cxx_name), #c_name " must equal Status::" #cxx_name);
+TS_SAME_STATUS(TS_OK, ok)
+TS_SAME_STATUS(TS_NULL_ARGUMENT, null_argument)
+TS_SAME_STATUS(TS_TRUNCATED, truncated)
+TS_SAME_STATUS(TS_BAD_MAGIC, bad_magic)
+TS_SAME_STATUS(TS_BAD_VERSION, bad_version)
+TS_SAME_STATUS(TS_CONFIG_MISMATCH, config_mismatch)
+TS_SAME_STATUS(TS_BAD_HEADER, bad_header)
+TS_SAME_STATUS(TS_BAD_SECTION, bad_section)
+TS_SAME_STATUS(TS_TOO_LARGE, too_large)
+TS_SAME_STATUS(TS_COORDINATE_OUT_OF_RANGE, coordinate_out_of_range)
+TS_SAME_STATUS(TS_VALUE_OUT_OF_RANGE, value_out_of_range)
+TS_SAME_STATUS(TS_BAD_INDEX, bad_index)
+TS_SAME_STATUS(TS_BAD_TRIANGLE, bad_triangle)
+TS_SAME_STATUS(TS_UNSORTED, unsorted)
+TS_SAME_STATUS(TS_BAD_PARAMS, bad_params)
+TS_SAME_STATUS(TS_BUFFER_TOO_SMALL, buffer_too_small)
+TS_SAME_STATUS(TS_NOT_COMPILED, not_compiled)
+#undef TS_SAME_STATUS
+
 namespace {
 
 const core::Blob* view(const ts_blob* b) { return reinterpret_cast<const core::Blob*>(b); }

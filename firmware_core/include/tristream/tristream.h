@@ -12,9 +12,28 @@
 extern "C" {
 #endif
 
-/* Status codes: the values of tristream::core::Status. 0 is success. */
+/* Status codes: the values of tristream::core::Status (status.h has what each means), named
+   TS_ plus the C++ enumerator in capitals; c_api.cpp checks each against the C++ enum. */
 typedef int ts_status;
-#define TS_OK 0
+enum {
+  TS_OK = 0,
+  TS_NULL_ARGUMENT = 1,
+  TS_TRUNCATED = 2,
+  TS_BAD_MAGIC = 3,
+  TS_BAD_VERSION = 4,
+  TS_CONFIG_MISMATCH = 5,
+  TS_BAD_HEADER = 6,
+  TS_BAD_SECTION = 7,
+  TS_TOO_LARGE = 8,
+  TS_COORDINATE_OUT_OF_RANGE = 9,
+  TS_VALUE_OUT_OF_RANGE = 10,
+  TS_BAD_INDEX = 11,
+  TS_BAD_TRIANGLE = 12,
+  TS_UNSORTED = 13,
+  TS_BAD_PARAMS = 14,
+  TS_BUFFER_TOO_SMALL = 15,
+  TS_NOT_COMPILED = 16
+};
 
 /* Pixel formats: the values of tristream::core::PixelFormat. */
 enum { TS_L8 = 0, TS_RGB888 = 1, TS_RGB565_LE = 2, TS_RGB565_BE = 3, TS_XRGB8888 = 4, TS_COVERAGE8 = 5 };
