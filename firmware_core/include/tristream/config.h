@@ -37,7 +37,7 @@
    the default set nor in the C API). Firmware that drives one display saves the flash of the
    other formats' code; asking for a format that is not compiled in returns Status::not_compiled. */
 #ifndef TS_PIXEL_FORMATS
-#define TS_PIXEL_FORMATS 0x3F
+#define TS_PIXEL_FORMATS 0x1F
 #endif
 
 /* Interpolation methods compiled in: bit 0 bilinear, bit 1 zienkiewicz. A blob of another

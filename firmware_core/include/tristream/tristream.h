@@ -36,7 +36,7 @@ enum {
 };
 
 /* Pixel formats: the values of tristream::core::PixelFormat. */
-enum { TS_L8 = 0, TS_RGB888 = 1, TS_RGB565_LE = 2, TS_RGB565_BE = 3, TS_XRGB8888 = 4, TS_COVERAGE8 = 5 };
+enum { TS_L8 = 0, TS_RGB888 = 1, TS_RGB565_LE = 2, TS_RGB565_BE = 3, TS_XRGB8888 = 4 };
 
 /* An opened (validated) blob; treat as opaque. */
 typedef struct ts_blob {
