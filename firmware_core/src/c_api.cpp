@@ -33,14 +33,27 @@ namespace {
 
 const core::Blob* view(const ts_blob* b) { return reinterpret_cast<const core::Blob*>(b); }
 
+// The C formats start at 1 (0 is TS_FORMAT_UNSET); coverage counts, a test aid, have none.
+constexpr core::PixelFormat c_formats[] = {core::PixelFormat::l8, core::PixelFormat::rgb888,
+                                           core::PixelFormat::rgb565_le, core::PixelFormat::rgb565_be,
+                                           core::PixelFormat::xrgb8888};
+static_assert(TS_L8 == 1 && TS_RGB888 == 2 && TS_RGB565_LE == 3 && TS_RGB565_BE == 4 && TS_XRGB8888 == 5,
+              "c_formats lists the C formats in order");
+
+int c_format(core::PixelFormat f) {
+  for (int i = 0; i < int(sizeof c_formats / sizeof c_formats[0]); ++i)
+    if (c_formats[i] == f) return i + 1;
+  return TS_FORMAT_UNSET;
+}
+
 bool convert(const ts_params* p, core::RenderParams* out) {
-  if (!p || p->format < 0 || p->format >= core::pixel_format_count) return false;
+  if (!p || p->format < TS_L8 || p->format > TS_XRGB8888) return false;
   out->output_width = p->output_width;
   out->output_height = p->output_height;
   out->viewport = core::Rect{p->viewport.x0, p->viewport.y0, p->viewport.x1, p->viewport.y1};
   out->tile_width = p->tile_width;
   out->tile_height = p->tile_height;
-  out->format = core::PixelFormat(p->format);
+  out->format = c_formats[p->format - 1];
   out->dither = p->dither != 0;
   for (int c = 0; c < 3; ++c) out->background[c] = p->background[c];
   return true;
@@ -57,7 +70,7 @@ void forward(void* context, const core::Tile* tile) {
   t.pixels = tile->pixels;
   t.stride = tile->stride;
   t.rect = ts_rect{tile->rect.x0, tile->rect.y0, tile->rect.x1, tile->rect.y1};
-  t.format = int(tile->format);
+  t.format = c_format(tile->format);
   a->sink(a->context, &t);
 }
 

@@ -25,7 +25,7 @@ int use_header(const void* bytes, size_t size) {
   ts_status s = ts_open(bytes, size, &blob, (uint32_t*)0);
   params.format = TS_RGB565_BE;
   if (s == TS_OK) s = ts_render(&blob, &params, tile, sizeof tile, work, sizeof work, sink, (void*)0);
-  return s == TS_BAD_PARAMS || s == TS_NOT_COMPILED ? 1 : (int)s;
+  return s == TS_BAD_PARAMS || s == TS_NOT_COMPILED || params.format == TS_FORMAT_UNSET ? 1 : (int)s;
 }
 SRC
 cp "$work/use_header.c" "$work/use_header.cpp"

@@ -13,6 +13,7 @@
 #include "core_bridge/render_core.h"
 #include "io/atomic_file.h"
 #include "io/tri_file.h"
+#include "tristream/tristream.h"
 
 using namespace tristream;
 
@@ -22,7 +23,7 @@ struct Request {
   std::string input;
   std::string output;
   std::string method = "bilinear";
-  std::string format = "rgb565le";
+  std::string format = "rgb565be";
   int tile = 32;
   int width = 0;
   int height = 0;
@@ -35,6 +36,19 @@ std::string identifier_of(const std::string& path) {
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   if (id.empty() || std::isdigit(static_cast<unsigned char>(id[0]))) id = "blob_" + id;
   return id;
+}
+
+// The C API's value of a format (tristream.h: TS_L8 = 1 ... TS_XRGB8888 = 5).
+int c_format(core::PixelFormat f) {
+  switch (f) {
+    case core::PixelFormat::l8: return TS_L8;
+    case core::PixelFormat::rgb888: return TS_RGB888;
+    case core::PixelFormat::rgb565_le: return TS_RGB565_LE;
+    case core::PixelFormat::rgb565_be: return TS_RGB565_BE;
+    case core::PixelFormat::xrgb8888: return TS_XRGB8888;
+    case core::PixelFormat::coverage8: break;
+  }
+  throw UsageError("coverage8 has no C format");
 }
 
 std::string upper(std::string s) {
@@ -59,7 +73,7 @@ std::string c_source(const std::string& id, const std::string& header_name, cons
   s += "\n};\n\nconst ts_blob_descriptor " + id + " = {\n  " + id + "_bytes, sizeof " + id + "_bytes,\n  " +
        std::to_string(b.width) + ", " + std::to_string(b.height) + ", " +
        std::to_string(req.width ? req.width : b.width) + ", " + std::to_string(req.height ? req.height : b.height) +
-       ",\n  " + std::to_string(req.tile) + ", " + std::to_string(req.tile) + ", " + std::to_string(int(format)) +
+       ",\n  " + std::to_string(req.tile) + ", " + std::to_string(req.tile) + ", " + std::to_string(c_format(format)) +
        ",\n  " + std::to_string(tile_bytes) + ", " + std::to_string(work_bytes) + "\n};\n";
   return s;
 }
@@ -86,7 +100,9 @@ int main(int argc, char** argv) {
   app.add_option("-m,--method", req.method, "Interpolation method")
       ->check(CLI::IsMember({"bilinear", "zienkiewicz"}))
       ->capture_default_str();
-  app.add_option("-f,--format", req.format, "Pixel format the RAM figure is for")
+  app.add_option("-f,--format", req.format,
+                 "Pixel format the RAM figure and the descriptor are for; a display on SPI (ST7789, ILI9341) "
+                 "wants rgb565be, RGB565 high byte first")
       ->check(CLI::IsMember({"l8", "rgb888", "rgb565le", "rgb565be", "xrgb8888"}))
       ->capture_default_str();
   app.add_option("--tile", req.tile, "Square tile side the RAM figure is for (0 = full frame)")

@@ -35,8 +35,17 @@ enum {
   TS_NOT_COMPILED = 16
 };
 
-/* Pixel formats: the values of tristream::core::PixelFormat. */
-enum { TS_L8 = 0, TS_RGB888 = 1, TS_RGB565_LE = 2, TS_RGB565_BE = 3, TS_XRGB8888 = 4 };
+/* Pixel formats (tristream/pixel_format.h has their bytes). 0 is no format: a zeroed ts_params
+   is refused with TS_BAD_PARAMS rather than rendered in a format nobody chose. An SPI display
+   such as the ST7789 or ILI9341 takes TS_RGB565_BE (high byte first). */
+enum {
+  TS_FORMAT_UNSET = 0,
+  TS_L8 = 1,
+  TS_RGB888 = 2,
+  TS_RGB565_LE = 3,
+  TS_RGB565_BE = 4,
+  TS_XRGB8888 = 5
+};
 
 /* An opened (validated) blob; treat as opaque. */
 typedef struct ts_blob {
@@ -51,7 +60,7 @@ typedef struct ts_tile {
   uint8_t* pixels;
   int32_t stride; /* bytes per row */
   ts_rect rect;
-  int format;
+  int format; /* TS_L8 ... TS_XRGB8888 */
 } ts_tile;
 
 typedef void (*ts_sink)(void* context, const ts_tile* tile);
@@ -64,7 +73,7 @@ typedef struct ts_blob_descriptor {
   uint16_t width, height;               /* the triangulation's size */
   uint16_t output_width, output_height; /* the size the RAM figures are for */
   uint16_t tile_width, tile_height;
-  int format;
+  int format; /* TS_L8 ... TS_XRGB8888 */
   size_t tile_buffer_bytes;
   size_t workspace_bytes;
 } ts_blob_descriptor;
@@ -73,13 +82,14 @@ typedef struct ts_params {
   uint16_t output_width, output_height; /* 0: the blob's size */
   ts_rect viewport;                     /* empty: the whole output */
   uint16_t tile_width, tile_height;     /* 0: the viewport's width / height */
-  int format;
+  int format;                           /* required: TS_L8 ... TS_XRGB8888 */
   int dither; /* nonzero: Bayer dithering for RGB565 */
   uint8_t background[3];
 } ts_params;
 
 /* Validates `size` bytes and fills `blob`. On failure *error_offset (if not null) is the byte
-   offset of the offending field. Returns TS_OK or a status code. */
+   offset of the offending field. Returns TS_OK or a status code. The blob is read in place by
+   every later call: its bytes must stay where they are, unchanged, while `blob` is used. */
 ts_status ts_open(const void* bytes, size_t size, ts_blob* blob, uint32_t* error_offset);
 /* Bytes of tile buffer and of workspace needed for these parameters. */
 ts_status ts_tile_buffer_size(const ts_blob* blob, const ts_params* params, size_t* bytes);
