@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Compiles a file that includes the public C header (tristream/tristream.h) alone and uses its
+# Compiles a file that includes the public C headers (tristream/tristream.h, version.h) alone and uses its
 # names, once per language mode: C89 through C2x and C++98 through C++20, each with
 # -Wall -Wextra -pedantic -Werror. Fails naming the first mode that does not compile.
 # Usage: check_c_header.sh CC CXX INCLUDE_DIR WORK_DIR
@@ -11,6 +11,7 @@ work=${4:?}
 mkdir -p "$work"
 cat >"$work/use_header.c" <<'SRC'
 #include "tristream/tristream.h"
+#include "tristream/version.h"
 
 static void sink(void* context, const ts_tile* tile) {
   (void)context;
@@ -22,7 +23,9 @@ int use_header(const void* bytes, size_t size) {
   ts_params params;
   static uint8_t tile[16];
   static uint8_t work[64];
+  const char* version = TRISTREAM_VERSION;
   ts_status s = ts_open(bytes, size, &blob, (uint32_t*)0);
+  (void)version;
   params.format = TS_RGB565_BE;
   if (s == TS_OK) s = ts_render(&blob, &params, tile, sizeof tile, work, sizeof work, sink, (void*)0);
   return s == TS_BAD_PARAMS || s == TS_NOT_COMPILED || params.format == TS_FORMAT_UNSET ? 1 : (int)s;
