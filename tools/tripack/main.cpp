@@ -118,17 +118,17 @@ int main(int argc, char** argv) {
       j["workspace_max_bytes"] = bound.workspace_bytes;
       std::printf("%s\n", j.dump(2).c_str());
     } else {
-      const std::string tiles =
-          o.tile_width == 0 && o.tile_height == 0
-              ? std::string("full frame")
-              : "tiles " + (o.tile_width ? std::to_string(o.tile_width) : std::string("full-width")) + "x" +
-                    (o.tile_height ? std::to_string(o.tile_height) : std::string("full-height"));
+      const std::string w = o.tile_width ? std::to_string(o.tile_width) : std::string("full-width");
+      const std::string h = o.tile_height ? std::to_string(o.tile_height) : std::string("full-height");
+      const std::string tiles = o.tile_width == 0 && o.tile_height == 0 ? std::string("full frame")
+                                : o.tile_width == 0 ? "bands of " + h + " rows"
+                                                    : "tiles " + w + "x" + h;
       std::printf("%s: blob %zu bytes (%s)\n", req.output.c_str(), blob.size(), req.method.c_str());
       std::printf("RAM for %s, %s: tile buffer %zu + workspace %zu = %zu bytes\n", req.format.c_str(), tiles.c_str(),
                   sizes.tile_buffer_bytes(), sizes.workspace_bytes(), ram);
-      std::printf("upper bound for any output up to %dx%d, any viewport and tile up to that: tile buffer %zu + "
-                  "workspace %zu = %zu bytes\n",
-                  out_w, out_h, bound.tile_buffer_bytes, bound.workspace_bytes,
+      std::printf("upper bound for outputs up to %dx%d, any viewport, %s at most: tile buffer %zu + workspace %zu = "
+                  "%zu bytes\n",
+                  out_w, out_h, tiles.c_str(), bound.tile_buffer_bytes, bound.workspace_bytes,
                   bound.tile_buffer_bytes + bound.workspace_bytes);
     }
     return exit_ok;
