@@ -15,6 +15,8 @@ tri=$src/data/demo/kodim23.rgb.tri
 "$bin/display_zoom" "$out/display_zoom.ppm"
 "$bin/trisim" render "$tri" --engine core -m bilinear --format rgb565be --width 960 --height 640 -o "$out/zoom.ref.png"
 
+/usr/bin/python3 -c 'import PIL' 2>/dev/null ||
+  { echo "check_examples: needs Python's PIL (python3-pil: tools/install-deps.sh experiments)" >&2; exit 1; }
 /usr/bin/python3 - "$out" <<'PY'
 import sys
 from PIL import Image

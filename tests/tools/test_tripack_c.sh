@@ -3,13 +3,15 @@
 # links with the core for awkward output names (a keyword, a quote, a leading digit, the C API's
 # prefix) and with --symbol; the header refuses, at compile time, a core without the blob's
 # method or the descriptor's format or of another precision; TS_BLOB_SECTION and TS_BLOB_ALIGN
-# place the bytes. Usage: test_tripack_c.sh TRIPACK CC INCLUDE_DIR CORE_LIBRARY SOURCE_DIR
+# place the bytes. Usage: test_tripack_c.sh TRIPACK CC INCLUDE_DIR CORE_LIBRARY SOURCE_DIR [LINK_FLAGS]
+# (LINK_FLAGS: what the core library was built with that its users must link, e.g. sanitizers)
 set -uo pipefail
 tripack=$1
 cc=$2
 include=$3
 core=$4
 src=$5
+link_flags=${6:-}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failures=0
@@ -61,7 +63,7 @@ builds() {
       fail "-o '$name': a user of the header ($symbol) does not compile as $std: $(head -c 400 "$dir/err")"; return
     fi
   done
-  if ! "$cc" "$dir/main.c99.o" "$dir/blob.c99.o" "$core" -o "$dir/run" 2>"$dir/err" || ! "$dir/run" >"$dir/out"; then
+  if ! "$cc" $link_flags "$dir/main.c99.o" "$dir/blob.c99.o" "$core" -o "$dir/run" 2>"$dir/err" || ! "$dir/run" >"$dir/out"; then
     fail "-o '$name': does not link or render: $(cat "$dir/err" "$dir/out" | head -c 400)"; return
   fi
   pass
