@@ -1,14 +1,14 @@
 # tristream: every target installs what it needs first (tools/install-deps.sh), then builds.
-#   make run     build, then render the demo data with every method into out/ and print a table
+#   make run     build the tools only, then render the demo data with every method into out/ and print a table
 #   make test    build, then run every test through ctest
-# More: make build | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | clean
+# More: make build | tools | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | clean
 
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
 FUZZ_TIME  ?= 60
 BENCH_MCU_ARGS ?=
 
-.PHONY: all deps build run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick
+.PHONY: all deps build tools run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick
 
 all: build
 
@@ -19,7 +19,12 @@ build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j$(JOBS)
 
-run: build
+# The tools alone (trisim, tripack, triencode): no tests, examples or benchmarks.
+tools: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j$(JOBS) --target tristream_tools
+
+run: tools
 	bash tools/run-demo.sh $(BUILD)/bin out
 
 # The mcu group first: the build finds unicorn and capstone when it configures (bench_mcu tests).

@@ -7,20 +7,58 @@ namespace core = tristream::core;
 static_assert(sizeof(core::Blob) <= sizeof(ts_blob), "ts_blob must hold a core::Blob");
 static_assert(alignof(core::Blob) <= alignof(ts_blob), "ts_blob must be aligned for a core::Blob");
 
+// Every C status name is the value of its C++ enumerator, and none is missing.
+#define TS_SAME_STATUS(c_name, cxx_name) \
+  static_assert(c_name == int(core::Status::cxx_name), #c_name " must equal Status::" #cxx_name);
+TS_SAME_STATUS(TS_OK, ok)
+TS_SAME_STATUS(TS_NULL_ARGUMENT, null_argument)
+TS_SAME_STATUS(TS_TRUNCATED, truncated)
+TS_SAME_STATUS(TS_BAD_MAGIC, bad_magic)
+TS_SAME_STATUS(TS_BAD_VERSION, bad_version)
+TS_SAME_STATUS(TS_CONFIG_MISMATCH, config_mismatch)
+TS_SAME_STATUS(TS_BAD_HEADER, bad_header)
+TS_SAME_STATUS(TS_BAD_SECTION, bad_section)
+TS_SAME_STATUS(TS_TOO_LARGE, too_large)
+TS_SAME_STATUS(TS_COORDINATE_OUT_OF_RANGE, coordinate_out_of_range)
+TS_SAME_STATUS(TS_VALUE_OUT_OF_RANGE, value_out_of_range)
+TS_SAME_STATUS(TS_BAD_INDEX, bad_index)
+TS_SAME_STATUS(TS_BAD_TRIANGLE, bad_triangle)
+TS_SAME_STATUS(TS_UNSORTED, unsorted)
+TS_SAME_STATUS(TS_BAD_PARAMS, bad_params)
+TS_SAME_STATUS(TS_TILE_BUFFER_TOO_SMALL, tile_buffer_too_small)
+TS_SAME_STATUS(TS_NOT_COMPILED, not_compiled)
+TS_SAME_STATUS(TS_WORKSPACE_TOO_SMALL, workspace_too_small)
+TS_SAME_STATUS(TS_STOPPED, stopped)
+#undef TS_SAME_STATUS
+
 namespace {
 
 const core::Blob* view(const ts_blob* b) { return reinterpret_cast<const core::Blob*>(b); }
 
+// The C formats start at 1 (0 is TS_FORMAT_UNSET); coverage counts, a test aid, have none.
+constexpr core::PixelFormat c_formats[] = {core::PixelFormat::l8, core::PixelFormat::rgb888,
+                                           core::PixelFormat::rgb565_le, core::PixelFormat::rgb565_be,
+                                           core::PixelFormat::xrgb8888};
+static_assert(TS_L8 == 1 && TS_RGB888 == 2 && TS_RGB565_LE == 3 && TS_RGB565_BE == 4 && TS_XRGB8888 == 5,
+              "c_formats lists the C formats in order");
+
+int c_format(core::PixelFormat f) {
+  for (int i = 0; i < int(sizeof c_formats / sizeof c_formats[0]); ++i)
+    if (c_formats[i] == f) return i + 1;
+  return TS_FORMAT_UNSET;
+}
+
 bool convert(const ts_params* p, core::RenderParams* out) {
-  if (!p || p->format < 0 || p->format >= core::pixel_format_count) return false;
+  if (!p || p->format < TS_L8 || p->format > TS_XRGB8888) return false;
   out->output_width = p->output_width;
   out->output_height = p->output_height;
   out->viewport = core::Rect{p->viewport.x0, p->viewport.y0, p->viewport.x1, p->viewport.y1};
   out->tile_width = p->tile_width;
   out->tile_height = p->tile_height;
-  out->format = core::PixelFormat(p->format);
+  out->format = c_formats[p->format - 1];
   out->dither = p->dither != 0;
   for (int c = 0; c < 3; ++c) out->background[c] = p->background[c];
+  out->packed_tiles = p->packed_tiles != 0;
   return true;
 }
 
@@ -29,14 +67,30 @@ struct SinkAdapter {
   void* context;
 };
 
-void forward(void* context, const core::Tile* tile) {
-  const SinkAdapter* a = static_cast<const SinkAdapter*>(context);
+ts_tile c_tile(const core::Tile* tile) {
   ts_tile t;
   t.pixels = tile->pixels;
   t.stride = tile->stride;
   t.rect = ts_rect{tile->rect.x0, tile->rect.y0, tile->rect.x1, tile->rect.y1};
-  t.format = int(tile->format);
+  t.format = c_format(tile->format);
+  return t;
+}
+
+void forward(void* context, const core::Tile* tile) {
+  const SinkAdapter* a = static_cast<const SinkAdapter*>(context);
+  const ts_tile t = c_tile(tile);
   a->sink(a->context, &t);
+}
+
+struct FrameSinkAdapter {
+  ts_frame_sink sink;
+  void* context;
+};
+
+bool forward_frame(void* context, const core::Tile* tile) {
+  const FrameSinkAdapter* a = static_cast<const FrameSinkAdapter*>(context);
+  const ts_tile t = c_tile(tile);
+  return a->sink(a->context, &t) != 0;
 }
 
 }  // namespace
@@ -74,6 +128,21 @@ ts_status ts_render(const ts_blob* blob, const ts_params* params, void* tile_buf
   if (!convert(params, &p)) return ts_status(core::Status::bad_params);
   SinkAdapter adapter{sink, context};
   return ts_status(core::render(*view(blob), p, tile_buffer, tile_buffer_size, workspace, workspace_size, forward, &adapter));
+}
+
+ts_status ts_render_frame(const ts_blob* blob, const ts_params* params, const ts_buffers* buffers, ts_frame_sink sink,
+                          void* context) {
+  core::RenderParams p;
+  if (!blob || !buffers || !sink) return ts_status(core::Status::null_argument);
+  if (!convert(params, &p)) return ts_status(core::Status::bad_params);
+  core::RenderBuffers b;
+  b.tile[0] = buffers->tile[0];
+  b.tile[1] = buffers->tile[1];
+  b.tile_bytes = buffers->tile_size;
+  b.workspace = buffers->workspace;
+  b.workspace_bytes = buffers->workspace_size;
+  FrameSinkAdapter adapter{sink, context};
+  return ts_status(core::render(*view(blob), p, b, forward_frame, &adapter));
 }
 
 const char* ts_status_text(ts_status status) { return core::status_text(core::Status(status)); }

@@ -1,18 +1,21 @@
 #pragma once
 // The shared frame of every command-line tool: runs the body, prints diagnostics on stderr
-// as "<tool>: <message>" and maps each error type to its exit code (common/errors.h).
+// as "<tool>: <message>" and maps each error type to its exit code (common/errors.h). Gives every
+// tool --version (the one version of tristream/version.h).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <string>
 
 #include "common/errors.h"
+#include "tristream/version.h"
 
 namespace tristream {
 
 template <class Body>
 int run_tool(const char* tool, CLI::App& app, int argc, char** argv, Body&& body) {
   try {
+    app.set_version_flag("--version", std::string(tool) + " (tristream) " + TRISTREAM_VERSION);
     try {
       app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -12,12 +12,14 @@ static uint8_t seen[512 * 768];
 struct count {
   long tiles;
   long pixels;
+  long wrong_format;
 };
 
 static void sink(void* context, const ts_tile* tile) {
   struct count* c = (struct count*)context;
   int x, y;
   c->tiles++;
+  if (tile->format != demo_blob.format) c->wrong_format++;
   for (y = tile->rect.y0; y < tile->rect.y1; ++y)
     for (x = tile->rect.x0; x < tile->rect.x1; ++x) {
       if (!seen[y * 768 + x]) c->pixels++;
@@ -28,7 +30,7 @@ static void sink(void* context, const ts_tile* tile) {
 int main(void) {
   ts_blob blob;
   ts_params params;
-  struct count c = {0, 0};
+  struct count c = {0, 0, 0};
   uint32_t offset = 0;
   ts_status s = ts_open(demo_blob.bytes, demo_blob.size, &blob, &offset);
   if (s != TS_OK) {
@@ -36,6 +38,12 @@ int main(void) {
     return 1;
   }
   memset(&params, 0, sizeof params);
+  /* A zeroed ts_params names no format (TS_FORMAT_UNSET): refused, not rendered as some default. */
+  s = ts_render(&blob, &params, tile_buffer, sizeof tile_buffer, workspace, sizeof workspace, sink, &c);
+  if (s != TS_BAD_PARAMS || c.tiles != 0) {
+    fprintf(stderr, "zeroed ts_params: expected TS_BAD_PARAMS, got %d (%s)\n", s, ts_status_text(s));
+    return 1;
+  }
   params.tile_width = demo_blob.tile_width;
   params.tile_height = demo_blob.tile_height;
   params.format = demo_blob.format;
@@ -50,5 +58,5 @@ int main(void) {
   }
   printf("%ld tiles, %ld pixels, RAM %zu bytes\n", c.tiles, c.pixels,
          demo_blob.tile_buffer_bytes + demo_blob.workspace_bytes);
-  return (c.tiles == 24 * 16 && c.pixels == (long)demo_blob.width * demo_blob.height) ? 0 : 1;
+  return (c.tiles == 24 * 16 && c.wrong_format == 0 && demo_blob.format == TS_RGB565_BE && c.pixels == (long)demo_blob.width * demo_blob.height) ? 0 : 1;
 }

@@ -296,3 +296,53 @@ TEST_CASE("two tile buffers alternate, a sink can stop the frame, tiles can be p
   }
   CHECK(core::render(blob, p, buffers, nullptr, nullptr) == core::Status::null_argument);
 }
+
+TEST_CASE("each C format renders its C++ format, and a zeroed or unknown format is refused") {
+  const auto bytes = sample_blob();
+  ts_blob blob;
+  REQUIRE(ts_open(bytes.data(), bytes.size(), &blob, nullptr) == TS_OK);
+  struct Pair {
+    int c;
+    core::PixelFormat cxx;
+  };
+  for (const Pair& f : {Pair{TS_L8, core::PixelFormat::l8}, Pair{TS_RGB888, core::PixelFormat::rgb888},
+                        Pair{TS_RGB565_LE, core::PixelFormat::rgb565_le}, Pair{TS_RGB565_BE, core::PixelFormat::rgb565_be},
+                        Pair{TS_XRGB8888, core::PixelFormat::xrgb8888}}) {
+    ts_params p{};
+    p.format = f.c;
+    const int bpp = core::bytes_per_pixel(f.cxx);
+    std::size_t tile = 0, work = 0;
+    REQUIRE(ts_tile_buffer_size(&blob, &p, &tile) == TS_OK);
+    REQUIRE(ts_workspace_size(&blob, &p, &work) == TS_OK);
+    CHECK(tile == std::size_t(40 * 30 * bpp));
+    struct Frame {
+      std::vector<std::uint8_t> bytes;
+      int bpp;
+      int format;
+      int wrong_format = 0;
+    } frame{std::vector<std::uint8_t>(std::size_t(40 * 30 * bpp)), bpp, f.c};
+    std::vector<std::uint8_t> tb(tile), ws(work);
+    auto sink = [](void* ctx, const ts_tile* t) {
+      auto* fr = static_cast<Frame*>(ctx);
+      fr->wrong_format += t->format != fr->format;
+      for (int y = t->rect.y0; y < t->rect.y1; ++y)
+        std::memcpy(fr->bytes.data() + (y * 40 + t->rect.x0) * fr->bpp, t->pixels + (y - t->rect.y0) * t->stride,
+                    std::size_t(t->rect.x1 - t->rect.x0) * fr->bpp);
+    };
+    REQUIRE(ts_render(&blob, &p, tb.data(), tb.size(), ws.data(), ws.size(), sink, &frame) == TS_OK);
+    CHECK(frame.wrong_format == 0);
+    CoreOptions o;
+    o.format = f.cxx;
+    CHECK(bytes_differing(core_frame(bytes, o, {0, 0}).bytes, frame.bytes) == 0);
+  }
+  std::uint8_t tb[64], ws[64];
+  auto never = [](void*, const ts_tile*) { FAIL("a refused render delivered a tile"); };
+  for (int format : {int(TS_FORMAT_UNSET), -1, int(TS_XRGB8888) + 1}) {
+    ts_params p{};
+    p.format = format;
+    std::size_t n = 0;
+    CHECK(ts_tile_buffer_size(&blob, &p, &n) == TS_BAD_PARAMS);
+    CHECK(ts_workspace_size(&blob, &p, &n) == TS_BAD_PARAMS);
+    CHECK(ts_render(&blob, &p, tb, sizeof tb, ws, sizeof ws, never, nullptr) == TS_BAD_PARAMS);
+  }
+}

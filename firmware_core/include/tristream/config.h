@@ -1,56 +1,56 @@
-#pragma once
-// Every compile-time knob of the core, with its default (C and C++). Override by defining the macro before
-// this header is included (e.g. -DTS_SUBPIXEL_BITS=4); blobs record the values that change their
-// layout (see blob_config_hash), and the core rejects a blob packed for another configuration.
+/* Every compile-time knob of the core, with its default. Override by defining the macro before
+   this header is included (e.g. -DTS_SUBPIXEL_BITS=4), and build the core and everything that
+   includes its headers with the same definitions (the CMake targets carry them); blobs record the
+   values that change their layout (see blob_config_hash), and the core rejects a blob packed for
+   another configuration. The macros are valid C89 through C2x and C++98 onward (tristream.h
+   includes this file); the typed constants at the end need C++17, the core's language. */
+#ifndef TRISTREAM_CONFIG_H
+#define TRISTREAM_CONFIG_H
+
 #include <stdint.h>
 
-// Sub-pixel bits of vertex positions (format fx28_4 by default). Positions, edge functions and
-// their bit budget are in docs/FIXED_POINT.md. With 4 bits and TS_MAX_DIMENSION 2048 every
-// coordinate difference fits 16 bits and every edge function value fits 33 bits.
+/* Sub-pixel bits of vertex positions (format fx28_4 by default). Positions, edge functions and
+   their bit budget are in docs/FIXED_POINT.md. With 4 bits and TS_MAX_DIMENSION 2048 every
+   coordinate difference fits 16 bits (signed) and every edge function value at a sample point is
+   below 2^31 in magnitude (the setup computes it in int64). */
 #ifndef TS_SUBPIXEL_BITS
 #define TS_SUBPIXEL_BITS 4
 #endif
 
-// Largest width or height, of the triangulation's domain and of the output, in pixels.
+/* Largest width or height, of the triangulation's domain and of the output, in pixels. */
 #ifndef TS_MAX_DIMENSION
 #define TS_MAX_DIMENSION 2048
 #endif
 
-// Fraction bits of the per-vertex gradients stored for zienkiewicz (format q19_12).
+/* Fraction bits of the per-vertex gradients stored for zienkiewicz (format q19_12). */
 #ifndef TS_GRADIENT_FRAC_BITS
 #define TS_GRADIENT_FRAC_BITS 12
 #endif
 
-// Largest magnitude of a stored gradient component, in value units (0..255) per domain pixel.
+/* Largest magnitude of a stored gradient component, in value units (0..255) per domain pixel. */
 #ifndef TS_MAX_GRADIENT
 #define TS_MAX_GRADIENT 32767
 #endif
 
-// 1: render_blob re-validates the blob on every call (cheap checks only: header and table).
-// Full validation is always done by open_blob.
-#ifndef TS_CHECK_HEADER_ON_RENDER
-#define TS_CHECK_HEADER_ON_RENDER 1
-#endif
-
-// Pixel formats compiled into the core, one bit per PixelFormat value: bit 0 L8, 1 RGB888,
-// 2 RGB565 little-endian, 3 RGB565 big-endian, 4 XRGB8888, 5 coverage counts (tests). Firmware
-// that drives one display saves the flash of the other formats' code; asking for a format that
-// is not compiled in returns Status::not_compiled.
+/* Pixel formats compiled into the core, one bit per PixelFormat value: bit 0 L8, 1 RGB888,
+   2 RGB565 little-endian, 3 RGB565 big-endian, 4 XRGB8888, 5 coverage counts (a test aid, not in
+   the default set nor in the C API). Firmware that drives one display saves the flash of the
+   other formats' code; asking for a format that is not compiled in returns Status::not_compiled. */
 #ifndef TS_PIXEL_FORMATS
-#define TS_PIXEL_FORMATS 0x3F
+#define TS_PIXEL_FORMATS 0x1F
 #endif
 
-// Interpolation methods compiled in: bit 0 bilinear, bit 1 zienkiewicz. A blob of another
-// method gives Status::not_compiled when rendered.
+/* Interpolation methods compiled in: bit 0 bilinear, bit 1 zienkiewicz. A blob of another
+   method gives Status::not_compiled when rendered. */
 #ifndef TS_METHODS
 #define TS_METHODS 0x3
 #endif
 
-// 1: SSE2 on x86-64 hosts: the covered columns of small triangles four columns at a time, the
-// tile cull eight triangles at a time, and the RGB pixels of bilinear spans and of
-// forward-differenced zienkiewicz rows with the three channels in vector lanes; 0: column by
-// column, triangle by triangle and channel by channel (the only choice on other targets). The
-// pixels are the same either way (test_core_golden_portable runs the golden cases with 0 on the host).
+/* 1: SSE2 on x86-64 hosts: the covered columns of small triangles four columns at a time, the
+   tile cull eight triangles at a time, and the RGB pixels of bilinear spans and of
+   forward-differenced zienkiewicz rows with the three channels in vector lanes; 0: column by
+   column, triangle by triangle and channel by channel (the only choice on other targets). The
+   pixels are the same either way (test_core_golden_portable runs the golden cases with 0 on the host). */
 #ifndef TS_USE_SSE2
 #if defined(__SSE2__)
 #define TS_USE_SSE2 1
@@ -59,10 +59,10 @@
 #endif
 #endif
 
-// 1: the setup's wide products and divisions use the compiler's 128-bit integers where it has them
-// (64-bit hosts); 0: the portable forms Cortex-M uses (four-multiply high products, the reciprocal
-// by 32-bit divisions, bilinear scan-path quotients in 15-bit chunks). The pixels are the same
-// either way (test_core_golden_portable runs the golden cases with 0 and the scalar paths on the host).
+/* 1: the setup's wide products and divisions use the compiler's 128-bit integers where it has them
+   (64-bit hosts); 0: the portable forms Cortex-M uses (four-multiply high products, the reciprocal
+   by 32-bit divisions, bilinear scan-path quotients in 15-bit chunks). The pixels are the same
+   either way (test_core_golden_portable runs the golden cases with 0 and the scalar paths on the host). */
 #ifndef TS_USE_INT128
 #if defined(__SIZEOF_INT128__)
 #define TS_USE_INT128 1
@@ -71,7 +71,10 @@
 #endif
 #endif
 
-#ifdef __cplusplus
+/* The core reads the blob in place on every render: its bytes must not change between ts_open
+   (open_blob), which validates them all, and the last render. */
+
+#if defined(__cplusplus) && __cplusplus >= 201703L
 namespace tristream::core::config {
 
 inline constexpr int subpixel_bits = TS_SUBPIXEL_BITS;
@@ -88,5 +91,7 @@ static_assert(methods != 0 && methods <= 0x3, "TS_METHODS: bits 0..1, at least o
 static_assert(gradient_frac_bits >= 0 && gradient_frac_bits <= 16, "gradient fraction bits out of range");
 static_assert(int64_t(max_gradient) << gradient_frac_bits < (int64_t(1) << 31), "gradients must fit int32");
 
-}  // namespace tristream::core::config
+}  /* namespace tristream::core::config */
+#endif
+
 #endif

@@ -12,12 +12,42 @@
 extern "C" {
 #endif
 
-/* Status codes: the values of tristream::core::Status. 0 is success. */
+/* Status codes: the values of tristream::core::Status (status.h has what each means), named
+   TS_ plus the C++ enumerator in capitals; c_api.cpp checks each against the C++ enum. */
 typedef int ts_status;
-#define TS_OK 0
+enum {
+  TS_OK = 0,
+  TS_NULL_ARGUMENT = 1,
+  TS_TRUNCATED = 2,
+  TS_BAD_MAGIC = 3,
+  TS_BAD_VERSION = 4,
+  TS_CONFIG_MISMATCH = 5,
+  TS_BAD_HEADER = 6,
+  TS_BAD_SECTION = 7,
+  TS_TOO_LARGE = 8,
+  TS_COORDINATE_OUT_OF_RANGE = 9,
+  TS_VALUE_OUT_OF_RANGE = 10,
+  TS_BAD_INDEX = 11,
+  TS_BAD_TRIANGLE = 12,
+  TS_UNSORTED = 13,
+  TS_BAD_PARAMS = 14,
+  TS_TILE_BUFFER_TOO_SMALL = 15,
+  TS_NOT_COMPILED = 16,
+  TS_WORKSPACE_TOO_SMALL = 17, /* checked before the first tile: no partial frame */
+  TS_STOPPED = 18              /* a ts_frame_sink returned 0 */
+};
 
-/* Pixel formats: the values of tristream::core::PixelFormat. */
-enum { TS_L8 = 0, TS_RGB888 = 1, TS_RGB565_LE = 2, TS_RGB565_BE = 3, TS_XRGB8888 = 4, TS_COVERAGE8 = 5 };
+/* Pixel formats (tristream/pixel_format.h has their bytes). 0 is no format: a zeroed ts_params
+   is refused with TS_BAD_PARAMS rather than rendered in a format nobody chose. An SPI display
+   such as the ST7789 or ILI9341 takes TS_RGB565_BE (high byte first). */
+enum {
+  TS_FORMAT_UNSET = 0,
+  TS_L8 = 1,
+  TS_RGB888 = 2,
+  TS_RGB565_LE = 3,
+  TS_RGB565_BE = 4,
+  TS_XRGB8888 = 5
+};
 
 /* An opened (validated) blob; treat as opaque. */
 typedef struct ts_blob {
@@ -32,10 +62,26 @@ typedef struct ts_tile {
   uint8_t* pixels;
   int32_t stride; /* bytes per row */
   ts_rect rect;
-  int format;
+  int format; /* TS_L8 ... TS_XRGB8888 */
 } ts_tile;
 
 typedef void (*ts_sink)(void* context, const ts_tile* tile);
+
+/* A sink that may stop the frame: returns nonzero to go on, 0 to stop (ts_render_frame then
+   returns TS_STOPPED). With two tile buffers, tile k + 1 goes into the buffer of tile k - 1 as soon
+   as the sink returns from tile k: the sink must not return from tile k while a transfer (DMA) of
+   tile k - 1 still reads its buffer (wait for that transfer there), and after ts_render_frame
+   returns, the last tile's transfer may still be running. */
+typedef int (*ts_frame_sink)(void* context, const ts_tile* tile);
+
+/* Caller memory of ts_render_frame: one tile buffer, or two that the tiles alternate between
+   (first, second, first, ...), each of tile_size bytes; and the workspace. */
+typedef struct ts_buffers {
+  void* tile[2]; /* tile[1] NULL: every tile in tile[0] */
+  size_t tile_size;
+  void* workspace;
+  size_t workspace_size;
+} ts_buffers;
 
 /* What tripack -o x.c emits besides the bytes: the blob and the buffer sizes it measured for
    the tile size, pixel format and output size it was given. */
@@ -45,22 +91,24 @@ typedef struct ts_blob_descriptor {
   uint16_t width, height;               /* the triangulation's size */
   uint16_t output_width, output_height; /* the size the RAM figures are for */
   uint16_t tile_width, tile_height;
-  int format;
+  int format; /* TS_L8 ... TS_XRGB8888 */
   size_t tile_buffer_bytes;
   size_t workspace_bytes;
 } ts_blob_descriptor;
 
 typedef struct ts_params {
   uint16_t output_width, output_height; /* 0: the blob's size */
-  ts_rect viewport;                     /* empty: the whole output */
+  ts_rect viewport;                     /* all zeros: the whole output; another empty one is refused */
   uint16_t tile_width, tile_height;     /* 0: the viewport's width / height */
-  int format;
+  int format;                           /* required: TS_L8 ... TS_XRGB8888 */
   int dither; /* nonzero: Bayer dithering for RGB565 */
   uint8_t background[3];
+  int packed_tiles; /* nonzero: stride = each tile's own width (a tile is one contiguous transfer) */
 } ts_params;
 
 /* Validates `size` bytes and fills `blob`. On failure *error_offset (if not null) is the byte
-   offset of the offending field. Returns TS_OK or a status code. */
+   offset of the offending field. Returns TS_OK or a status code. The blob is read in place by
+   every later call: its bytes must stay where they are, unchanged, while `blob` is used. */
 ts_status ts_open(const void* bytes, size_t size, ts_blob* blob, uint32_t* error_offset);
 /* Bytes of tile buffer and of workspace needed for these parameters. */
 ts_status ts_tile_buffer_size(const ts_blob* blob, const ts_params* params, size_t* bytes);
@@ -68,6 +116,9 @@ ts_status ts_workspace_size(const ts_blob* blob, const ts_params* params, size_t
 /* Renders the viewport; each finished tile goes to sink(context, tile). */
 ts_status ts_render(const ts_blob* blob, const ts_params* params, void* tile_buffer, size_t tile_buffer_size,
                     void* workspace, size_t workspace_size, ts_sink sink, void* context);
+/* The same with one or two tile buffers and a sink that may stop the frame. */
+ts_status ts_render_frame(const ts_blob* blob, const ts_params* params, const ts_buffers* buffers, ts_frame_sink sink,
+                          void* context);
 /* A short English description of a status code. */
 const char* ts_status_text(ts_status status);
 

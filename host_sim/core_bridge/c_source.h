@@ -1,0 +1,54 @@
+#pragma once
+// The C form of a blob (tripack -o x.c): x.c holds the bytes and a ts_blob_descriptor, x.h
+// declares it, refuses to compile against a core that cannot render it, and gives compile-time
+// upper bounds of the buffers.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tristream/blob.h"
+#include "tristream/pixel_format.h"
+
+namespace tristream {
+
+// Whether `name` can be the descriptor's C symbol: an identifier of C and C++, not a keyword of
+// either (C89 to C23, C++98 to C++20), not reserved (a leading underscore followed by an upper-case
+// letter or another underscore), not main and not in the C API's ts_ / TS_ space.
+bool is_blob_symbol(std::string_view name);
+
+// A symbol from an output path: its stem, each character outside [A-Za-z0-9_] replaced by '_',
+// prefixed with "blob_" when that is not yet a valid symbol ("int.c" -> blob_int, "7.c" -> blob_7).
+std::string blob_symbol_of(std::string_view path);
+
+// Buffer sizes that suffice for every render of `blob` in `format` with an output of at most
+// width x height, any viewport of it and tiles of at most tile_width x tile_height (0: the
+// viewport's width or height). Mirrors the layout of firmware_core's workspace (render.cpp):
+// alignment padding, the channel scratch of layered blobs (6 bytes per tile pixel), and per layer
+// an active-set bitmap, here for all of the layer's triangles (the window is never longer).
+struct BufferBounds {
+  std::size_t tile_buffer_bytes = 0;
+  std::size_t workspace_bytes = 0;
+};
+BufferBounds buffer_upper_bounds(const core::Blob& blob, core::PixelFormat format, int width, int height,
+                                 int tile_width, int tile_height);
+
+// The C value of a format (tristream.h: TS_L8 = 1 ... TS_XRGB8888 = 5); coverage8 has none
+// (throws UsageError).
+int c_format(core::PixelFormat format);
+std::string_view format_name(core::PixelFormat format);
+
+struct CBlobSpec {
+  std::string symbol;       // is_blob_symbol
+  std::string source_name;  // for the comment at the top
+  core::PixelFormat format = core::PixelFormat::rgb565_be;
+  int output_width = 0, output_height = 0;  // what the descriptor's figures are for
+  int tile_width = 0, tile_height = 0;
+  std::size_t tile_buffer_bytes = 0, workspace_bytes = 0;  // measured for exactly that
+};
+
+std::string blob_c_source(const std::vector<std::uint8_t>& bytes, const core::Blob& blob, const CBlobSpec& spec);
+std::string blob_c_header(const core::Blob& blob, const CBlobSpec& spec);
+
+}  // namespace tristream

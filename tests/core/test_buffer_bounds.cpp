@@ -1,0 +1,83 @@
+// The compile-time buffer bounds of tripack's generated header (core_bridge/c_source.h): for many
+// output sizes up to the given one, viewports of them and tile sizes up to the given one, the
+// core's own tile_buffer_size and workspace_size never exceed them, and rendering with buffers of
+// exactly the bounds succeeds.
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "core_bridge/c_source.h"
+#include "core_bridge/pack.h"
+#include "io/tri_file.h"
+#include "tristream/render.h"
+
+using namespace tristream;
+
+namespace {
+
+struct Case {
+  const char* tri;
+  core::Method method;
+  core::PixelFormat format;
+  int width, height, tile_width, tile_height;
+};
+
+}  // namespace
+
+TEST_CASE("no render up to the given output and tile size needs more than the header's bounds") {
+  const Case cases[] = {
+      {"data/demo/kodim23.rgb.tri", core::Method::zienkiewicz, core::PixelFormat::rgb565_be, 320, 240, 0, 16},
+      {"data/demo/kodim23.rgb.tri", core::Method::bilinear, core::PixelFormat::rgb565_be, 960, 640, 32, 32},
+      {"data/demo/kodim23.ycbcr-layers.tri", core::Method::zienkiewicz, core::PixelFormat::rgb888, 768, 512, 24, 16},
+      {"data/demo/kodim23.ycbcr-layers.tri", core::Method::bilinear, core::PixelFormat::xrgb8888, 240, 320, 0, 0},
+      {"data/demo/kodim23.grey.tri", core::Method::bilinear, core::PixelFormat::l8, 768, 512, 64, 8},
+  };
+  std::mt19937 rng(18);
+  auto below = [&](int n) { return std::uniform_int_distribution<int>(1, n)(rng); };
+  for (const Case& c : cases) {
+    const Triangulation tri = read_tri_file(std::string(TRISTREAM_SOURCE_DIR) + "/" + c.tri);
+    const std::vector<std::uint8_t> bytes = pack_blob(tri, c.method);
+    core::Blob blob;
+    REQUIRE(core::open_blob(bytes.data(), bytes.size(), &blob) == core::Status::ok);
+    const BufferBounds bound = buffer_upper_bounds(blob, c.format, c.width, c.height, c.tile_width, c.tile_height);
+    INFO(c.tri << " " << to_string(c.method) << " up to " << c.width << "x" << c.height << ", tiles "
+               << c.tile_width << "x" << c.tile_height << ": bounds " << bound.tile_buffer_bytes << " + "
+               << bound.workspace_bytes);
+    std::size_t largest_tile = 0, largest_work = 0;
+    for (int k = 0; k < 300; ++k) {
+      core::RenderParams p;
+      p.format = c.format;
+      // The given size itself, the domain's size when it is not larger, and random smaller ones.
+      const int w = k == 0 ? c.width : (k == 1 ? std::min<int>(c.width, blob.width) : std::max(2, below(c.width)));
+      const int h = k == 0 ? c.height : (k == 1 ? std::min<int>(c.height, blob.height) : std::max(2, below(c.height)));
+      p.output_width = std::uint16_t(w);
+      p.output_height = std::uint16_t(h);
+      if (k % 3 == 2) {  // a viewport of the output
+        const int x0 = below(w) - 1, y0 = below(h) - 1;
+        p.viewport = core::Rect{x0, y0, x0 + below(w - x0), y0 + below(h - y0)};
+      }
+      p.tile_width = std::uint16_t(c.tile_width == 0 || k < 2 ? c.tile_width : below(c.tile_width));
+      p.tile_height = std::uint16_t(c.tile_height == 0 || k < 2 ? c.tile_height : below(c.tile_height));
+      std::size_t tile = 0, work = 0;
+      REQUIRE(core::tile_buffer_size(blob, p, &tile) == core::Status::ok);
+      REQUIRE(core::workspace_size(blob, p, &work) == core::Status::ok);
+      INFO("output " << w << "x" << h << ", viewport " << p.viewport.x0 << "," << p.viewport.y0 << ".."
+                     << p.viewport.x1 << "," << p.viewport.y1 << ", tiles " << p.tile_width << "x" << p.tile_height
+                     << ": " << tile << " + " << work);
+      REQUIRE(tile <= bound.tile_buffer_bytes);
+      REQUIRE(work <= bound.workspace_bytes);
+      largest_tile = std::max(largest_tile, tile);
+      largest_work = std::max(largest_work, work);
+      if (k < 4) {  // and the core renders with buffers of exactly the bounds
+        std::vector<std::uint8_t> tb(bound.tile_buffer_bytes), ws(bound.workspace_bytes);
+        auto sink = [](void*, const core::Tile*) {};
+        REQUIRE(core::render(blob, p, tb.data(), tb.size(), ws.data(), ws.size(), sink, nullptr) == core::Status::ok);
+      }
+    }
+    // The tile buffer bound is met by the full-size output; the workspace bound is loose by the
+    // difference between all triangles and the longest window (none for these: one band of a
+    // small output holds every triangle).
+    CHECK(largest_tile == bound.tile_buffer_bytes);
+    CHECK(largest_work <= bound.workspace_bytes);
+  }
+}

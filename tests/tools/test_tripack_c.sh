@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# tripack -o x.c: the generated C compiles (C89 and C99, -Wall -Wextra -pedantic -Werror) and
+# links with the core for awkward output names (a keyword, a quote, a leading digit, the C API's
+# prefix) and with --symbol; the header refuses, at compile time, a core without the blob's
+# method or the descriptor's format or of another precision; TS_BLOB_SECTION and TS_BLOB_ALIGN
+# place the bytes. Usage: test_tripack_c.sh TRIPACK CC INCLUDE_DIR CORE_LIBRARY SOURCE_DIR [LINK_FLAGS]
+# (LINK_FLAGS: what the core library was built with that its users must link, e.g. sanitizers)
+set -uo pipefail
+tripack=$1
+cc=$2
+include=$3
+core=$4
+src=$5
+link_flags=${6:-}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+passes=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+pass() { passes=$((passes + 1)); }
+tri=$src/tests/golden/rgb.tri
+cflags=(-Wall -Wextra -pedantic -Werror -I"$include")
+
+cat >"$tmp/main.c" <<'SRC'
+#include <stdio.h>
+/* The generated header comes in with -include (its name may not be spellable in an #include). */
+static unsigned char tile[SYMBOL_TILE_BUFFER_MAX_BYTES];
+static unsigned char work[SYMBOL_WORKSPACE_MAX_BYTES];
+static void sink(void* context, const ts_tile* t) { (void)context; (void)t; }
+int main(void) {
+  ts_blob blob;
+  ts_params p;
+  ts_status s = ts_open(SYMBOL.bytes, SYMBOL.size, &blob, 0);
+  p.output_width = SYMBOL.output_width;
+  p.output_height = SYMBOL.output_height;
+  p.viewport.x0 = p.viewport.y0 = p.viewport.x1 = p.viewport.y1 = 0;
+  p.tile_width = SYMBOL.tile_width;
+  p.tile_height = SYMBOL.tile_height;
+  p.format = SYMBOL.format;
+  p.dither = 0;
+  p.background[0] = p.background[1] = p.background[2] = 0;
+  if (s == TS_OK) s = ts_render(&blob, &p, tile, sizeof tile, work, sizeof work, sink, 0);
+  if (s != TS_OK) printf("%s\n", ts_status_text(s));
+  return s == TS_OK ? 0 : 1;
+}
+SRC
+
+# builds <output name> <expected symbol> [tripack options...]: generate, compile both files, link, run.
+builds() {
+  local name=$1 symbol=$2
+  shift 2
+  local dir=$tmp/$RANDOM
+  mkdir -p "$dir"
+  if ! "$tripack" "$tri" -o "$dir/$name" "$@" >"$dir/log" 2>&1; then fail "tripack -o '$name' $*: $(cat "$dir/log")"; return; fi
+  local header=${name%.c}.h
+  for std in c89 c99; do
+    if ! "$cc" -std=$std "${cflags[@]}" -c "$dir/$name" -o "$dir/blob.$std.o" 2>"$dir/err"; then
+      fail "-o '$name': the generated C does not compile as $std: $(head -c 400 "$dir/err")"; return
+    fi
+    if ! "$cc" -std=$std "${cflags[@]}" -DSYMBOL="$symbol" -DSYMBOL_TILE_BUFFER_MAX_BYTES="$(echo "$symbol" | tr a-z A-Z)_TILE_BUFFER_MAX_BYTES" \
+         -DSYMBOL_WORKSPACE_MAX_BYTES="$(echo "$symbol" | tr a-z A-Z)_WORKSPACE_MAX_BYTES" -include "$dir/$header" \
+         -c "$tmp/main.c" -o "$dir/main.$std.o" 2>"$dir/err"; then
+      fail "-o '$name': a user of the header ($symbol) does not compile as $std: $(head -c 400 "$dir/err")"; return
+    fi
+  done
+  if ! "$cc" $link_flags "$dir/main.c99.o" "$dir/blob.c99.o" "$core" -o "$dir/run" 2>"$dir/err" || ! "$dir/run" >"$dir/out"; then
+    fail "-o '$name': does not link or render: $(cat "$dir/err" "$dir/out" | head -c 400)"; return
+  fi
+  pass
+}
+builds demo.c demo
+builds int.c blob_int
+builds 'a"b.c' a_b
+builds '7 seas.c' blob_7_seas
+builds ts_render.c blob_ts_render
+builds main.c blob_main
+builds 'x__y.c' x_y
+builds int.c my_blob --symbol my_blob
+builds bands.c bands --tile-width 0 --tile-height 16 -f rgb888 --width 100 --height 60
+
+# --symbol that cannot be a C name: usage error (64) naming the option.
+for bad in int 7x a-b __x _X ts_open main; do
+  "$tripack" "$tri" -o "$tmp/bad.c" --symbol "$bad" >/dev/null 2>"$tmp/err"
+  code=$?
+  if [ $code -ne 64 ] || ! grep -q -- "--symbol" "$tmp/err"; then fail "--symbol '$bad' -> exit $code: $(cat "$tmp/err")"; else pass; fi
+done
+
+# The guard: each mismatch stops the compilation with its own message; the matching core compiles.
+"$tripack" "$tri" -o "$tmp/z.c" -m zienkiewicz -f rgb565be >/dev/null || fail "tripack zienkiewicz"
+refuses() {
+  local needle=$1
+  shift
+  if "$cc" -std=c99 "${cflags[@]}" "$@" -c "$tmp/z.c" -o "$tmp/z.o" 2>"$tmp/err"; then fail "compiled with $* (expected: $needle)"
+  elif ! grep -qF "$needle" "$tmp/err"; then fail "$*: expected '$needle', got: $(head -c 300 "$tmp/err")"
+  else pass; fi
+  echo '#include "z.h"' >"$tmp/use_z.c"
+  if "$cc" -std=c99 "${cflags[@]}" "$@" -c "$tmp/use_z.c" -o "$tmp/use_z.o" 2>/dev/null; then fail "z.h compiled with $*"; else pass; fi
+}
+refuses "the blob is zienkiewicz, which this core leaves out (TS_METHODS)" -DTS_METHODS=1
+refuses "the descriptor is for rgb565be, which this core leaves out (TS_PIXEL_FORMATS)" -DTS_PIXEL_FORMATS=0x04
+refuses "another tristream core configuration" -DTS_SUBPIXEL_BITS=3
+if "$cc" -std=c99 "${cflags[@]}" -DTS_METHODS=2 -DTS_PIXEL_FORMATS=0x08 -c "$tmp/z.c" -o "$tmp/z.o" 2>"$tmp/err"; then pass
+else fail "z.c does not compile against a core with exactly its method and format: $(cat "$tmp/err")"; fi
+
+# Placement: the bytes in the named section with the asked alignment (objdump: 2**6 = 64).
+if "$cc" -std=c99 "${cflags[@]}" -DTS_BLOB_SECTION='".tsblob"' -DTS_BLOB_ALIGN=64 -c "$tmp/z.c" -o "$tmp/placed.o" 2>"$tmp/err"; then
+  objdump -t "$tmp/placed.o" | grep -q '\.tsblob.*z_bytes' || fail "z_bytes is not in section .tsblob: $(objdump -t "$tmp/placed.o" | grep z_bytes)"
+  objdump -h "$tmp/placed.o" | grep -A0 '\.tsblob' | grep -q '2\*\*6' || fail ".tsblob is not 64-byte aligned: $(objdump -h "$tmp/placed.o" | grep tsblob)"
+  pass
+else
+  fail "z.c with TS_BLOB_SECTION and TS_BLOB_ALIGN: $(cat "$tmp/err")"
+fi
+
+echo "test_tripack_c: $passes passed, $failures failed"
+[ $failures -eq 0 ]
