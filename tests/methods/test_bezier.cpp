@@ -1,4 +1,4 @@
-// The Bezier triangle patch of one triangle and its neighbours (thesis §3.3, NOTES.md §3.3).
+// The Bezier triangle patch of one triangle and its neighbours (thesis §3.3, docs/CONVENTIONS.md).
 #include <catch2/catch.hpp>
 
 #include "methods_support.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Interpolation on the second-degree Bezier triangle patch of each triangle and its three
-// edge neighbours (thesis §3.3, §4.2; NOTES.md §3.3), averaged where patches overlap.
+// edge neighbours (thesis §3.3, §4.2; docs/CONVENTIONS.md), averaged where patches overlap.
 //
 // Variants (RenderOptions::variant):
 // - "thesis": a and b stepped by kBezierThesisStep from 0 while a <= 1 and b <= 1 - a, each

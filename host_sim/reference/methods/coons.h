@@ -1,6 +1,6 @@
 #pragma once
 // Interpolation on the Coons patch of each triangle and its three edge neighbours (thesis
-// §3.4, §4.2; NOTES.md §3.4), averaged where patches overlap.
+// §3.4, §4.2; docs/CONVENTIONS.md), averaged where patches overlap.
 //
 // Construction (the thesis leaves the orientation of the split open; this is the choice):
 // the three parabolic boundary curves through (P200, P110, P020), (P020, P011, P002) and

@@ -1,5 +1,5 @@
 #pragma once
-// Natural-neighbour (Sibson) interpolation (thesis §3.6, §4.4; NOTES.md §3.6).
+// Natural-neighbour (Sibson) interpolation (thesis §3.6, §4.4; docs/CONVENTIONS.md).
 //
 // The weights come from a Delaunay triangulation of the mesh's vertices (the file's own
 // triangles when they already are one, checked exactly; otherwise they only decide which
