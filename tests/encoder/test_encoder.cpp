@@ -20,6 +20,8 @@
 #include "io/image_io.h"
 #include "io/tri_file.h"
 
+#include "../support/test_images.h"
+
 using namespace tristream;
 
 namespace {
@@ -301,13 +303,11 @@ TEST_CASE("regular grid baseline", "[encoder]") {
 }
 
 TEST_CASE("real photographs at 1% vertices meet the issue's targets", "[encoder][images]") {
-  // ../shared/images beside the repository (as on the developers' and CI machines), else /work/shared.
-  std::string images = std::string(TRISTREAM_SOURCE_DIR) + "/../shared/images";
-  if (!std::filesystem::exists(images)) images = "/work/shared/images";
-  const std::string grey_path = images + "/grey/peppers_grey.png";
-  const std::string colour_path = images + "/colour/peppers.png";
-  if (!std::filesystem::exists(grey_path) || !std::filesystem::exists(colour_path)) {
-    WARN("SKIPPED: " << grey_path << " or " << colour_path << " is absent");
+  // Two of the project's test photographs, from $TRISTREAM_IMAGES (tests/support/test_images.h).
+  const std::string grey_path = test::shared_image("grey/peppers_grey.png");
+  const std::string colour_path = test::shared_image("colour/peppers.png");
+  if (grey_path.empty() || colour_path.empty()) {
+    WARN(test::skip_message("grey/peppers_grey.png and colour/peppers.png"));
     return;
   }
   const Image grey = read_image(grey_path);
