@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "reference/domain.h"
 #include "reference/methods/natural.h"
 #include "reference/render.h"
 #include "../support/random_mesh.h"
