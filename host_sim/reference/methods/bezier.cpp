@@ -6,7 +6,7 @@
 
 #include "model/topology.h"
 #include "reference/coverage.h"
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/raster.h"
 
 namespace tristream {
 namespace {

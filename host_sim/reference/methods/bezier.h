@@ -7,7 +7,7 @@
 //   sample rounded to the nearest pixel and added to sum and count buffers; the bilinear
 //   pre-fill counts as one sample in every domain pixel.
 // - "" (default): the same surfaces, every pixel of a patch taken once (tessellation into
-//   micro-triangles plus per-pixel inversion of the patch mapping, methods/patch_raster.h);
+//   micro-triangles plus per-pixel inversion of the patch mapping, methods/patch/raster.h);
 //   the value is the mean of the patches over the pixel, or bilinear where no patch reaches.
 // Border triangles (fewer than three neighbours) have no patch (§4.2); a mesh without
 // interior triangles renders as bilinear. Pixels outside the domain stay NaN.
@@ -17,8 +17,8 @@
 #include <utility>
 #include <vector>
 
-#include "reference/methods/patch_control.h"
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/control.h"
+#include "reference/methods/patch/raster.h"
 #include "reference/render.h"
 
 namespace tristream {
@@ -59,11 +59,11 @@ class BezierPatch {
   // Solves position(a, b) = (x, y) by Newton's method from (a, b) near the solution. The map
   // is quadratic, so after a step d the residual is exactly -(k_aa d_a^2 + k_ab d_a d_b +
   // k_bb d_b^2) and the Jacobian grows by the Hessian times d: one evaluation, then cheap
-  // steps, until a step is shorter than detail::kNewtonStep (patch_raster.h). Returns false,
+  // steps, until a step is shorter than detail::kNewtonStep (patch/raster.h). Returns false,
   // leaving (a, b) alone, when the Jacobian is singular (unless the start already solves the
   // equation to detail::kExactResidual: then true), the solution lies detail::kNewtonReach
   // or more from the start, or Newton does not settle in kNewtonIterations steps (beside a
-  // fold, see patch_raster.h).
+  // fold, see patch/raster.h).
   bool solve(double x, double y, double& a, double& b) const;
   // The closed parameter domain a, b, c >= 0, widened by detail::kDomainTolerance.
   static bool in_domain(double a, double b) {
@@ -74,21 +74,21 @@ class BezierPatch {
   static double outside_by(double a, double b) { return std::max({-a, -b, a + b - 1}); }
   // A point inside the domain.
   static std::pair<double, double> centre() { return {1.0 / 3, 1.0 / 3}; }
-  // The sides of the parameter domain for the exact variant's rows (patch_scan.h): side k
+  // The sides of the parameter domain for the exact variant's rows (patch/scan.h): side k
   // (b = 0, a = 0, c = 0) at f in [0, 1] has parameters side(k, f).
   static constexpr int kSides = 3;
   static std::pair<double, double> side(int k, double f) {
     return k == 0 ? std::pair{f, 0.0} : k == 1 ? std::pair{0.0, f} : std::pair{f, 1 - f};
   }
-  // True when the Jacobian determinant provably keeps one sign over the domain (patch_scan.h).
+  // True when the Jacobian determinant provably keeps one sign over the domain (patch/scan.h).
   bool unfolded() const;
-  // For the exact variant (patch_raster.h): true, with no cells, when unfolded(); false
+  // For the exact variant (patch/raster.h): true, with no cells, when unfolded(); false
   // otherwise (the patch takes the tessellation).
   bool fold_cells(std::vector<detail::FoldCell>& cells) const {
     cells.clear();
     return unfolded();
   }
-  // Subdivisions n per side for the exact variant (patch_raster.h): the second derivatives
+  // Subdivisions n per side for the exact variant (patch/raster.h): the second derivatives
   // along the three grid directions are 2 (P200 - 2 P101 + P002), 2 (P020 - 2 P011 + P002)
   // and 2 (P200 - 2 P110 + P020), constant.
   int subdivisions() const;
@@ -97,7 +97,7 @@ class BezierPatch {
   // covers, with the micro-triangle's linear guess of its parameters, then for the pixels
   // near each boundary arc beyond its chord (detail::visit_boundary_side), guessed from the
   // chord, and for the pixel nearest a side's cusp, started on it (both
-  // detail::visit_boundary_side): the candidates of patch_raster.h, every pixel of the patch
+  // detail::visit_boundary_side): the candidates of patch/raster.h, every pixel of the patch
   // among them, some more than once.
   template <class Visit>
   void tessellate(int width, int height, std::vector<detail::MicroVertex>& node, Visit&& visit) const;

@@ -1,7 +1,7 @@
 #pragma once
 // Private to the patch methods (bezier, coons): the candidates of the exact variant row by
 // row between a patch's boundary curves, widened around its fold where it has one
-// (patch_raster.h has the rest of the exact variant and the tessellation used for Bezier
+// (patch/raster.h has the rest of the exact variant and the tessellation used for Bezier
 // patches that may fold).
 //
 // Why rows suffice. Where the Jacobian keeps one sign the patch maps interior points to
@@ -17,7 +17,7 @@
 // through the inverse Jacobian there; the next pixels extrapolate the last three solutions
 // (two at a stretch's start). The starts are a pixel or less from the solutions and at least
 // second-order accurate, so Newton mostly takes two or three steps. A pixel that none of
-// these settles (see settles() in scan_rows) tries the two nearest points of a 5 x 5 grid
+// these settles (SettleRule) tries the two nearest points of a 5 x 5 grid
 // inside the domain, then, on a row that a straight side runs along, the side's point there.
 //
 // Where does it fold? one_sign below bounds the Jacobian determinant's sign by its Bernstein
@@ -51,7 +51,7 @@ struct Parabola {
 namespace tristream::detail {
 
 // A patch is skipped unless its positions stay within +-kMaxPatchCoordinate output pixels
-// (the bit budget of patch_raster.h's fixed point).
+// (the bit budget of patch/raster.h's fixed point).
 inline constexpr double kMaxPatchCoordinate = 1 << 20;
 
 // A start for the pixels of a row: a boundary crossing (y is the row) or the middle of a
@@ -196,18 +196,13 @@ struct FoldCell {
   RowCrossing middle;
 };
 
-// Calls visit(i, j, s, t) for each pixel (i, j) of the width x height image between the
-// leftmost and rightmost crossing of its row with the boundary of `patch` or with a box of
-// `folds` (which must hold the patch's fold: none where it does not fold), with a start
-// (s, t) for Newton passed by reference: visit returns what it made of the pixel (Placed),
-// with (s, t) the solution unless none.
-template <class Patch, class Visit>
-void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width, int height, ScanScratch& scratch,
-               Visit&& visit) {
-  std::vector<RowCrossings>& rows = scratch.rows;
-  std::array<BoundaryArc, Patch::kSides> arcs;
+// The rows j0..j1 that the patch's boundary curves and fold boxes reach, each with its
+// crossings (rows[j - j0]); j0 > j1 when none.
+template <class Patch>
+std::pair<int, int> collect_row_crossings(const std::array<BoundaryArc, Patch::kSides>& arcs,
+                                          const std::vector<FoldCell>& folds, int height,
+                                          std::vector<RowCrossings>& rows) {
   double y_lo = 1e300, y_hi = -1e300;
-  if (!side_arcs(patch, arcs)) return;
   for (const BoundaryArc& arc : arcs) {
     // The curve lies in the triangle of its ends and control point y(0) + y'(0) / 2.
     const double y0 = arc.y.c, y1 = arc.y(1), cy = arc.y.c + 0.5 * arc.y.b;
@@ -215,7 +210,7 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
   }
   for (const FoldCell& cell : folds) y_lo = std::min(y_lo, cell.y_lo), y_hi = std::max(y_hi, cell.y_hi);
   const int j0 = std::max(0, int(std::ceil(y_lo - 1))), j1 = std::min(height - 1, int(std::floor(y_hi + 1)));
-  if (j0 > j1) return;
+  if (j0 > j1) return {j0, j1};
   rows.resize(std::size_t(j1 - j0 + 1));
   for (RowCrossings& row : rows) row.clear();
   for (const FoldCell& cell : folds) {
@@ -228,128 +223,179 @@ void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width
     }
   }
   for (int k = 0; k < Patch::kSides; ++k) add_arc_crossings(arcs[std::size_t(k)], k, j0, j1, rows);
+  return {j0, j1};
+}
 
-  // The last resort, for a pixel no other start placed: the two nearest points of a grid
-  // over the domain (made once per patch, when first needed), nearer first. The points are
-  // the centres of a 5 x 5 split of the square, inside the domain: on its boundary the
-  // Jacobian may vanish (the Coons corner M, and sides of degenerate patches), where Newton
-  // fails.
-  constexpr int kGrid = 4;
-  std::array<double, 4> grid[(kGrid + 1) * (kGrid + 1)];
-  int grid_size = 0;
-  auto from_grid = [&](int i, int j, double (&gs)[2], double (&gt)[2]) {
-    if (grid_size == 0)
-      for (int a = 0; a <= kGrid; ++a)
-        for (int b = 0; b <= kGrid; ++b) {
-          const double gs = (a + 0.5) / (kGrid + 1), gt = (b + 0.5) / (kGrid + 1);
-          if (patch.in_domain(gs, gt)) {
-            const Point p = patch.position(gs, gt);
-            grid[grid_size++] = {p.x, p.y, gs, gt};
-          }
-        }
+// The last resort, for a pixel no other start placed: the two nearest points of a grid over
+// the domain (made once per patch, when first needed), nearer first. The points are the
+// centres of a 5 x 5 split of the square, inside the domain: on its boundary the Jacobian may
+// vanish (the Coons corner M, and sides of degenerate patches), where Newton fails.
+template <class Patch>
+class GridStarts {
+ public:
+  explicit GridStarts(const Patch& patch) : patch_(patch) {}
+
+  void nearest(int i, int j, double (&gs)[2], double (&gt)[2]) {
+    if (size_ == 0) build();
     double best[2] = {1e300, 1e300};
     int index[2] = {0, 0};
-    for (int k = 0; k < grid_size; ++k) {
-      const double d = std::fabs(grid[k][0] - i) + std::fabs(grid[k][1] - j);
+    for (int k = 0; k < size_; ++k) {
+      const double d = std::fabs(grid_[k][0] - i) + std::fabs(grid_[k][1] - j);
       if (d < best[1]) {
         best[1] = d, index[1] = k;
         if (d < best[0]) std::swap(best[0], best[1]), std::swap(index[0], index[1]);
       }
     }
-    for (int r = 0; r < 2; ++r) gs[r] = grid[index[r]][2], gt[r] = grid[index[r]][3];
-  };
+    for (int r = 0; r < 2; ++r) gs[r] = grid_[index[r]][2], gt[r] = grid_[index[r]][3];
+  }
 
-  // A start settles a pixel when the patch covers it from there or, for a patch that does
-  // not fold, when Newton finds a solution near the domain where the Jacobian determinant
-  // keeps the patch's sign: the pixel then lies beside the patch. The polynomial goes on
-  // beyond the domain and may fold back over the patch there, so a solution far outside (a
-  // start from a crossing near the Coons corner M, where the inverse Jacobian is large, can
-  // reach one) does not settle the pixel, nor does one where the determinant has turned: the
-  // continuation is folded there (beside the Coons corner M, where the determinant vanishes,
-  // it turns within kNear of the domain). Where the patch folds (centre_det = 0) no solution
-  // outside the domain settles a pixel. The other starts are then tried too.
-  const auto [centre_s, centre_t] = Patch::centre();
-  const double centre_det = folds.empty() ? jacobian_determinant(patch, centre_s, centre_t) : 0;
-  auto settles = [&](Placed placed, double s, double t) {
+ private:
+  static constexpr int kGrid = 4;
+  void build() {
+    for (int a = 0; a <= kGrid; ++a)
+      for (int b = 0; b <= kGrid; ++b) {
+        const double gs = (a + 0.5) / (kGrid + 1), gt = (b + 0.5) / (kGrid + 1);
+        if (patch_.in_domain(gs, gt)) {
+          const Point p = patch_.position(gs, gt);
+          grid_[size_++] = {p.x, p.y, gs, gt};
+        }
+      }
+  }
+  const Patch& patch_;
+  std::array<double, 4> grid_[(kGrid + 1) * (kGrid + 1)];
+  int size_ = 0;
+};
+
+// A start settles a pixel when the patch covers it from there or, for a patch that does not
+// fold, when Newton finds a solution near the domain where the Jacobian determinant keeps the
+// patch's sign: the pixel then lies beside the patch. The polynomial goes on beyond the domain
+// and may fold back over the patch there, so a solution far outside (a start from a crossing
+// near the Coons corner M, where the inverse Jacobian is large, can reach one) does not settle
+// the pixel, nor does one where the determinant has turned: the continuation is folded there
+// (beside the Coons corner M, where the determinant vanishes, it turns within kNear of the
+// domain). Where the patch folds (centre_det = 0) no solution outside the domain settles a
+// pixel. The other starts are then tried too.
+template <class Patch>
+struct SettleRule {
+  const Patch& patch;
+  double centre_det;
+
+  SettleRule(const Patch& p, bool folds) : patch(p), centre_det(0) {
+    const auto [centre_s, centre_t] = Patch::centre();
+    if (!folds) centre_det = jacobian_determinant(patch, centre_s, centre_t);
+  }
+  bool operator()(Placed placed, double s, double t) const {
     return placed == Placed::inside ||
            (placed == Placed::outside && centre_det != 0 && jacobian_determinant(patch, s, t) * centre_det > 0);
-  };
+  }
+};
+
+// A start for pixel (i, j) from crossing c moved there through the inverse Jacobian at c;
+// false where the Jacobian is singular (the Coons corner M) unless the pixel is on the
+// crossing. (ds, dt) becomes J^-1 (1, 0) there: the step to the next pixel.
+template <class Patch>
+bool start_from_crossing(const Patch& patch, const RowCrossing& c, int i, int j, double& gs, double& gt, double& ds,
+                         double& dt) {
+  double px, py, xs, xt, ys, yt;
+  patch.position(c.s, c.t, px, py, xs, xt, ys, yt);
+  const double det = xs * yt - xt * ys;
+  const bool regular = std::fabs(det) > 1e-9 * (std::fabs(xs * yt) + std::fabs(xt * ys));
+  const double inverse = regular ? 1 / det : 0;
+  ds = yt * inverse, dt = -ys * inverse;
+  const double ex = -xt * inverse, et = xs * inverse;  // J^-1 (0, 1)
+  gs = c.s + (i - c.x) * ds + (j - c.y) * ex, gt = c.t + (i - c.x) * dt + (j - c.y) * et;
+  return regular || (i == c.x && j == c.y);
+}
+
+// On a row a straight side runs along (bits of `along`), the side's own points at the pixel,
+// x(f) = i, as starts: the Jacobian may vanish all along such a side, so that Newton only
+// creeps towards a pixel on it from anywhere else. True when one of them placed the pixel.
+template <std::size_t Sides, class Visit>
+bool start_along_sides(const std::array<BoundaryArc, Sides>& arcs, unsigned along, int i, int j, Visit& visit) {
+  bool settled = false;
+  for (; along != 0; along &= along - 1) {
+    const BoundaryArc& arc = arcs[std::size_t(std::countr_zero(along))];
+    unit_roots(arc.x.a, arc.x.b, arc.x.c - i, [&](double f) {
+      double fs = arc.s0 + f * arc.ds, ft = arc.t0 + f * arc.dt;
+      if (!settled && visit(i, j, fs, ft) == Placed::inside) settled = true;
+    });
+  }
+  return settled;
+}
+
+// The pixels of row j between its leftmost and rightmost crossing, each visited from the
+// last three solutions extrapolated while they settle it, else from the nearer crossing, the
+// other, the grid and the sides along the row, in that order.
+template <class Patch, class Visit>
+void scan_row(const Patch& patch, const std::array<BoundaryArc, Patch::kSides>& arcs, RowCrossings& row, int j,
+              int width, GridStarts<Patch>& grid, const SettleRule<Patch>& settles, Visit& visit) {
+  RowCrossing* crossing = row.crossing;
+  const int count = row.count;
+  for (int k = 1; k < count; ++k)  // insertion sort by x: a row has a few crossings
+    for (int m = k; m > 0 && crossing[m].x < crossing[m - 1].x; --m) std::swap(crossing[m], crossing[m - 1]);
+  const int i0 = std::max(0, int(std::ceil(row.x_min - kSpanMargin)));
+  const int i1 = std::min(width - 1, int(std::floor(row.x_max + kSpanMargin)));
   constexpr int kGridStart = -2;  // and -3: the grid's two starts
-
-  for (int j = j0; j <= j1; ++j) {
-    RowCrossings& row = rows[std::size_t(j - j0)];
-    if (row.count == 0) continue;
-    RowCrossing* crossing = row.crossing;
-    const int count = row.count;
-    for (int k = 1; k < count; ++k)  // insertion sort by x: a row has a few crossings
-      for (int m = k; m > 0 && crossing[m].x < crossing[m - 1].x; --m) std::swap(crossing[m], crossing[m - 1]);
-    const int i0 = std::max(0, int(std::ceil(row.x_min - kSpanMargin)));
-    const int i1 = std::min(width - 1, int(std::floor(row.x_max + kSpanMargin)));
-
-    // Start at crossing k moved to column i through the inverse Jacobian there; false where
-    // the Jacobian is singular (the Coons corner M) unless the pixel is on the crossing.
-    // (ds, dt) becomes J^-1 (1, 0) there: the step to the next pixel.
-    auto from_crossing = [&](int k, int i, double& gs, double& gt, double& ds, double& dt) {
-      const RowCrossing& c = crossing[k];
-      double px, py, xs, xt, ys, yt;
-      patch.position(c.s, c.t, px, py, xs, xt, ys, yt);
-      const double det = xs * yt - xt * ys;
-      const bool regular = std::fabs(det) > 1e-9 * (std::fabs(xs * yt) + std::fabs(xt * ys));
-      const double inverse = regular ? 1 / det : 0;
-      ds = yt * inverse, dt = -ys * inverse;
-      const double ex = -xt * inverse, et = xs * inverse;  // J^-1 (0, 1)
-      gs = c.s + (i - c.x) * ds + (j - c.y) * ex, gt = c.t + (i - c.x) * dt + (j - c.y) * et;
-      return regular || (i == c.x && j == c.y);
-    };
-    int next = 0;            // the first crossing right of the pixel
-    bool continued = false;  // the last pixel was solved at (s, t), (ds, dt) apart from the one before
-    double s = 0, t = 0, ds = 0, dt = 0, dds = 0, ddt = 0;  // and (dds, ddt) the difference of those steps
-    for (int i = i0; i <= i1; ++i) {
-      bool passed = false;
-      while (next < count && crossing[next].x <= i + kSpanMargin) ++next, passed = true;
-      double ns, nt;
-      if (continued && !passed) {
-        // The common case: the last three solutions extrapolated (two at a stretch's start).
-        ns = s + ds + dds, nt = t + dt + ddt;
-        const Placed placed = visit(i, j, ns, nt);
-        if (settles(placed, ns, nt)) {
-          dds = ns - s - ds, ddt = nt - t - dt, ds = ns - s, dt = nt - t, s = ns, t = nt;
-          continue;
-        }
-      }
-      // A new stretch, or the extrapolation did not settle the pixel: the nearer crossing,
-      // the other, the grid; the last solution found continues the row.
-      dds = 0, ddt = 0;
-      const int left = next - 1, right = next < count ? next : -1;
-      const bool left_first = right < 0 || (left >= 0 && i - crossing[left].x <= crossing[right].x - i);
-      const int order[4] = {left_first ? left : right, left_first ? right : left, kGridStart, kGridStart - 1};
-      continued = false;
-      bool settled = false;
-      double grid_s[2], grid_t[2];
-      for (int k : order) {
-        double cds = 0, cdt = 0;
-        if (k <= kGridStart) {  // no crossing settled the pixel
-          if (k == kGridStart) from_grid(i, j, grid_s, grid_t);
-          ns = grid_s[kGridStart - k], nt = grid_t[kGridStart - k];
-        } else if (k < 0 || !from_crossing(k, i, ns, nt, cds, cdt)) {
-          continue;
-        }
-        const Placed placed = visit(i, j, ns, nt);
-        if (placed == Placed::none) continue;
-        continued = true, s = ns, t = nt, ds = cds, dt = cdt;
-        if ((settled = settles(placed, ns, nt))) break;
-      }
-      // Still nothing, on a row a straight side runs along: the side's own points at the
-      // pixel, x(f) = i, as starts. The Jacobian may vanish all along such a side, so that
-      // Newton only creeps towards a pixel on it from anywhere else.
-      for (unsigned along = settled ? 0 : row.along; along != 0; along &= along - 1) {
-        const BoundaryArc& arc = arcs[std::size_t(std::countr_zero(along))];
-        unit_roots(arc.x.a, arc.x.b, arc.x.c - i, [&](double f) {
-          double fs = arc.s0 + f * arc.ds, ft = arc.t0 + f * arc.dt;
-          if (!settled && visit(i, j, fs, ft) == Placed::inside) settled = true;
-        });
+  int next = 0;            // the first crossing right of the pixel
+  bool continued = false;  // the last pixel was solved at (s, t), (ds, dt) apart from the one before
+  double s = 0, t = 0, ds = 0, dt = 0, dds = 0, ddt = 0;  // and (dds, ddt) the difference of those steps
+  for (int i = i0; i <= i1; ++i) {
+    bool passed = false;
+    while (next < count && crossing[next].x <= i + kSpanMargin) ++next, passed = true;
+    double ns, nt;
+    if (continued && !passed) {
+      // The common case: the last three solutions extrapolated (two at a stretch's start).
+      ns = s + ds + dds, nt = t + dt + ddt;
+      const Placed placed = visit(i, j, ns, nt);
+      if (settles(placed, ns, nt)) {
+        dds = ns - s - ds, ddt = nt - t - dt, ds = ns - s, dt = nt - t, s = ns, t = nt;
+        continue;
       }
     }
+    // A new stretch, or the extrapolation did not settle the pixel: the nearer crossing,
+    // the other, the grid; the last solution found continues the row.
+    dds = 0, ddt = 0;
+    const int left = next - 1, right = next < count ? next : -1;
+    const bool left_first = right < 0 || (left >= 0 && i - crossing[left].x <= crossing[right].x - i);
+    const int order[4] = {left_first ? left : right, left_first ? right : left, kGridStart, kGridStart - 1};
+    continued = false;
+    bool settled = false;
+    double grid_s[2], grid_t[2];
+    for (int k : order) {
+      double cds = 0, cdt = 0;
+      if (k <= kGridStart) {  // no crossing settled the pixel
+        if (k == kGridStart) grid.nearest(i, j, grid_s, grid_t);
+        ns = grid_s[kGridStart - k], nt = grid_t[kGridStart - k];
+      } else if (k < 0 || !start_from_crossing(patch, crossing[k], i, j, ns, nt, cds, cdt)) {
+        continue;
+      }
+      const Placed placed = visit(i, j, ns, nt);
+      if (placed == Placed::none) continue;
+      continued = true, s = ns, t = nt, ds = cds, dt = cdt;
+      if ((settled = settles(placed, ns, nt))) break;
+    }
+    if (!settled && row.along != 0) start_along_sides(arcs, row.along, i, j, visit);
+  }
+}
+
+// Calls visit(i, j, s, t) for each pixel (i, j) of the width x height image between the
+// leftmost and rightmost crossing of its row with the boundary of `patch` or with a box of
+// `folds` (which must hold the patch's fold: none where it does not fold), with a start
+// (s, t) for Newton passed by reference: visit returns what it made of the pixel (Placed),
+// with (s, t) the solution unless none.
+template <class Patch, class Visit>
+void scan_rows(const Patch& patch, const std::vector<FoldCell>& folds, int width, int height, ScanScratch& scratch,
+               Visit&& visit) {
+  std::array<BoundaryArc, Patch::kSides> arcs;
+  if (!side_arcs(patch, arcs)) return;
+  std::vector<RowCrossings>& rows = scratch.rows;
+  const auto [j0, j1] = collect_row_crossings<Patch>(arcs, folds, height, rows);
+  if (j0 > j1) return;
+  GridStarts<Patch> grid(patch);
+  const SettleRule<Patch> settles(patch, !folds.empty());
+  for (int j = j0; j <= j1; ++j) {
+    RowCrossings& row = rows[std::size_t(j - j0)];
+    if (row.count != 0) scan_row(patch, arcs, row, j, width, grid, settles, visit);
   }
 }
 

@@ -3,65 +3,22 @@
 // neighbours, a parametric surface (x, y, values)(s, t) and average every surface that lands
 // on a pixel, in sum and count buffers (thesis §3.3, §4.2). Two ways to land on pixels:
 //
-// - thesis: step s and t by a fixed step, round each sample's position to the nearest pixel
-//   (pixel (i, j) samples the point (i, j), so its cell is centred there; the thesis's integer
-//   truncation assumed pixels at their corners), add it there unless it is off the image or
-//   outside the domain; the bilinear pre-fill counts as one more sample in every pixel.
+// - thesis: s and t stepped by a fixed step, each sample rounded to the nearest pixel and
+//   added there unless it is off the image or outside the domain; the bilinear pre-fill
+//   counts as one more sample in every pixel.
 // - exact (the default): every pixel whose sample point is the image of a point of the
-//   patch's closed parameter domain counts once for the patch, with the surface's value at
-//   that point: Newton's method on the patch's position places the pixel from a start, and
-//   it counts when the solution lies in the closed domain (widened by kDomainTolerance).
-//   Candidates and starts come one of two ways:
-//   - by rows (patch_scan.h), for every Coons patch and every Bezier patch that provably
-//     does not fold: each pixel between the leftmost and rightmost crossing of its row with
-//     the boundary curves (and with boxes around the fold, where a Coons patch folds), each
-//     once, started from the pixel before it or from a crossing, or from a grid over the
-//     domain where these starts reach no solution, one far outside the domain (kNear), one
-//     outside where the Jacobian determinant has turned (the continuation beyond the domain
-//     folds back over the patch there, as beside the Coons corner M) or, where the patch
-//     folds, none in it;
-//   - by a coarse tessellation (rasterize_tessellated), for a Bezier patch that may fold:
-//     its micro-triangles, rasterized with exact integer edge tests, give the pixels inside
-//     the tessellation's polygon with a linear guess good to kGuessTolerance pixels; between
-//     each boundary chord and its curve (a parabola: it lies in the triangle of the chord
-//     and the curve's control point, see visit_boundary_arc) the pixels near that triangle
-//     give the rest, guessed from the chord. A stamp per pixel (PatchCanvas::claim) keeps a
-//     pixel from counting twice for one patch, so these candidates may overlap.
-//   Where a patch folds (its Jacobian changes sign) a pixel with preimages in two layers
-//   still counts once, with the layer Newton reaches first; a pixel beside a fold, where
-//   Newton does not converge from any start it is given, is not counted. Work per
-//   candidate pixel and patch: one Newton solve (bezier: one position evaluation and
-//   closed-form steps; coons: two to four evaluations). A domain pixel no patch covers
-//   keeps the bilinear value.
+//   patch's closed parameter domain (widened by kDomainTolerance) counts once for the patch,
+//   with the surface's value there, placed by Newton's method (until its step is below
+//   kNewtonStep) from a start. Candidates and starts come by rows (patch/scan.h) for every
+//   Coons patch and every Bezier patch that provably does not fold, and from a coarse
+//   tessellation (rasterize_tessellated, with the pixels between each boundary chord and its
+//   curve) for a Bezier patch that may fold; a stamp per pixel (PatchCanvas::claim) keeps a
+//   pixel from counting twice for one patch. A pixel beside a fold where Newton converges
+//   from no start is not counted; a domain pixel no patch covers keeps the bilinear value.
 //
-// Coverage on the boundary. Pixels whose preimage lies on a patch's parameter boundary are
-// common (the patch corners are mesh vertices, so pixel centres on a mesh of integer
-// vertices; straight boundary curves run through pixel centres). Their membership must not
-// hang on the last bits of Newton's result (a 1e-12 domain test once flipped 120 of 262,144
-// pixels by up to 31 levels when the solver's arithmetic changed). So the domain is closed
-// and widened by kDomainTolerance (1e-8 in the parameters), and Newton runs until its step
-// is below kNewtonStep, leaving errors of about 1e-12 where it converges quadratically.
-// Measured on the 13,000-vertex boat, peppers and kodim23 (colour) encodings with the row
-// starts: of about 1,000,000 Bezier and 1,300,000 Coons solutions per image, those on the
-// boundary lie within 3e-14 (Bezier) and 4e-11 (Coons) of it and all others at least 3e-7
-// away, so the band decides nothing but the boundary itself. Where the Jacobian is singular
-// on the boundary Newton converges only linearly and may stop farther off (the Coons corner
-// M, where the split curve runs straight through, is always such a point; a start that
-// already solves the equation to kExactResidual is kept as it is, so a pixel on it is
-// placed exactly; with kNewtonStep at 1e-7 one Coons pixel of the peppers stopped 8.5e-8
-// beside a boundary point that is a mesh vertex, and was not counted).
-// tests/methods/test_patches.cpp checks each patch's counts against an independent long
-// double inversion (both ways; exactly where the patch does not fold), and that moving
-// Newton's start does not change any decision. On the 13,000-vertex boat and peppers
-// encodings (26,000 patches each) that check found unfolded Coons patches missing pixels
-// (87 on the boat): 0.23 inside their domain beside M (fixed by the determinant test of
-// settles(), patch_scan.h), where the grid's starts sat on a singular corner (the grid now
-// lies inside the domain), and on straight sides along a pixel row where the determinant
-// vanishes (the side's own point at the pixel as a last start). For Bezier patches it found
-// 5 (boat) and 4 (peppers) pixels missed, all on the cusp of a side that runs out and back
-// (two corners at one vertex of degree 3), where the Jacobian is singular: an exact start is
-// now kept (BezierPatch::solve) and the tessellation starts a pixel on each cusp. The patches
-// are kept as tests.
+// docs/PATCHES.md has the design, why the boundary band and the step limit are what they
+// are, and the history of the coverage fixes. tests/methods/test_patch_coverage.cpp checks
+// each patch's counts against an independent long double inversion.
 //
 // The bilinear field (pre-fill and domain) comes from bilinear_prefill below.
 // Pixels outside the triangulation's domain (NaN in the bilinear field) are never written.
@@ -75,8 +32,8 @@
 
 #include "common/errors.h"
 #include "model/topology.h"
-#include "reference/methods/patch_control.h"
-#include "reference/methods/patch_scan.h"
+#include "reference/methods/patch/control.h"
+#include "reference/methods/patch/scan.h"
 #include "reference/render.h"
 
 namespace tristream::detail {
@@ -394,7 +351,7 @@ void rasterize_tessellated(const Patch& patch, PatchCanvas& canvas, std::vector<
   });
 }
 
-// The same by rows (patch_scan.h), each candidate once, for a patch whose fold, if any,
+// The same by rows (patch/scan.h), each candidate once, for a patch whose fold, if any,
 // `folds` holds.
 template <class Patch>
 void rasterize_rows(const Patch& patch, const std::vector<FoldCell>& folds, PatchCanvas& canvas, ScanScratch& scan) {

@@ -12,7 +12,7 @@
 #include "geometry/delaunay.h"
 #include "common/errors.h"
 #include "reference/methods/bilinear.h"
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/raster.h"
 #include "reference/render.h"
 
 using namespace tristream;
@@ -84,7 +84,7 @@ TEST_CASE("the exact variant reproduces linear data", "[bezier][coons]") {
       Mesh mesh = testing::random_lattice_mesh(48, 40, 70, seed, 10, 3);
       set_values(mesh, linear);
       const Field f = render(single_mesh(48, 40, mesh), method, "");
-      // Newton stops after a step below kNewtonStep (patch_raster.h), leaving parameter errors
+      // Newton stops after a step below kNewtonStep (patch/raster.h), leaving parameter errors
       // of about 1e-12 times the patch's relative curvature: far below 1e-6 of value here.
       for (int y = 0; y < 40; ++y)
         for (int x = 0; x < 48; ++x)

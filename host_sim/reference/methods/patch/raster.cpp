@@ -1,4 +1,4 @@
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/raster.h"
 
 #include "model/topology.h"
 #include "reference/methods/bilinear.h"

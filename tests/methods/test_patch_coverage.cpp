@@ -1,4 +1,4 @@
-// Coverage of the exact variant of the patch methods (bezier, coons; patch_raster.h), checked
+// Coverage of the exact variant of the patch methods (bezier, coons; patch/raster.h), checked
 // patch by patch against an independent inversion of the patch: multi-start Newton in long
 // double on the patch rebuilt from its control points (Bernstein form, Coons boundary curves),
 // with numeric derivatives.
@@ -15,7 +15,7 @@
 #include "model/topology.h"
 #include "reference/methods/bezier.h"
 #include "reference/methods/coons.h"
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/raster.h"
 
 using namespace tristream;
 
@@ -382,7 +382,7 @@ TEST_CASE("survey: coverage of every patch of a triangulation file", "[.survey]"
 
 // Patches the image cuts (the lattice mesh moved 13 pixels left and 7 up) are still covered
 // exactly: a row's nearest crossing may then lie far from its first pixel, and where a start
-// reaches a solution far outside the domain (patch_scan.h, kNear) the other starts are tried
+// reaches a solution far outside the domain (patch/scan.h, kNear) the other starts are tried
 // (without that, a Coons patch here misses a pixel).
 TEST_CASE("patches cut by the image's edge are covered exactly", "[bezier][coons]") {
   Mesh mesh = testing::random_lattice_mesh(40, 30, 60, 23, 10);
@@ -395,7 +395,7 @@ TEST_CASE("patches cut by the image's edge are covered exactly", "[bezier][coons
   CHECK(coons.fold_missed * 700 < coons.fold_pixels);
 }
 
-// The trap of patch_raster.h: whether a pixel on a patch's boundary counts must not hang on
+// The trap of patch/raster.h: whether a pixel on a patch's boundary counts must not hang on
 // the last bits of Newton's result. Starting each solve from a guess moved by up to 1e-3
 // gives other last bits; the decisions must not change, and the parameters agree to a tenth
 // of kDomainTolerance. (A start may also lead to another preimage where a patch folds over
@@ -470,7 +470,7 @@ TEST_CASE("patch membership does not depend on the solver's start", "[bezier][co
   CHECK(other_root < candidates / 1000);
 }
 
-// The fold cells of a Coons patch (patch_scan.h) must hold its fold: where the Jacobian
+// The fold cells of a Coons patch (patch/scan.h) must hold its fold: where the Jacobian
 // determinant changes sign between neighbouring samples of a fine grid, the image there lies
 // in some cell's box (widened by the image of a grid step), and a patch without cells has
 // no sign change at all.
