@@ -54,8 +54,8 @@ struct Row {
 };
 
 void print_row(const std::string& image, double percent, const Row& row, const Image& original) {
-  std::printf("| %s | %.1f | %zu | %s |", image.c_str(), percent, row.tri.layers[0].vertex_count() * row.tri.layers.size(),
-              row.label.c_str());
+  std::printf("| %s | %.1f | %zu | %s |", image.c_str(), percent,
+              row.tri.layers[0].vertex_count() * row.tri.layers.size(), row.label.c_str());
   for (const char* method : {"bilinear", "zienkiewicz"}) {
     const Image render = render_reference(row.tri, *find_reference_method(method), {});
     const Metrics m = compare_images(render, encoded_original(original, row.tri));
@@ -191,7 +191,8 @@ int sweep(std::vector<std::string> args) {
       std::printf("\n");
     }
   }
-  std::printf("\nGain over %s in dB, mean (smallest) over the images; encode time summed:\n\n| setting |", chosen[0]->name);
+  std::printf("\nGain over %s in dB, mean (smallest) over the images; encode time summed:\n\n| setting |",
+              chosen[0]->name);
   for (double p : percents) std::printf(" %.1f %% |", p);
   std::printf(" all | seconds |\n|---|");
   for (std::size_t k = 0; k <= percents.size(); ++k) std::printf("---|");

@@ -209,7 +209,8 @@ TEST_CASE("natural: a Delaunay mesh is used as is, with the same result as a reb
 TEST_CASE("natural: scaled output and a single-triangle mesh") {
   // 61x47 domain rendered at 121x93 (corner to corner): linear data still exact.
   Mesh mesh = tristream::testing::random_lattice_mesh(61, 47, 80, 5, 0, 1);
-  for (std::size_t v = 0; v < mesh.points.size(); ++v) mesh.values[v] = 10 + 0.5 * mesh.points[v].x + 2 * mesh.points[v].y;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    mesh.values[v] = 10 + 0.5 * mesh.points[v].x + 2 * mesh.points[v].y;
   Field out(121, 93, 1);
   render_natural(mesh, 61, 47, {}, out);
   const PixelMapping map(61, 47, 121, 93);

@@ -105,7 +105,8 @@ def expected(a_name, b_name):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--crops", action="store_true", help="re-create data/*.png from Kodak")
-    default_kodak = os.path.join(os.environ["TRISTREAM_IMAGES"], "kodak") if os.environ.get("TRISTREAM_IMAGES") else None
+    images = os.environ.get("TRISTREAM_IMAGES")
+    default_kodak = os.path.join(images, "kodak") if images else None
     parser.add_argument("--kodak", default=default_kodak,
                         help="directory with kodim08.png, kodim13.png, kodim23.png (default: $TRISTREAM_IMAGES/kodak)")
     args = parser.parse_args()

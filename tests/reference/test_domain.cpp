@@ -9,6 +9,7 @@
 #include "model/topology.h"
 #include "reference/coverage.h"
 #include "reference/domain.h"
+
 #include "../support/random_mesh.h"
 
 using namespace tristream;

@@ -116,7 +116,8 @@ bool SibsonCoordinates::on_hull_edge(const Point& p, std::uint32_t a, std::uint3
   // Sibson's coordinates there) and true; false beyond the segment.
   const Point& pa = mesh_.points[a];
   const Point& pb = mesh_.points[b];
-  const double s = std::abs(pb.x - pa.x) >= std::abs(pb.y - pa.y) ? (p.x - pa.x) / (pb.x - pa.x) : (p.y - pa.y) / (pb.y - pa.y);
+  const double s =
+      std::abs(pb.x - pa.x) >= std::abs(pb.y - pa.y) ? (p.x - pa.x) / (pb.x - pa.x) : (p.y - pa.y) / (pb.y - pa.y);
   if (!(s >= 0 && s <= 1)) return false;
   out.clear();
   out.push_back({a, 1.0 - s});
@@ -190,8 +191,8 @@ bool SibsonCoordinates::cavity_coordinates(const Point& p, std::uint32_t t0, std
 // Out of line: inlined into sweep_row's column loop it cost 6% more instructions (callgrind,
 // kodim23 grey).
 template <class Inside>
-[[gnu::noinline]] bool SibsonCoordinates::stolen_areas(const Point& p, std::span<const std::uint32_t> cavity, Inside inside,
-                                     std::vector<NeighbourWeight>& out) {
+[[gnu::noinline]] bool SibsonCoordinates::stolen_areas(const Point& p, std::span<const std::uint32_t> cavity,
+                                                       Inside inside, std::vector<NeighbourWeight>& out) {
   out.clear();
   // The stolen polygon of a cavity boundary vertex w, between boundary edges u -> w and
   // w -> x (cavity on their left), is [g(u, w), c(T1), ..., c(Tm), g(w, x)]: c(T) the
@@ -327,8 +328,8 @@ SibsonCoordinates::SweepCircles SibsonCoordinates::sweep_circles(const PixelMapp
   const std::size_t nt = mesh_.triangles.size();
   const int width = map.out_width, height = map.out_height;
   SweepCircles circles;
-  circles.exact = integer_points_ && map.sx == 1 && map.sy == 1 && width - 1 <= exact_limit &&
-                  height - 1 <= exact_limit;
+  circles.exact =
+      integer_points_ && map.sx == 1 && map.sy == 1 && width - 1 <= exact_limit && height - 1 <= exact_limit;
   if (circles.exact) {
     circles.vertex_at.assign(std::size_t(width) * height, no_neighbour);
     for (std::uint32_t v = 0; v < mesh_.points.size(); ++v) {
@@ -360,8 +361,8 @@ SibsonCoordinates::SweepCircles SibsonCoordinates::sweep_circles(const PixelMapp
     const Point& a = mesh_.points[mesh_.triangles[t].v[0]];
     const Point& c = tri_[t].centre;
     const CircleTest& k = circle_[t];
-    circles.disk[s] = {c.x, c.y, (a.x - c.x) * (a.x - c.x) + (a.y - c.y) * (a.y - c.y),
-                       k.ax, k.ay, k.alpha, k.beta, k.gamma};
+    circles.disk[s] = {c.x,    c.y,    (a.x - c.x) * (a.x - c.x) + (a.y - c.y) * (a.y - c.y), k.ax, k.ay, k.alpha,
+                       k.beta, k.gamma};
   }
   // Each row's circles (slots), bucketed.
   std::vector<std::uint32_t>& row_start = circles.row_start;
@@ -381,8 +382,9 @@ SibsonCoordinates::SweepCircles SibsonCoordinates::sweep_circles(const PixelMapp
 // The columns of row j strictly inside the circle of `slot`, as [first, last] (first > last:
 // none), from the chord's estimate settled by exact tests at its ends (the run is an interval:
 // a disk meets a line in a segment).
-[[gnu::always_inline]] inline std::pair<int, int> SibsonCoordinates::circle_run(const SweepCircles& circles, const PixelMapping& map,
-                                                  std::uint32_t slot, int j) const {
+[[gnu::always_inline]] inline std::pair<int, int> SibsonCoordinates::circle_run(const SweepCircles& circles,
+                                                                                const PixelMapping& map,
+                                                                                std::uint32_t slot, int j) const {
   const int width = map.out_width;
   const std::uint32_t t = circles.triangle_of[slot];
   const auto& tv = mesh_.triangles[t].v;
@@ -470,8 +472,10 @@ void SibsonCoordinates::sweep_row(const SweepCircles& circles, const RowEvents& 
                                   std::vector<NeighbourWeight>& weights, Visit&& visit) {
   const int width = map.out_width;
   for (int i = 0; i < width; ++i) {
-    for (std::uint32_t k = events.leave_start[i]; k < events.leave_start[i + 1]; ++k) cavity.leave(events.leave_items[k]);
-    for (std::uint32_t k = events.enter_start[i]; k < events.enter_start[i + 1]; ++k) cavity.enter(events.enter_items[k]);
+    for (std::uint32_t k = events.leave_start[i]; k < events.leave_start[i + 1]; ++k)
+      cavity.leave(events.leave_items[k]);
+    for (std::uint32_t k = events.enter_start[i]; k < events.enter_start[i + 1]; ++k)
+      cavity.enter(events.enter_items[k]);
     const Point p = map.sample(i, j);
     bool ok;
     if (!(p.x >= 0 && p.x <= xmax && p.y >= 0 && p.y <= ymax)) {
@@ -488,8 +492,8 @@ void SibsonCoordinates::sweep_row(const SweepCircles& circles, const RowEvents& 
     } else {
       next_query();
       const auto& is_active = cavity.is_active;
-      ok = stolen_areas(p, cavity.active, [&](std::uint32_t n) { return n != no_neighbour && is_active[n]; },
-                        weights);
+      ok = stolen_areas(
+          p, cavity.active, [&](std::uint32_t n) { return n != no_neighbour && is_active[n]; }, weights);
       hint_ = cavity.active[0];
     }
     if (ok) visit(i, j, weights);
@@ -525,8 +529,8 @@ namespace {
 // The pixels of `domain` (owning_triangles) one by one: each cavity grown from the previous
 // pixel's start triangle (a row starts where the previous row's second pixel did).
 template <class Write>
-void search_domain_pixels(SibsonCoordinates& sibson, const std::vector<std::uint32_t>& domain,
-                          const PixelMapping& map, Write&& write) {
+void search_domain_pixels(SibsonCoordinates& sibson, const std::vector<std::uint32_t>& domain, const PixelMapping& map,
+                          Write&& write) {
   std::vector<NeighbourWeight> weights;
   std::uint32_t row_start = 0;  // where the next row's first search starts: this row's start
   for (int j = 0; j < map.out_height; ++j) {
@@ -548,8 +552,8 @@ void render_natural(const Mesh& mesh, int domain_width, int domain_height, const
   const bool full = covers_rectangle(mesh, xmax, ymax);
   // A mesh that covers the rectangle (its hull) and is locally Delaunay is a Delaunay
   // triangulation of its vertices, and is used as is; otherwise one is built.
-  SibsonCoordinates sibson = full && is_locally_delaunay(mesh, topo) ? SibsonCoordinates(mesh, topo)
-                                                                     : SibsonCoordinates(mesh.points);
+  SibsonCoordinates sibson =
+      full && is_locally_delaunay(mesh, topo) ? SibsonCoordinates(mesh, topo) : SibsonCoordinates(mesh.points);
   const int nc = mesh.value_count;
   auto write = [&](int i, int j, const std::vector<NeighbourWeight>& weights) {
     for (int c = 0; c < nc; ++c) {

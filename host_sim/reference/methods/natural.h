@@ -84,8 +84,7 @@ class SibsonCoordinates {
   template <class Visit>
   void sweep(const PixelMapping& map, double xmax, double ymax, Visit&& visit);
   SweepCircles sweep_circles(const PixelMapping& map) const;
-  std::pair<int, int> circle_run(const SweepCircles& circles, const PixelMapping& map, std::uint32_t slot,
-                                 int j) const;
+  std::pair<int, int> circle_run(const SweepCircles& circles, const PixelMapping& map, std::uint32_t slot, int j) const;
   void row_events(const SweepCircles& circles, const PixelMapping& map, int j, RowEvents& events) const;
   template <class Visit>
   void sweep_row(const SweepCircles& circles, const RowEvents& events, const PixelMapping& map, double xmax,

@@ -400,8 +400,8 @@ struct CircumcentreValues {
   std::vector<std::uint8_t> has_value;
 };
 
-CircumcentreValues circumcentre_values(const Mesh& mesh, const Topology& topo, const Mesh& dt, double xmax,
-                                       double ymax, MeshLocator& locator) {
+CircumcentreValues circumcentre_values(const Mesh& mesh, const Topology& topo, const Mesh& dt, double xmax, double ymax,
+                                       MeshLocator& locator) {
   const int nc = mesh.value_count;
   std::vector<std::vector<Gradient>> gradients;
   for (int c = 0; c < nc; ++c) gradients.push_back(vertex_gradients(mesh, topo, c));
