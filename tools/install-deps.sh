@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages a task needs, and only those that are missing.
-# Usage: tools/install-deps.sh [build|fuzz|cross|bench|experiments|all]...   (default: build)
+# Usage: tools/install-deps.sh [build|fuzz|cross|bench|experiments|browser|all]...   (default: build)
+# browser: headless Chromium, for the check of the report page (make experiments-quick).
 set -euo pipefail
 
 declare -A groups=(
@@ -9,6 +10,7 @@ declare -A groups=(
   [cross]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-user file"
   [bench]="valgrind"
   [experiments]="python3 python3-numpy python3-scipy python3-matplotlib python3-pil python3-tqdm"
+  [browser]="chromium"
 )
 
 wanted=()
@@ -18,7 +20,7 @@ for group in "${@:-build}"; do
   elif [ -n "${groups[$group]:-}" ]; then
     wanted+=(${groups[$group]})
   else
-    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench, experiments or all)" >&2
+    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench, experiments, browser or all)" >&2
     exit 64
   fi
 done

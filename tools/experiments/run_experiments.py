@@ -148,10 +148,9 @@ def build_work(plan, tools):
             enc = Enc("time", s.name, s.group, s, True, "grey", "grey", scaled(n, s.width, s.height), n)
             for method in tools.methods:
                 for engine in tools.engines:
-                    for rep in range(plan.time_repeats):
-                        timing.append(TimeRun(enc, method, "", engine, rep))
+                    timing.append(TimeRun(enc, method, "", engine, plan.time_repeats))
                 if method in THESIS_VARIANTS:
-                    timing.append(TimeRun(enc, method, "thesis", "reference", 0))
+                    timing.append(TimeRun(enc, method, "thesis", "reference", 1))
     return work, timing
 
 
