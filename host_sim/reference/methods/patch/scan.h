@@ -325,10 +325,12 @@ bool start_along_sides(const std::array<BoundaryArc, Sides>& arcs, unsigned alon
 
 // The pixels of row j between its leftmost and rightmost crossing, each visited from the
 // last three solutions extrapolated while they settle it, else from the nearer crossing, the
-// other, the grid and the sides along the row, in that order.
+// other, the grid and the sides along the row, in that order. Inlined into scan_rows: as a
+// call it cost 0.3% more instructions on kodim23 (callgrind).
 template <class Patch, class Visit>
-void scan_row(const Patch& patch, const std::array<BoundaryArc, Patch::side_count>& arcs, RowCrossings& row, int j,
-              int width, GridStarts<Patch>& grid, const SettleRule<Patch>& settles, Visit& visit) {
+[[gnu::always_inline]] inline void scan_row(const Patch& patch, const std::array<BoundaryArc, Patch::side_count>& arcs,
+                                            RowCrossings& row, int j, int width, GridStarts<Patch>& grid,
+                                            const SettleRule<Patch>& settles, Visit& visit) {
   RowCrossing* crossing = row.crossing;
   const int count = row.count;
   for (int k = 1; k < count; ++k)  // insertion sort by x: a row has a few crossings
