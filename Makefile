@@ -78,5 +78,7 @@ experiments: build
 	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set full --jobs 2
 
 experiments-quick: build
-	@bash tools/install-deps.sh experiments
+	@bash tools/install-deps.sh experiments browser
 	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set quick --jobs 2
+	/usr/bin/python3 tools/experiments/check_page.py out/report/index.html \
+	  --figures out/report/charts out/report/pictures --screenshot out/report/screenshot.png

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages a task needs, and only those that are missing.
-# Usage: tools/install-deps.sh [build|fuzz|cross|bench|mcu|experiments|all]...   (default: build)
+# Usage: tools/install-deps.sh [build|fuzz|cross|bench|mcu|experiments|browser|all]...   (default: build)
+# browser: headless Chromium, for the check of the report page (make experiments-quick).
 set -euo pipefail
 
 declare -A groups=(
@@ -10,6 +11,7 @@ declare -A groups=(
   [bench]="valgrind"
   [mcu]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi libunicorn-dev libcapstone-dev pkg-config"
   [experiments]="python3 python3-numpy python3-scipy python3-matplotlib python3-pil python3-tqdm"
+  [browser]="chromium"
 )
 
 wanted=()
@@ -19,7 +21,7 @@ for group in "${@:-build}"; do
   elif [ -n "${groups[$group]:-}" ]; then
     wanted+=(${groups[$group]})
   else
-    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench, mcu, experiments or all)" >&2
+    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench, mcu, experiments, browser or all)" >&2
     exit 64
   fi
 done

@@ -1,5 +1,5 @@
 #pragma once
-// The pixel coverage rule shared by every triangle-based reference method (NOTES.md):
+// The pixel coverage rule shared by every triangle-based reference method (docs/CONVENTIONS.md):
 // output pixel (i, j) samples the domain point (i * sx, j * sy). A sample point strictly
 // inside a triangle belongs to it. A point on edges is decided by symbolic perturbation: it
 // belongs to the triangle that contains p + eps * w(p), where w points into the image

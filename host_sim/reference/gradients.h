@@ -1,8 +1,8 @@
 #pragma once
-// Vertex gradients estimated from the surface (x, y, value) as thesis Eq. 3.2 (NOTES.md
-// §3.2): the unit normals of the triangles around a vertex, weighted by their areas,
-// summed; gradient = (-n_x / n_I, -n_y / n_I). Zienkiewicz and Clough-Tocher share it, and
-// the packer stores it in fixed point for the core.
+// Vertex gradients estimated from the surface (x, y, value) as thesis Eq. 3.2 (docs/CONVENTIONS.md):
+// the unit normals of the triangles around a vertex, weighted by their areas, summed;
+// gradient = (-n_x / n_I, -n_y / n_I). Zienkiewicz and Clough-Tocher share it, and the packer
+// stores it in fixed point for the core.
 #include <vector>
 
 #include "model/topology.h"

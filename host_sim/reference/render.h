@@ -1,5 +1,5 @@
 #pragma once
-// Double-precision reference renderers of every interpolation method (NOTES.md conventions).
+// Double-precision reference renderers of every interpolation method (docs/CONVENTIONS.md).
 #include <cstdint>
 #include <span>
 #include <string>

@@ -4,12 +4,17 @@
 // without the relocation post-pass) beside a regular grid of the same vertex count, at 0.5,
 // 1, 2 and 5 % of the pixels.
 //
-//   encoder_quality [images...]   (default: the three images in /work/shared/images)
+//   encoder_quality [images...]
+//
+// Default images: with TRISTREAM_IMAGES set (tests/support/test_images.h), its grey/boat.png,
+// grey/peppers_grey.png, colour/peppers.png and kodak/kodim23.png; otherwise the shipped
+// data/demo/kodim23.png.
 //
 // With --sweep it compares encoder settings instead: bilinear PSNR (the 8-bit linear
 // interpolant against the encoded image) of each setting on every image (default: every image
-// of /work/shared/images/grey and /colour, colour ones as RGB co-triangulations) at each
-// density, then per setting the mean and the smallest gain over the first setting.
+// of $TRISTREAM_IMAGES/grey and /colour, colour ones as RGB co-triangulations, or the demo image
+// when the variable is unset) at each density, then per setting the mean and the smallest gain
+// over the first setting.
 //
 //   encoder_quality --sweep [--settings a,b,...] [--percent p,q,...] [images...]
 #include <algorithm>
@@ -25,6 +30,8 @@
 #include "io/image_io.h"
 #include "metrics/metrics.h"
 #include "reference/render.h"
+
+#include "../support/test_images.h"
 
 using namespace tristream;
 
@@ -47,8 +54,8 @@ struct Row {
 };
 
 void print_row(const std::string& image, double percent, const Row& row, const Image& original) {
-  std::printf("| %s | %.1f | %zu | %s |", image.c_str(), percent, row.tri.layers[0].vertex_count() * row.tri.layers.size(),
-              row.label.c_str());
+  std::printf("| %s | %.1f | %zu | %s |", image.c_str(), percent,
+              row.tri.layers[0].vertex_count() * row.tri.layers.size(), row.label.c_str());
   for (const char* method : {"bilinear", "zienkiewicz"}) {
     const Image render = render_reference(row.tri, *find_reference_method(method), {});
     const Metrics m = compare_images(render, encoded_original(original, row.tri));
@@ -96,6 +103,40 @@ std::vector<std::string> split(const std::string& list) {
   return out;
 }
 
+// The default images of the table: four shared photographs, or the demo without them.
+std::vector<std::string> default_images() {
+  if (test::shared_images_dir().empty()) {
+    std::fprintf(stderr, "encoder_quality: %s is unset: the demo image only\n", test::images_variable);
+    return {test::demo_image()};
+  }
+  std::vector<std::string> paths;
+  for (const char* p : {"grey/boat.png", "grey/peppers_grey.png", "colour/peppers.png", "kodak/kodim23.png"})
+    paths.push_back(test::shared_images_dir() + "/" + p);
+  return paths;
+}
+
+// The default images of --sweep: every PNG of $TRISTREAM_IMAGES/grey and /colour, or the demo.
+std::vector<std::string> default_sweep_images() {
+  if (test::shared_images_dir().empty()) {
+    std::fprintf(stderr, "encoder_quality: %s is unset: the demo image only\n", test::images_variable);
+    return {test::demo_image()};
+  }
+  std::vector<std::string> paths;
+  for (const char* group : {"grey", "colour"}) {
+    const std::string dir = test::shared_images_dir() + "/" + group;
+    if (!std::filesystem::is_directory(dir)) {
+      std::fprintf(stderr, "encoder_quality: SKIPPED %s (absent)\n", dir.c_str());
+      continue;
+    }
+    std::vector<std::string> found;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+      if (e.path().extension() == ".png") found.push_back(e.path().string());
+    std::sort(found.begin(), found.end());
+    paths.insert(paths.end(), found.begin(), found.end());
+  }
+  return paths;
+}
+
 int sweep(std::vector<std::string> args) {
   std::vector<const Setting*> chosen;
   std::vector<double> percents = {0.5, 1, 2, 5};
@@ -119,19 +160,7 @@ int sweep(std::vector<std::string> args) {
   }
   if (chosen.empty())
     for (const Setting& s : settings()) chosen.push_back(&s);
-  if (paths.empty()) {
-    for (const char* dir : {"/work/shared/images/grey", "/work/shared/images/colour"}) {
-      if (!std::filesystem::is_directory(dir)) {
-        std::fprintf(stderr, "encoder_quality: SKIPPED %s (absent)\n", dir);
-        continue;
-      }
-      std::vector<std::string> found;
-      for (const auto& e : std::filesystem::directory_iterator(dir))
-        if (e.path().extension() == ".png") found.push_back(e.path().string());
-      std::sort(found.begin(), found.end());
-      paths.insert(paths.end(), found.begin(), found.end());
-    }
-  }
+  if (paths.empty()) paths = default_sweep_images();
   std::printf("| image | %% pixels |");
   for (const Setting* s : chosen) std::printf(" %s |", s->name);
   std::printf("\n|---|---|");
@@ -162,7 +191,8 @@ int sweep(std::vector<std::string> args) {
       std::printf("\n");
     }
   }
-  std::printf("\nGain over %s in dB, mean (smallest) over the images; encode time summed:\n\n| setting |", chosen[0]->name);
+  std::printf("\nGain over %s in dB, mean (smallest) over the images; encode time summed:\n\n| setting |",
+              chosen[0]->name);
   for (double p : percents) std::printf(" %.1f %% |", p);
   std::printf(" all | seconds |\n|---|");
   for (std::size_t k = 0; k <= percents.size(); ++k) std::printf("---|");
@@ -188,9 +218,7 @@ int sweep(std::vector<std::string> args) {
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--sweep") return sweep(std::vector<std::string>(argv + 2, argv + argc));
   std::vector<std::string> paths(argv + 1, argv + argc);
-  if (paths.empty())
-    for (const char* p : {"grey/boat.png", "grey/peppers_grey.png", "colour/peppers.png", "kodak/kodim23.png"})
-      paths.push_back(std::string("/work/shared/images/") + p);
+  if (paths.empty()) paths = default_images();
   std::printf("| image | %% pixels | vertices | sampling | bilinear PSNR | bilinear SSIM | zienkiewicz PSNR | "
               "zienkiewicz SSIM | encode s |\n|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& path : paths) {

@@ -20,6 +20,8 @@
 #include "io/image_io.h"
 #include "io/tri_file.h"
 
+#include "../support/test_images.h"
+
 using namespace tristream;
 
 namespace {
@@ -43,7 +45,8 @@ Image synthetic(int w, int h, int channels, unsigned seed = 1) {
 
 double squared_error(const Image& a, const Image& b) {
   double s = 0;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i) s += (double(a.pixels[i]) - b.pixels[i]) * (double(a.pixels[i]) - b.pixels[i]);
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    s += (double(a.pixels[i]) - b.pixels[i]) * (double(a.pixels[i]) - b.pixels[i]);
   return s;
 }
 
@@ -163,7 +166,8 @@ TEST_CASE("vertices reproduce their pixels; YCbCr round trips within one level",
   const EncodeResult r = encode(img, o);
   const Image out = render_linear(r.triangulation);
   int worst = 0;
-  for (std::size_t i = 0; i < img.pixels.size(); ++i) worst = std::max(worst, std::abs(int(out.pixels[i]) - img.pixels[i]));
+  for (std::size_t i = 0; i < img.pixels.size(); ++i)
+    worst = std::max(worst, std::abs(int(out.pixels[i]) - img.pixels[i]));
   // 8-bit rounding of Y, Cb and Cr moves each RGB channel by at most 0.5 * (1 + 1.772).
   REQUIRE(worst <= 2);
 }
@@ -198,7 +202,8 @@ TEST_CASE("least squares reproduces a linear image and lowers the error", "[enco
   Mesh m = encode(plane, o).triangulation.layers[0];
   for (double& v : m.values) v = std::clamp(v + 9.0, 0.0, 255.0);  // far from the answer
   encoder::fit_least_squares(m, target);
-  for (std::size_t v = 0; v < m.vertex_count(); ++v) REQUIRE(m.value(v, 0) == 2 * m.points[v].x + 3 * m.points[v].y + 7);
+  for (std::size_t v = 0; v < m.vertex_count(); ++v)
+    REQUIRE(m.value(v, 0) == 2 * m.points[v].x + 3 * m.points[v].y + 7);
 
   const Image img = synthetic(90, 70, 3, 13);
   const encoder::Planes t3 = encoder::to_planes(img, ColorSpace::rgb);
@@ -246,7 +251,8 @@ TEST_CASE("relocation keeps a Delaunay tiling of distinct pixels and lowers the 
     }
     REQUIRE(moved > 0);
     REQUIRE(distinct.size() == m.vertex_count());
-    for (auto corner : {std::pair{0.0, 0.0}, {95.0, 0.0}, {0.0, 79.0}, {95.0, 79.0}}) REQUIRE(distinct.count(corner) == 1);
+    for (auto corner : {std::pair{0.0, 0.0}, {95.0, 0.0}, {0.0, 79.0}, {95.0, 79.0}})
+      REQUIRE(distinct.count(corner) == 1);
     for (const Triangle& t : m.triangles) {
       REQUIRE(orient2d(m.points[t.v[0]], m.points[t.v[1]], m.points[t.v[2]]) > 0);
       for (const Point& p : m.points) REQUIRE(incircle(m.points[t.v[0]], m.points[t.v[1]], m.points[t.v[2]], p) <= 0);
@@ -301,13 +307,11 @@ TEST_CASE("regular grid baseline", "[encoder]") {
 }
 
 TEST_CASE("real photographs at 1% vertices meet the issue's targets", "[encoder][images]") {
-  // ../shared/images beside the repository (as on the developers' and CI machines), else /work/shared.
-  std::string images = std::string(TRISTREAM_SOURCE_DIR) + "/../shared/images";
-  if (!std::filesystem::exists(images)) images = "/work/shared/images";
-  const std::string grey_path = images + "/grey/peppers_grey.png";
-  const std::string colour_path = images + "/colour/peppers.png";
-  if (!std::filesystem::exists(grey_path) || !std::filesystem::exists(colour_path)) {
-    WARN("SKIPPED: " << grey_path << " or " << colour_path << " is absent");
+  // Two of the project's test photographs, from $TRISTREAM_IMAGES (tests/support/test_images.h).
+  const std::string grey_path = test::shared_image("grey/peppers_grey.png");
+  const std::string colour_path = test::shared_image("colour/peppers.png");
+  if (grey_path.empty() || colour_path.empty()) {
+    WARN(test::skip_message("grey/peppers_grey.png and colour/peppers.png"));
     return;
   }
   const Image grey = read_image(grey_path);

@@ -114,7 +114,24 @@ class FindingsTest(unittest.TestCase):
         f = {x["topic"]: x for x in findings.grey_findings(rows)}
         psnr = f["Zienkiewicz against bilinear (PSNR)"]
         self.assertIn("1 of 2", psnr["here"])
-        self.assertEqual(psnr["verdict"], "mixed")
+        self.assertEqual(psnr["cases"], 2)
+        self.assertEqual(psnr["verdict"], "not enough data")  # below findings.MIN_CASES
+
+    def test_verdict_from_enough_cases(self):
+        rows = []
+        for k, better in enumerate([True, False, True, False, True, False]):
+            rows += [row(f"i{k}", 1000, "bilinear", 30, 0.8), row(f"i{k}", 1000, "zienkiewicz", 31 if better else 29,
+                                                                   0.81 if better else 0.79)]
+        psnr = {x["topic"]: x for x in findings.grey_findings(rows)}["Zienkiewicz against bilinear (PSNR)"]
+        self.assertEqual((psnr["cases"], psnr["verdict"]), (6, "mixed"))
+
+    def test_claim_about_an_absent_image_is_not_compared(self):
+        rows = [row(f"i{k}", 5000, m, 31, 0.8) for k in range(6) for m in ("bilinear", "zienkiewicz")]
+        f = {x["topic"]: x for x in findings.grey_findings(rows)}
+        self.assertIn("Fruits", f["30 dB at 5,000 vertices"]["verdict"])
+        rows += [row("fruits", 5000, m, 31, 0.8) for m in ("bilinear", "zienkiewicz")]
+        f = {x["topic"]: x for x in findings.grey_findings(rows)}
+        self.assertEqual(f["30 dB at 5,000 vertices"]["verdict"], "agrees")
 
     def test_ranking_reports_reversed_pairs(self):
         rows = [row("a", 1000, m, p, 0.8) for m, p in (("zienkiewicz", 28), ("bilinear", 30), ("natural", 29))]
@@ -125,21 +142,24 @@ class FindingsTest(unittest.TestCase):
 
     def test_separate_against_co(self):
         rows = []
-        for m in ("bilinear", "zienkiewicz"):
-            rows.append(row("a", 3000, m, 30, 0.80, study="colour", colour="separate-rgb", mode="separate",
-                            space="rgb"))
-            rows.append(row("a", 3000, m, 31, 0.85, study="colour", colour="co-rgb", mode="co", space="rgb",
-                            cotri="greedy"))
+        for image in ("a", "b", "c"):
+            for m in ("bilinear", "zienkiewicz"):
+                rows.append(row(image, 3000, m, 30, 0.80, study="colour", colour="separate-rgb", mode="separate",
+                                space="rgb"))
+                rows.append(row(image, 3000, m, 31, 0.85, study="colour", colour="co-rgb", mode="co", space="rgb",
+                                cotri="greedy"))
         f = {x["topic"]: x for x in findings.colour_findings(rows)}
-        self.assertIn("0 of 2", f["Separate against co-triangulation, equal totals (PSNR)"]["here"])
+        self.assertIn("0 of 6", f["Separate against co-triangulation, equal totals (PSNR)"]["here"])
         self.assertEqual(f["Compression: co-triangulation against separate"]["verdict"], "agrees")
 
     def test_verdict_thresholds(self):
-        self.assertEqual(findings.verdict(None), "no data")
-        self.assertEqual(findings.verdict(0.8), "agrees")
-        self.assertEqual(findings.verdict(0.6), "mostly agrees")
-        self.assertEqual(findings.verdict(0.3), "mixed")
-        self.assertEqual(findings.verdict(0.1), "disagrees")
+        n = findings.MIN_CASES
+        self.assertEqual(findings.verdict(None, 0), "no data")
+        self.assertEqual(findings.verdict(1.0, n - 1), "not enough data")
+        self.assertEqual(findings.verdict(0.8, n), "agrees")
+        self.assertEqual(findings.verdict(0.6, n), "mostly agrees")
+        self.assertEqual(findings.verdict(0.3, n), "mixed")
+        self.assertEqual(findings.verdict(0.1, n), "disagrees")
 
 
 @unittest.skipUnless((BIN / "trisim").exists(), f"trisim not built in {BIN}")

@@ -10,10 +10,10 @@
 //   bezier 631.9M (2,410 per pixel) before the bit-identical speedups, 593.0M (2,262) after;
 //   coons 1,059.2M (4,041) before, 988.5M (3,771) after. Of coons's, about 1.07M calls of
 //   rasterize_micro_triangle cost ~430M with their visits, 1.13M Newton solves ~315M.
-//   After the closed-domain rule (patch_raster.h: Newton until its step is below 1e-7, so
+//   After the closed-domain rule (patch/raster.h: Newton until its step is below 1e-7, so
 //   about one evaluation more per solve) and the Horner form of the Coons solve:
 //   bezier 667.2M (2,545 per pixel), coons 987.3M (3,766).
-//   After exact coverage by rows (patch_scan.h: no pixel beside a chord missed; every Coons
+//   After exact coverage by rows (patch/scan.h: no pixel beside a chord missed; every Coons
 //   patch's fold bounded by cells, whose boxes widen the rows): bezier 678.4M (2,588),
 //   coons 1,187.1M (4,528); rgb: bezier 756.8M, coons 1,291.7M. Coons pays for its folds
 //   (half its patches fold; on the 13,000-vertex boat encoding, rendering without the fold

@@ -3,8 +3,9 @@
 
 Run with Debian's python (python3-skimage):
     /usr/bin/python3 tests/metrics/make_expected.py            # expected.json from data/*.png
-    /usr/bin/python3 tests/metrics/make_expected.py --crops    # first re-create data/*.png
-                                                                 # from ../shared/images/kodak
+    /usr/bin/python3 tests/metrics/make_expected.py --crops --kodak DIR
+                                  # first re-create data/*.png from the Kodak images in DIR
+                                  # (default: $TRISTREAM_IMAGES/kodak)
 The crops are small pieces of Kodak photographs (free to use). Degraded versions: Gaussian
 noise (fixed seed) and a Gaussian blur, rounded back to 8 bits.
 """
@@ -21,7 +22,6 @@ from skimage.util import view_as_windows
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "data")
-KODAK = os.path.join(HERE, "..", "..", "..", "shared", "images", "kodak")
 
 # (name, Kodak file, left, top): 96x64 crops of textured areas.
 CROPS = [
@@ -36,10 +36,10 @@ def save(name, array):
     Image.fromarray(array).save(os.path.join(DATA, name + ".png"), optimize=True)
 
 
-def make_crops():
+def make_crops(kodak):
     rng = np.random.default_rng(20261123)
     for name, file, left, top in CROPS:
-        full = np.asarray(Image.open(os.path.join(KODAK, file)).convert("RGB"))
+        full = np.asarray(Image.open(os.path.join(kodak, file)).convert("RGB"))
         crop = full[top:top + H, left:left + W].copy()
         noisy = np.clip(np.rint(crop + rng.normal(0.0, 12.0, crop.shape)), 0, 255).astype(np.uint8)
         blurred = np.clip(np.rint(ndimage.gaussian_filter(crop.astype(np.float64), (1.2, 1.2, 0))),
@@ -105,10 +105,16 @@ def expected(a_name, b_name):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--crops", action="store_true", help="re-create data/*.png from Kodak")
+    images = os.environ.get("TRISTREAM_IMAGES")
+    default_kodak = os.path.join(images, "kodak") if images else None
+    parser.add_argument("--kodak", default=default_kodak,
+                        help="directory with kodim08.png, kodim13.png, kodim23.png (default: $TRISTREAM_IMAGES/kodak)")
     args = parser.parse_args()
     if args.crops:
+        if not args.kodak:
+            parser.error("--crops needs --kodak DIR or TRISTREAM_IMAGES")
         os.makedirs(DATA, exist_ok=True)
-        make_crops()
+        make_crops(args.kodak)
     pairs = []
     for name, *_ in CROPS:
         pairs += [(name, name + "_noise"), (name, name + "_blur"), (name + "_noise", name + "_blur")]

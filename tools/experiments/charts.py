@@ -55,13 +55,12 @@ def _bars(ax, labels, values, errors=None, metric=""):
     ax.set_xticks(x)
     ax.set_xticklabels(labels, rotation=35, ha="right", fontsize=8)
     ax.set_ylabel(METRIC_LABEL.get(metric, metric))
+    # Bars start at zero (a bar's length is its value), so small differences look small; the
+    # tables and the CSV files give the exact values.
     finite = [v for v in values if v is not None and np.isfinite(v)]
-    if finite and metric in ("psnr", "ssim", "ssim_8x8"):
-        lo_lim = min(finite) if errors is None else min(e[0] for e in errors)
-        hi_lim = max(finite) if errors is None else max(e[1] for e in errors)
-        span = max(hi_lim - lo_lim, 1e-3)
-        ax.set_ylim(max(0.0, lo_lim - 0.25 * span) if metric != "psnr" else lo_lim - 0.25 * span,
-                    hi_lim + 0.1 * span)
+    if finite:
+        hi_lim = max(finite) if errors is None else max(e[1] for e in errors if np.isfinite(e[1]))
+        ax.set_ylim(0, hi_lim * 1.08 if hi_lim > 0 else 1)
     ax.grid(axis="y", alpha=0.3)
 
 
@@ -128,10 +127,8 @@ def grouped_bars(path, title, groups, series_order, values, metrics=("psnr", "ss
                            ha="right" if len(groups) > 5 else "center")
         ax.set_ylabel(METRIC_LABEL.get(metric, metric))
         finite = [v[metric] for v in values.values() if v.get(metric) is not None and np.isfinite(v[metric])]
-        if finite and metric != "mse":
-            lo, hi = min(finite), max(finite)
-            span = max(hi - lo, 1e-3)
-            ax.set_ylim(lo - 0.3 * span if metric == "psnr" else max(0, lo - 0.3 * span), hi + 0.15 * span)
+        if finite:  # from zero, as in _bars
+            ax.set_ylim(0, max(finite) * 1.08 if max(finite) > 0 else 1)
         ax.grid(axis="y", alpha=0.3)
         if xlabel:
             ax.set_xlabel(xlabel)
@@ -145,7 +142,7 @@ def grouped_bars(path, title, groups, series_order, values, metrics=("psnr", "ss
 
 def time_chart(path, title, ours, thesis):
     """ours/thesis: {method: [(vertices, seconds)]}; log-scale seconds."""
-    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    fig, ax = plt.subplots(figsize=(11, 6.5))
     for label, pts in ours.items():
         pts = sorted(pts)
         ax.plot([p[0] for p in pts], [p[1] for p in pts], "-o", ms=3.5, color=colour_of(label),
@@ -158,7 +155,7 @@ def time_chart(path, title, ours, thesis):
     ax.set_xlabel("vertices (512x512 image)")
     ax.set_ylabel("seconds per image")
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7, ncol=2, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.legend(fontsize=9, ncol=2, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.set_title(title, fontsize=10)
     fig.tight_layout()
     return save(fig, path)

@@ -41,7 +41,7 @@ class TimeRun:
     method: str
     variant: str
     engine: str
-    rep: int
+    runs: int  # timed renders of one `trisim bench` call
 
 
 def luma(rgb: np.ndarray) -> np.ndarray:
@@ -82,7 +82,6 @@ class Executor:
         with self.locks_lock:
             return self.locks.setdefault(key, threading.Lock())
 
-    # ---- inputs ----------------------------------------------------------------------------
     def input_image(self, source: Source, grey: bool) -> Path:
         """The file triencode and trisim read: the original, its luma, or a crop (derived once)."""
         if not grey and source.crop is None:
@@ -103,7 +102,6 @@ class Executor:
                 atomic_write_bytes(out, png_bytes(np.ascontiguousarray(pixels)))
         return out
 
-    # ---- encodings --------------------------------------------------------------------------
     def encode(self, enc: Enc) -> dict:
         if enc in self.enc_results:
             return self.enc_results[enc]
@@ -195,7 +193,6 @@ class Executor:
         cached = self.cache.load("enc", key)
         return cached if cached else {"status": "missing", "error": "not in the cache"}
 
-    # ---- quality runs -------------------------------------------------------------------------
     def _run_desc(self, run, enc_result, original: Path, purpose: str, rep: int = 0):
         desc = {"kind": purpose, "tool": self.tools.trisim_sha, "tri": file_sha256(enc_result["tri"]),
                 "original": file_sha256(original), "method": run.method, "variant": run.variant,
@@ -321,7 +318,6 @@ class Executor:
             return Path(r["render"])
         return None
 
-    # ---- timing runs ------------------------------------------------------------------------------
     def time_run(self, t: TimeRun):
         e = self.encode(t.enc)
         if e["status"] != "ok":
@@ -332,25 +328,27 @@ class Executor:
                                                                                          t.engine)]}
             return
         original = Path(e["image_file"])
-        key = key_of(self._run_desc(t, e, original, "time", t.rep))
+        key = key_of({**self._run_desc(t, e, original, "time", t.runs), "timer": "bench"})
         cached = self.cache.load("time", key)
         if cached is not None or self.cache.offline:
             self.time_results[t] = cached or {"status": "missing", "error": "not in the cache"}
             return
-        args = [self.tools.trisim, "compare", e["tri"], "--method", t.method, "--engine", t.engine,
-                "--original", original, "--json"]
+        # trisim's own timing of the render alone (after a warm-up render): the fastest wall time
+        # and the median CPU time of t.runs renders, without reading files or computing metrics.
+        args = [self.tools.trisim, "bench", e["tri"], "--method", t.method, "--engine", t.engine,
+                "--runs", str(t.runs), "--json"]
         if t.variant:
             args += ["--variant", t.variant]
         load = os.getloadavg()[0]
-        code, out, err, cpu = run_tool(args, timeout=RENDER_TIMEOUT)
-        result = {"load1": load, "cpu_s": cpu, "key": key}
+        code, out, err, _ = run_tool(args, timeout=RENDER_TIMEOUT)
+        result = {"load1": load, "key": key}
         if code == 0:
             j = json.loads(out.strip().splitlines()[-1])
-            result.update(status="ok", ms=j["ms"], vertices=j["vertices"], triangles=j["triangles"],
-                          width=j["width"], height=j["height"])
+            result.update(status="ok", ms=j["ms_min"], cpu_ms=j["cpu_ms_median"], runs=j["runs"],
+                          vertices=e.get("vertices"), triangles=e.get("triangles"))
         else:
             result.update(status="unsupported" if code == EXIT_USAGE else "failed",
-                          error=f"trisim compare exit {code}: {first_line(err)}")
+                          error=f"trisim bench exit {code}: {first_line(err)}")
             if code == EXIT_USAGE:
                 self.unsupported[(t.method, t.variant, t.engine)] = result["error"]
         self.cache.store("time", key, result)

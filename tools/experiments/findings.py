@@ -5,6 +5,9 @@ from collections import defaultdict
 import numpy as np
 
 THESIS_RANKING = ["zienkiewicz", "bilinear", "natural", "bezier", "coons", "voronoi"]
+# A verdict rests on at least this many cases (image x vertex count x ..., as each finding says);
+# below it the verdict is "not enough data", whatever the share.
+MIN_CASES = 5
 
 
 def ok(rows):
@@ -25,9 +28,12 @@ def _psnr(r):
     return float(r["psnr"]) if r.get("psnr") not in (None, "") else float("inf")
 
 
-def verdict(fraction, strong=0.75):
-    if fraction is None:
+def verdict(fraction, cases, strong=0.75):
+    """The verdict on a share `fraction` of `cases` cases that agree with the thesis."""
+    if fraction is None or not cases:
         return "no data"
+    if cases < MIN_CASES:
+        return "not enough data"
     if fraction >= strong:
         return "agrees"
     if fraction > 0.5:
@@ -53,16 +59,27 @@ def compare_pair(rows, better, worse, metric):
 
 
 def mean_ranks(rows, metric, methods):
+    """({method: mean rank over the cases}, number of cases ranked)."""
     cases = _by_case(rows, metric)
     ranks = defaultdict(list)
+    ranked = 0
     for values in cases.values():
         present = [m for m in methods if m in values]
         if len(present) < 2:
             continue
+        ranked += 1
         order = sorted(present, key=lambda m: values[m], reverse=(metric != "mse"))
         for i, m in enumerate(order):
             ranks[m].append(i + 1)
-    return {m: float(np.mean(v)) for m, v in ranks.items()}
+    return {m: float(np.mean(v)) for m, v in ranks.items()}, ranked
+
+
+def about_image(claim_image, rows):
+    """None when the thesis's claim is about an image the rows have (or about none), else a
+    verdict saying the comparison is with other images."""
+    if claim_image is None or any(r["image"] == claim_image for r in rows):
+        return None
+    return f"not comparable (the claim is about {claim_image.capitalize()}, not in this set)"
 
 
 def grey_findings(grey_rows):
@@ -82,7 +99,7 @@ def grey_findings(grey_rows):
             "here": (f"{scope.capitalize()}, Zienkiewicz has the higher {name} in {wins} of {total} greyscale "
                      f"cases (image x vertex count); mean difference {mean_d:+.3f}{unit}. Over all counts: "
                      f"{all_wins} of {all_total}." if total else "no cases with both methods"),
-            "verdict": verdict(frac)})
+            "cases": total, "verdict": verdict(frac, total)})
     # Voronoi: the thesis's "complete failure".
     for metric, name in (("psnr", "PSNR"),):
         cases = _by_case(rows, metric)
@@ -96,7 +113,7 @@ def grey_findings(grey_rows):
                         "thesis": "A complete failure: the worst method by every measure (6.1.1, 7).",
                         "here": f"Voronoi has the lowest {name} of all methods in {worst} of {total} greyscale "
                                 f"cases.",
-                        "verdict": verdict(worst / total)})
+                        "cases": total, "verdict": verdict(worst / total, total)})
     # Ranking by mean rank over cases.
     for metric, name in (("psnr", "PSNR"), ("ssim", "SSIM")):
         f = ranking_finding(rows, metric, name, "greyscale cases",
@@ -105,8 +122,9 @@ def grey_findings(grey_rows):
         if f:
             out.append(f)
     # 30 dB thresholds.
-    for nominal, claim in ((5000, "PSNR reaches 30 dB at about 5,000 vertices (Fruits, figure 6.11)"),
-                           (10000, "with 10,000 vertices PSNR usually goes over 30 dB")):
+    for nominal, claim, claim_image in ((5000, "PSNR reaches 30 dB at about 5,000 vertices (Fruits, figure 6.11)",
+                                         "fruits"),
+                                        (10000, "with 10,000 vertices PSNR usually goes over 30 dB", None)):
         best = defaultdict(float)
         for r in rows:
             if r["nominal_vertices"] == nominal and r["method"] in ("bilinear", "zienkiewicz") and not r["variant"]:
@@ -118,7 +136,8 @@ def grey_findings(grey_rows):
                         "here": f"{over} of {len(best)} greyscale images reach 30 dB at {nominal:,} vertices "
                                 f"(thesis scale) with the better of bilinear and Zienkiewicz "
                                 f"(median {np.median(list(best.values())):.2f} dB).",
-                        "verdict": verdict(over / len(best))})
+                        "cases": len(best),
+                        "verdict": about_image(claim_image, rows) or verdict(over / len(best), len(best))})
     # SSIM at 1,000 vertices with the thesis's 8x8 window.
     vals = [float(r["ssim_8x8"]) for r in rows if r["nominal_vertices"] == 1000 and not r["variant"]
             and r.get("ssim_8x8") not in (None, "") and r["method"] in ("bilinear", "zienkiewicz")]
@@ -129,7 +148,8 @@ def grey_findings(grey_rows):
                     "here": f"8x8-window SSIM of bilinear and Zienkiewicz at 1,000 vertices ranges "
                             f"{min(vals):.3f} to {max(vals):.3f} (median {np.median(vals):.3f}); "
                             f"{inside} of {len(vals)} values lie in 0.5-0.7.",
-                    "verdict": verdict(inside / len(vals))})
+                    "cases": len(vals),
+                    "verdict": about_image("lena", rows) or verdict(inside / len(vals), len(vals))})
     # Diminishing returns from 10,000 to 15,000.
     by = defaultdict(dict)
     for r in rows:
@@ -144,7 +164,7 @@ def grey_findings(grey_rows):
                     "here": f"Zienkiewicz PSNR gains {np.mean(g2):.2f} dB from 10,000 to 15,000 against "
                             f"{np.mean(g1):.2f} dB from 5,000 to 10,000 (mean over {len(g2)} images); the "
                             f"second step gains less on {smaller} of {len(g2)} images.",
-                    "verdict": verdict(smaller / len(g2))})
+                    "cases": len(g2), "verdict": verdict(smaller / len(g2), len(g2))})
     # Patch artifacts where small and large triangles meet.
     for patch in ("bezier", "coons"):
         for variant in ("", "thesis"):
@@ -176,13 +196,13 @@ def grey_findings(grey_rows):
                                 f"triangles whose area differs most from a neighbour's (top 10% of area ratio) and "
                                 f"{np.mean(lo_ratio):.3f}x in the most uniform half; higher in the mixed-size "
                                 f"triangles in {agree} of {total} cases.",
-                        "verdict": verdict(agree / total)})
+                        "cases": total, "verdict": verdict(agree / total, total)})
     return out
 
 
 def ranking_finding(rows, metric, name, scope, thesis_text, topic=None):
     present = sorted({r["method"] for r in rows if not r["variant"]})
-    ranks = mean_ranks(rows, metric, [m for m in THESIS_RANKING if m in present])
+    ranks, ranked = mean_ranks(rows, metric, [m for m in THESIS_RANKING if m in present])
     if len(ranks) < 2:
         return None
     ours = sorted(ranks, key=ranks.get)
@@ -202,8 +222,8 @@ def ranking_finding(rows, metric, name, scope, thesis_text, topic=None):
             + (f"; reversed: {', '.join(reversed_pairs)}" if reversed_pairs else "")
             + (f". Not built, so not ranked: {', '.join(missing)}" if missing else "") + ".")
     topic = topic or f"Ranking of the methods, {scope.split(' (')[0]} ({name})"
-    return {"topic": topic, "thesis": thesis_text,
-            "here": text, "verdict": verdict(agree / pairs if pairs else None)}
+    return {"topic": topic, "thesis": thesis_text, "here": text, "cases": ranked,
+            "verdict": verdict(agree / pairs if pairs else None, ranked)}
 
 
 def colour_findings(colour_rows):
@@ -242,7 +262,7 @@ def colour_findings(colour_rows):
                     "here": f"At equal total vertex counts, separate triangulations have the higher {name} in "
                             f"{sep_wins} of {total} cases (image x total x space x method); mean "
                             f"separate - co {np.mean(diffs):+.3f}{' dB' if metric == 'psnr' else ''}.",
-                    "verdict": verdict(frac)})
+                    "cases": total, "verdict": verdict(frac, total)})
     # Co-triangulations need fewer vertices.
     co_better = total = 0
     for (image, nominal, mode, space, cotri, method), r in idx.items():
@@ -257,7 +277,7 @@ def colour_findings(colour_rows):
                               "than separate triangulations (6.1.3, 7).",
                     "here": f"With the same total number of vertices, the co-triangulation is at least as good in "
                             f"PSNR in {co_better} of {total} cases (bilinear and Zienkiewicz).",
-                    "verdict": verdict(co_better / total)})
+                    "cases": total, "verdict": verdict(co_better / total, total)})
     for metric, name in (("psnr", "PSNR"), ("ssim", "SSIM")):
         rgb_wins = total = 0
         diffs = []
@@ -281,7 +301,7 @@ def colour_findings(colour_rows):
                         "here": f"RGB has the higher {name} in {rgb_wins} of {total} cases (same image, total, "
                                 f"mode and method); mean RGB - YCbCr {np.mean(diffs):+.3f}"
                                 f"{' dB' if metric == 'psnr' else ''}.",
-                        "verdict": verdict(rgb_wins / total)})
+                        "cases": total, "verdict": verdict(rgb_wins / total, total)})
     # Figure 6.13: the Y layer's count matters more than Cb/Cr's.
     split = [r for r in ok(colour_rows) if r["study"] == "split" and not r["variant"]]
     by = defaultdict(dict)
@@ -314,13 +334,16 @@ def colour_findings(colour_rows):
                             f"from more Cb/Cr vertices (over images and methods); the Y step is the larger in "
                             f"{sum(a > b for a, b in zip(gy, gc))} of {len(gy)} pairs. 'Much more' is taken as at "
                             f"least twice the gain.",
-                    "verdict": ("agrees" if np.mean(gy) >= 2 * max(np.mean(gc), 0) else
+                    "cases": len(gy),
+                    "verdict": ("not enough data" if len(gy) < MIN_CASES else
+                                "agrees" if np.mean(gy) >= 2 * max(np.mean(gc), 0) else
                                 "mostly agrees" if np.mean(gy) > np.mean(gc) else "disagrees")})
     return out
 
 
-def time_findings(table, thesis):
-    """table: {method label: {vertices: seconds}}; thesis: same for the thesis."""
+def time_findings(table, thesis, images):
+    """table: {method label: {vertices: seconds}}; thesis: same for the thesis; images: {vertices:
+    the number of images behind the means}. A case is an image timed at the compared count."""
     out = []
     counts = sorted({n for v in table.values() for n in v})
     if not counts:
@@ -344,7 +367,7 @@ def time_findings(table, thesis):
                 "here": "Here: " + " < ".join(f"{m} {ours[m]:.3g} s" for m in order)
                         + f". {agree} of {pairs} pairs of the thesis's methods in its order (patch methods "
                           f"compared through their thesis variants where run).",
-                "verdict": verdict(agree / pairs if pairs else None)})
+                "cases": images.get(n, 0), "verdict": verdict(agree / pairs if pairs else None, images.get(n, 0))})
     if "bilinear" in ours and "zienkiewicz" in ours:
         ratio = ours["zienkiewicz"] / ours["bilinear"]
         t_ratio = thesis["zienkiewicz"][n] / thesis["bilinear"][n] if n in thesis.get("bilinear", {}) else None
@@ -353,5 +376,5 @@ def time_findings(table, thesis):
                               + (f" ({t_ratio:.2f}x at {n:,} vertices)." if t_ratio else "."),
                     "here": f"Zienkiewicz takes {ratio:.2f}x the time of bilinear at {n:,} vertices "
                             f"({ours['zienkiewicz'] - ours['bilinear']:+.3f} s); within 2x counts as agreement.",
-                    "verdict": verdict(1.0 if ratio <= 2 else 0.0)})
+                    "cases": images.get(n, 0), "verdict": verdict(1.0 if ratio <= 2 else 0.0, images.get(n, 0))})
     return out

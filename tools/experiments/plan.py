@@ -101,9 +101,13 @@ def source(name, path, group, crop=None):
     return Source(name, Path(path), group, w, h, c, crop)
 
 
-def shared_sources(images_dir: Path, notes: List[str]):
+def shared_sources(images_dir: Optional[Path], notes: List[str]):
     """The photographs under images_dir (grey/, colour/, kodak/); empty lists with a note when absent."""
     found = {"grey": [], "colour": [], "kodak": []}
+    if images_dir is None:
+        notes.append("No test photographs given (--images DIR or TRISTREAM_IMAGES): the experiments that use "
+                     "them were skipped.")
+        return found
     if not images_dir.is_dir():
         notes.append(f"The shared test images ({images_dir}) are absent: the experiments that use them were "
                      f"skipped.")
@@ -118,7 +122,7 @@ def shared_sources(images_dir: Path, notes: List[str]):
     return found
 
 
-def make_plan(name: str, repo: Path, images_dir: Path) -> Plan:
+def make_plan(name: str, repo: Path, images_dir: Optional[Path]) -> Plan:
     demo = source("kodim23", repo / "data/demo/kodim23.png", "demo")
     if name == "quick":
         plan = Plan("quick")

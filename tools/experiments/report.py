@@ -3,6 +3,7 @@ import base64
 import csv
 import html
 import io
+import os
 from collections import defaultdict
 from pathlib import Path
 
@@ -36,7 +37,7 @@ FIELDS = ["study", "image", "group", "width", "height", "colour", "mode", "space
           "ssim_8x8", "ms", "cpu_s", "load1", "mae_high", "mae_low", "psnr_vs_reference",
           "max_abs_diff_vs_reference", "error"]
 TIME_FIELDS = ["image", "width", "height", "nominal_vertices", "vertices", "triangles", "method", "variant",
-               "engine", "rep", "status", "ms", "cpu_s", "load1", "error"]
+               "engine", "runs", "status", "ms", "cpu_ms", "load1", "error"]
 SEP_CO_COLOURS = {"separate": "#1f77b4", "co-triangulation": "#d62728"}
 MODE_COLOURS = {"separate-rgb": "#1f77b4", "separate-ycbcr": "#9ecae1", "co-rgb": "#d62728",
                 "co-ycbcr": "#fc9272", "co-rgb-thesis": "#7f0000"}
@@ -77,8 +78,8 @@ def time_rows(timing, executor):
         rows.append({"image": t.enc.image, "width": t.enc.source.width, "height": t.enc.source.height,
                      "nominal_vertices": t.enc.nominal, "vertices": r.get("vertices"),
                      "triangles": r.get("triangles"), "method": t.method, "variant": t.variant,
-                     "engine": t.engine, "rep": t.rep, "status": r.get("status"), "ms": r.get("ms"),
-                     "cpu_s": r.get("cpu_s"), "load1": r.get("load1"), "error": r.get("error", "")})
+                     "engine": t.engine, "runs": t.runs, "status": r.get("status"), "ms": r.get("ms"),
+                     "cpu_ms": r.get("cpu_ms"), "load1": r.get("load1"), "error": r.get("error", "")})
     return rows
 
 
@@ -93,17 +94,13 @@ def write_csv(path: Path, rows, fields):
 
 
 def time_table(trows):
-    """{label: {nominal: (mean over images of the min wall s over repeats, same for CPU s, images)}}."""
-    best = defaultdict(lambda: defaultdict(list))
-    for r in trows:
-        if r["status"] != "ok":
-            continue
-        best[(label(r["method"], r["variant"], r["engine"]), r["nominal_vertices"], r["image"])]["ms"].append(r["ms"])
-        best[(label(r["method"], r["variant"], r["engine"]), r["nominal_vertices"], r["image"])]["cpu"].append(
-            r["cpu_s"])
+    """{label: {nominal: (mean over images of the fastest render's wall s, of the median render CPU s,
+    images)}}, from trisim bench's timing of the renders alone."""
     per = defaultdict(lambda: defaultdict(list))
-    for (lab, n, image), v in best.items():
-        per[lab][n].append((min(v["ms"]) / 1000.0, min(v["cpu"])))
+    for r in trows:
+        if r["status"] == "ok" and r.get("cpu_ms") is not None:
+            per[label(r["method"], r["variant"], r["engine"])][r["nominal_vertices"]].append(
+                (r["ms"] / 1000.0, r["cpu_ms"] / 1000.0))
     return {lab: {n: (float(np.mean([x[0] for x in vals])), float(np.mean([x[1] for x in vals])), len(vals))
                   for n, vals in d.items()} for lab, d in per.items()}
 
@@ -145,9 +142,11 @@ color:#222;line-height:1.45}
 h1{font-size:1.6em}h2{border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:2em}
 table{border-collapse:collapse;margin:1em 0;font-size:.85em}td,th{border:1px solid #ccc;padding:.25em .5em;
 text-align:right;vertical-align:top}th{background:#f3f3f3}td:first-child,th:first-child{text-align:left}
-table.findings td{text-align:left}table.findings td:nth-child(4){white-space:nowrap;font-weight:600}
+table.findings td{text-align:left}table.findings td:nth-child(4){text-align:right}
+table.findings td:nth-child(5){white-space:nowrap;font-weight:600}
 figure{margin:1em 0}figure img{max-width:100%;border:1px solid #ddd}figcaption{font-size:.85em;color:#555}
 .file{color:#999}.agrees{color:#1a7f37}.disagrees{color:#c62828}.mixed{color:#b26a00}.mostly{color:#4d7f1a}
+.not,.no{color:#666}
 code{background:#f4f4f4;padding:0 .2em}.note{background:#fff8e1;padding:.5em 1em;border-left:3px solid #f0b400}
 """
 
@@ -165,19 +164,8 @@ def mean_of(rows, metric):
     return float(np.mean(vals)) if vals else None
 
 
-def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
-    out_dir = Path(out_dir)
-    chart_dir = out_dir / "charts"
-    pic_dir = out_dir / "pictures"
-    rows = quality_rows(work, executor)
-    trows = time_rows(timing, executor)
-    grey = [r for r in rows if r["study"] == "grey"]
-    colour = [r for r in rows if r["study"] in ("colour", "split")]
-    write_csv(out_dir / "results.csv", rows, FIELDS)
-    write_csv(out_dir / "greyscale.csv", grey, FIELDS)
-    write_csv(out_dir / "colour.csv", colour, FIELDS)
-    write_csv(out_dir / "time_runs.csv", trows, TIME_FIELDS)
-    ttable = time_table(trows)
+def write_time_csv(out_dir: Path, ttable):
+    """time.csv: per method and count the seconds here, the thesis's and their ratio."""
     trows_out = []
     for lab, d in ttable.items():
         base = lab.split(" ")[0]
@@ -189,19 +177,24 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
     write_csv(out_dir / "time.csv", trows_out, ["method", "nominal_vertices", "seconds", "cpu_seconds", "images",
                                                  "thesis_seconds", "thesis_over_here", "thesis_over_cpu"])
 
+
+def partial_note_html(rows, trows):
+    """A note naming the results not computed yet, or "" when every run has a result."""
     missing = defaultdict(int)
     for r in rows:
         if r["status"] == "missing":
             missing[r["study"]] += 1
     missing_t = sum(1 for r in trows if r["status"] == "missing")
-    partial_note = ""
-    if missing or missing_t:
-        partial_note = ('<p class=note>This report is partial: results not computed yet (written with '
-                        '--report-only or interrupted): '
-                        + html.escape(", ".join(f"{n} {s} runs" for s, n in sorted(missing.items()))
-                                      + (f", {missing_t} timing runs" if missing_t else ""))
-                        + ". Running the same command without --report-only computes them.</p>")
-    doc = Html()
+    if not (missing or missing_t):
+        return ""
+    return ('<p class=note>This report is partial: results not computed yet (written with '
+            '--report-only or interrupted): '
+            + html.escape(", ".join(f"{n} {s} runs" for s, n in sorted(missing.items()))
+                          + (f", {missing_t} timing runs" if missing_t else ""))
+            + ". Running the same command without --report-only computes them.</p>")
+
+
+def header_section(doc, plan, ctx, partial_note):
     doc.add(f"<!DOCTYPE html><html lang=en><head><meta charset=utf-8><title>tristream: chapter 6 reproduced "
             f"({plan.name} set)</title><style>{CSS}</style></head><body>")
     doc.h(1, f"tristream: the thesis's chapter 6 reproduced ({plan.name} set)")
@@ -221,14 +214,19 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
                  if cb else "; the run that computed them left no record."), raw=True)
     doc.add("<p>Contents: <a href=#conventions>conventions</a> · <a href=#findings>findings</a> · "
             "<a href=#grey>greyscale</a> · <a href=#colour>colour</a> · <a href=#time>time</a> · "
-            "<a href=#pictures>pictures</a> · <a href=#notes>notes and failures</a> · <a href=#files>files</a></p>")
+            "<a href=#pictures>pictures</a> · <a href=#notes>notes, not supported, failures</a> · "
+            "<a href=#files>files</a></p>")
     if partial_note:
         doc.add(partial_note)
 
-    # ---- conventions
+
+def absent_methods(tools):
+    return [m for m in METHOD_ORDER if m not in tools.methods]
+
+
+def conventions_section(doc, plan, tools):
     doc.h(2, "Conventions", "conventions")
-    missing_methods = [m for m in ("bilinear", "zienkiewicz", "bezier", "coons", "voronoi", "natural",
-                                   "clough-tocher") if m not in tools.methods]
+    missing_methods = absent_methods(tools)
     conv = [
         f"Methods run: {', '.join(tools.methods)} (from <code>trisim compare --help</code>)"
         + (f"; not built, so absent: {', '.join(missing_methods)}" if missing_methods else "")
@@ -254,35 +252,53 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
         "The triangulations are made for linear interpolation: greedy insertion ranks triangles by the error of "
         "the linear interpolant, so bilinear is the method its vertex choice serves; every other method is "
         "measured on those same vertices.",
-        "Time: trisim's own render time (the <code>ms</code> field: rendering only, excluding reading and "
-        "metrics), wall clock, the minimum over repeats per image, then the mean over images; CPU seconds of the "
-        "whole trisim process are given beside it. The thesis timed 512x512 images on a 1.86 GHz Core2Duo E6300 "
-        "under .NET.",
+        "Time: trisim bench's timing of the render alone (no reading, no metrics): the fastest wall time and the "
+        "median CPU time over its timed renders, then the mean over images. The thesis timed 512x512 images on a "
+        "1.86 GHz Core2Duo E6300 under .NET.",
     ]
     doc.add("<ul>" + "".join(f"<li>{c}</li>" for c in conv) + "</ul>")
     for note in plan.notes:
         doc.add(f'<p class=note>{html.escape(note)}</p>')
 
-    # ---- findings
+
+
+def findings_section(doc, grey, colour, ttable):
     fl = findings.grey_findings(grey) + findings.colour_findings(colour)
-    tfind_table = {lab: {n: v[0] for n, v in d.items()} for lab, d in ttable.items() if "[" not in lab}
-    fl += findings.time_findings(tfind_table, THESIS_TIMES)
+    tfind_table = {lab: {n: v[1] for n, v in d.items()} for lab, d in ttable.items() if "[" not in lab}  # CPU s
+    timed_images = {}
+    for lab, d in ttable.items():
+        for n, v in d.items():
+            timed_images[n] = max(timed_images.get(n, 0), v[2])
+    fl += findings.time_findings(tfind_table, THESIS_TIMES, timed_images)
     doc.h(2, "Findings against the thesis", "findings")
     doc.p("Each line quotes a conclusion of the thesis and sets the numbers measured here beside it; the verdict "
           "is computed from the share of cases that agree (at least 75%: agrees; over 50%: mostly agrees; 25-50%: "
-          "mixed; under 25%: disagrees).")
-    doc.table(["topic", "thesis", "here", "verdict"],
-              [[html.escape(f["topic"]), html.escape(f["thesis"]), html.escape(f["here"]),
+          f"mixed; under 25%: disagrees). A verdict needs at least {findings.MIN_CASES} cases (the column "
+          "<i>cases</i> counts them; what a case is, the line says): below that it reads <i>not enough data</i>. "
+          "A claim the thesis makes about one image (Fruits, Lena) is not compared when that image is not in "
+          "the set.", raw=True)
+    doc.table(["topic", "thesis", "here", "cases", "verdict"],
+              [[html.escape(f["topic"]), html.escape(f["thesis"]), html.escape(f["here"]), str(f.get("cases", "–")),
                 f'<span class="{f["verdict"].split()[0]}">{html.escape(f["verdict"])}</span>'] for f in fl],
               cls="findings")
 
-    # ---- greyscale
+
+def greyscale_section(doc, grey, plan, chart_dir):
     doc.h(2, "Greyscale images (thesis 6.1.1)", "grey")
     images = sorted({(r["image"], r["group"], r["width"], r["height"]) for r in grey})
-    doc.p(f"{len(images)} images: " + ", ".join(f"{i} ({g}, {w}x{h})" for i, g, w, h in images) + ". Counts: "
+    doc.p(f"{len(images)} image{'s' if len(images) != 1 else ''}: "
+          + ", ".join(f"{i} ({g}, {w}x{h})" for i, g, w, h in images) + ". Counts: "
           + ", ".join(f"{n:,}" for n in plan.grey_counts) + " (thesis scale).")
     ok_grey = [r for r in grey if r["status"] == "ok"]
     ref_grey = [r for r in ok_grey if r["engine"] == "reference"]
+    grey_bar_charts(doc, ref_grey, plan, chart_dir)
+    grey_count_charts(doc, ref_grey, chart_dir)
+    grey_tables(doc, ok_grey, images, plan)
+    engines_section(doc, ok_grey, plan, chart_dir)
+
+
+def grey_bar_charts(doc, ref_grey, plan, chart_dir):
+    """Like figures 6.1-6.8: the metrics per method at each count, and per featured image."""
     for n in plan.grey_counts:
         sel = [r for r in ref_grey if r["nominal_vertices"] == n]
         if not sel:
@@ -293,11 +309,16 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
                 if r.get(m) is not None:
                     per[label(r["method"], r["variant"], r["engine"])][m].append(float(r[m]))
         per = {k: per[k] for k in order_labels(per)}
+        count = len({r["image"] for r in sel})
+        scope = (f"mean over {count} images, whiskers min..max" if count > 1 else
+                 f"{sel[0]['image']} ({sel[0]['vertices']} vertices here)")
         path = charts.method_bars(chart_dir / f"grey_bars_{n}.png",
-                                  f"Greyscale, {n:,} vertices (thesis scale): mean over {len({r['image'] for r in sel})} "
-                                  f"image(s), whiskers min..max", per)
+                                  f"Greyscale, {n:,} vertices (thesis scale): {scope}", per)
         doc.img(path, f"Like figures 6.1, 6.2, 6.4, 6.7, 6.8: MSE, PSNR and SSIM per method at {n:,} vertices.")
+    # Featured images on their own, unless they are the only image (the charts above are theirs).
     featured = [img for img, lab, n in plan.picture_cases if lab == "grey"]
+    if len({r["image"] for r in ref_grey}) <= 1:
+        featured = []
     for img in featured:
         for n in plan.grey_counts[:1] + [c for c in plan.grey_counts if c == 5000]:
             sel = [r for r in ref_grey if r["image"] == img and r["nominal_vertices"] == n]
@@ -310,6 +331,10 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
                                       f"{img}, {n:,} vertices (thesis scale; {sel[0]['vertices']} here)", per,
                                       spread=False)
             doc.img(path, f"{img} at {n:,} vertices.")
+
+
+def grey_count_charts(doc, ref_grey, chart_dir):
+    """Like figure 6.11: PSNR and SSIM against the vertex count."""
     series = defaultdict(lambda: defaultdict(list))
     by = defaultdict(lambda: defaultdict(list))
     for r in ref_grey:
@@ -319,9 +344,11 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
     for (lab, m), d in by.items():
         series[lab][m] = [(n, float(np.mean(v))) for n, v in d.items()]
     series = {k: series[k] for k in order_labels(series)}
+    names = sorted({r["image"] for r in ref_grey})
+    scope = f"mean over {len(names)} images" if len(names) > 1 else (names[0] if names else "")
     if series:
         path = charts.lines_vs_count(chart_dir / "grey_vs_vertices.png",
-                                     "Greyscale: mean over images against the vertex count", series,
+                                     f"Greyscale ({scope}) against the vertex count", series,
                                      metrics=("psnr", "ssim", "ssim_8x8"), hline=30)
         doc.img(path, "Like figure 6.11: PSNR and SSIM against the vertex count (dotted: 30 dB).")
     for img in [i for i in ("fruits",) if any(r["image"] == i for r in ref_grey)]:
@@ -332,10 +359,13 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
                     s2[label(r["method"], r["variant"], r["engine"])].setdefault(m, []).append(
                         (r["nominal_vertices"], float(r[m])))
         s2 = {k: s2[k] for k in order_labels(s2)}
-        path = charts.lines_vs_count(chart_dir / f"grey_vs_vertices_{img}.png", f"{img} (the thesis's figure 6.11 image)",
-                                     s2, hline=30)
+        path = charts.lines_vs_count(chart_dir / f"grey_vs_vertices_{img}.png",
+                                     f"{img} (the thesis's figure 6.11 image)", s2, hline=30)
         doc.img(path, f"Figure 6.11's image: {img}.")
-    # Table of means.
+
+
+def grey_tables(doc, ok_grey, images, plan):
+    """Mean PSNR / SSIM per method and count, and per image at the middle count."""
     labs = order_labels({label(r["method"], r["variant"], r["engine"]) for r in ok_grey})
     trs = []
     for lab in labs:
@@ -346,8 +376,11 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
             cells.append(f"{fmt(mean_of(sel, 'psnr'), 2)} / {fmt(mean_of(sel, 'ssim'))} / "
                          f"{fmt(mean_of(sel, 'ssim_8x8'))}" if sel else "–")
         trs.append(cells)
-    doc.p("Mean PSNR [dB] / SSIM (Gaussian) / SSIM (8x8) over the images, per vertex count:")
+    scope = "mean over the images" if len(images) > 1 else (images[0][0] if images else "")
+    doc.p(f"PSNR [dB] / SSIM (Gaussian) / SSIM (8x8) ({scope}), per vertex count:")
     doc.table(["method"] + [f"{n:,}" for n in plan.grey_counts], trs)
+    if len(images) <= 1:
+        return  # the table above is the one image's
     mid = 5000 if 5000 in plan.grey_counts else plan.grey_counts[len(plan.grey_counts) // 2]
     per_image = []
     for img, group, w, h in images:
@@ -366,45 +399,73 @@ def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
     doc.p(f"Per image at {mid:,} vertices (thesis scale): PSNR [dB] / SSIM (Gaussian); the best PSNR in bold.",
           raw=True)
     doc.table(["image"] + labs, per_image)
-    engines_section(doc, ok_grey, plan, chart_dir)
 
-    # ---- colour
-    colour_section(doc, [r for r in colour if r["status"] == "ok"], plan, chart_dir)
 
-    # ---- time
-    time_section(doc, ttable, trows, plan, chart_dir)
-
-    # ---- pictures
-    pictures_section(doc, rows, plan, pic_dir)
-
-    # ---- notes
-    doc.h(2, "Notes, skipped combinations and failures", "notes")
+def notes_section(doc, rows, trows, tools, partial_note):
+    doc.h(2, "Notes, combinations not supported and failures", "notes")
     if partial_note:
         doc.add(partial_note)
-    bad = defaultdict(list)
-    for r in rows:
-        if r["status"] not in ("ok", "missing"):
-            bad[(r["status"], label(r["method"], r["variant"], r["engine"]), r["error"])].append(
-                f"{r['image']} {r['colour']} {r['nominal_vertices']}")
-    for r in trows:
-        if r["status"] not in ("ok", "missing"):
-            bad[(r["status"], label(r["method"], r["variant"], r["engine"]) + " (timing)", r["error"])].append(
-                f"{r['image']} {r['nominal_vertices']}")
-    if not bad:
-        doc.p("Every run that was computed succeeded." if (missing or missing_t) else "Every run succeeded.")
+    # A method an engine does not offer is refused by trisim with a usage error: listed once per
+    # method and engine as "not supported". Anything else that did not succeed is a failure.
+    unsupported = {}
+    failed = defaultdict(list)
+    for r, what in [(r, f"{r['image']} {r['colour']} {r['nominal_vertices']}") for r in rows] + \
+                   [(r, f"{r['image']} {r['nominal_vertices']} (timing)") for r in trows]:
+        if r["status"] == "unsupported":
+            unsupported.setdefault(label(r["method"], r["variant"], r["engine"]), r["error"] or "")
+        elif r["status"] not in ("ok", "missing"):
+            failed[(r["status"], label(r["method"], r["variant"], r["engine"]), r["error"])].append(what)
+    if unsupported:
+        doc.p("Not supported (the engine does not offer the method; every case of these is skipped): "
+              + "; ".join(f"<b>{html.escape(m)}</b> ({html.escape(e)})" for m, e in sorted(unsupported.items()))
+              + ".", raw=True)
+    doc.h(3, "Failures")
+    if not failed:
+        doc.p("None: every run that was computed succeeded." if partial_note else "None: every run succeeded.")
     else:
         doc.table(["status", "method", "message", "cases"],
                   [[html.escape(s), html.escape(m), html.escape(e or ""),
                     f"{len(c)}: " + html.escape(", ".join(c[:6]) + (" …" if len(c) > 6 else ""))]
-                   for (s, m, e), c in sorted(bad.items())])
-    if missing_methods:
-        doc.p("Methods not built by this trisim (so absent from every table): " + ", ".join(missing_methods) + ".")
+                   for (s, m, e), c in sorted(failed.items())])
+    if absent_methods(tools):
+        doc.p("Methods not built by this trisim (so absent from every table): " + ", ".join(absent_methods(tools))
+              + ".")
 
+
+def files_section(doc):
     doc.h(2, "Files", "files")
     files = ["results.csv", "greyscale.csv", "colour.csv", "time.csv", "time_runs.csv"]
     doc.add("<ul>" + "".join(f'<li><a href="{f}">{f}</a></li>' for f in files)
             + "<li>charts/*.png, pictures/*.jpg and *.png: the figures above</li>"
             "<li>cache/: triangulations and results, reused by the next run unless --force</li></ul>")
+
+
+def write_report(out_dir: Path, plan, tools, executor, work, timing, ctx):
+    out_dir = Path(out_dir)
+    chart_dir = out_dir / "charts"
+    pic_dir = out_dir / "pictures"
+    rows = quality_rows(work, executor)
+    trows = time_rows(timing, executor)
+    grey = [r for r in rows if r["study"] == "grey"]
+    colour = [r for r in rows if r["study"] in ("colour", "split")]
+    write_csv(out_dir / "results.csv", rows, FIELDS)
+    write_csv(out_dir / "greyscale.csv", grey, FIELDS)
+    write_csv(out_dir / "colour.csv", colour, FIELDS)
+    write_csv(out_dir / "time_runs.csv", trows, TIME_FIELDS)
+    ttable = time_table(trows)
+    write_time_csv(out_dir, ttable)
+    partial_note = partial_note_html(rows, trows)
+
+    doc = Html()
+    header_section(doc, plan, ctx, partial_note)
+    conventions_section(doc, plan, tools)
+    findings_section(doc, grey, colour, ttable)
+    greyscale_section(doc, grey, plan, chart_dir)
+    colour_section(doc, [r for r in colour if r["status"] == "ok"], plan, chart_dir)
+    time_section(doc, ttable, trows, plan, chart_dir)
+    pictures_section(doc, rows, plan, pic_dir)
+    notes_section(doc, rows, trows, tools, partial_note)
+    files_section(doc)
     doc.add("</body></html>")
     atomic_write_text(out_dir / "index.html", "\n".join(doc.parts))
     for folder in (chart_dir, pic_dir):
@@ -473,9 +534,11 @@ def colour_section(doc, ok, plan, chart_dir):
         return
     col = [r for r in ok if r["study"] == "colour" and r["engine"] == "reference" and not r["variant"]]
     images = sorted({(r["image"], r["width"], r["height"]) for r in col})
-    doc.p(f"{len(images)} images: " + ", ".join(f"{i} ({w}x{h})" for i, w, h in images) + ". Totals (thesis scale): "
+    doc.p(f"{len(images)} image{'s' if len(images) != 1 else ''}: "
+          + ", ".join(f"{i} ({w}x{h})" for i, w, h in images) + ". Totals (thesis scale): "
           + ", ".join(f"{n:,}" for n in plan.colour_totals) + ".")
     methods = order_labels({r["method"] for r in col})
+    over = f"mean over {len(images)} images" if len(images) > 1 else (images[0][0] if images else "")
     # 6.12: separate RGB, per method, per total.
     for mode_label in ("separate-rgb", "separate-ycbcr", "co-rgb", "co-ycbcr"):
         vals = {}
@@ -486,7 +549,7 @@ def colour_section(doc, ok, plan, chart_dir):
                     vals[(f"{n:,}", m)] = {"psnr": mean_of(sel, "psnr"), "ssim": mean_of(sel, "ssim")}
         if vals:
             path = charts.grouped_bars(chart_dir / f"colour_methods_{mode_label}.png",
-                                       f"{mode_label}: mean over images per total vertex count",
+                                       f"{mode_label} ({over}) per total vertex count",
                                        [f"{n:,}" for n in plan.colour_totals], methods, vals,
                                        xlabel="total vertices (thesis scale)")
             cap = "Like figure 6.12" if mode_label == "separate-rgb" else "As figure 6.12"
@@ -505,7 +568,7 @@ def colour_section(doc, ok, plan, chart_dir):
                 if sel:
                     vals[(g, m)] = {"psnr": mean_of(sel, "psnr"), "ssim": mean_of(sel, "ssim")}
         path = charts.grouped_bars(chart_dir / "colour_ycbcr_split.png",
-                                   "Separate YCbCr: vertices in Y against Cb and Cr (thesis scale; mean over images)",
+                                   f"Separate YCbCr: vertices in Y against Cb and Cr (thesis scale; {over})",
                                    groups, methods, vals)
         doc.img(path, "Like figure 6.13: Y with 3,000 or 7,000 vertices, Cb and Cr with 1,000 or 20,000 each "
                       "(scaled by area).")
@@ -523,7 +586,7 @@ def colour_section(doc, ok, plan, chart_dir):
                                    f"{m}: separate against co-triangulation, RGB against YCbCr (equal totals)",
                                    [f"{n:,}" for n in plan.colour_totals], modes, vals, colours=MODE_COLOURS,
                                    xlabel="total vertices (thesis scale)")
-        doc.img(path, f"Like figures 6.14 and 6.17-6.20, {m}: mean PSNR and SSIM over the images.")
+        doc.img(path, f"Like figures 6.14 and 6.17-6.20, {m}: PSNR and SSIM ({over}).")
     # Per image like 6.17-6.20 (RGB), at the largest total with both.
     for img, _, _ in images:
         for space in ("rgb",):
@@ -556,7 +619,7 @@ def colour_section(doc, ok, plan, chart_dir):
                 sel = [r for r in col if r["colour"] == mode and r["nominal_vertices"] == n and r["method"] == m]
                 cells.append(f"{fmt(mean_of(sel, 'psnr'), 2)} / {fmt(mean_of(sel, 'ssim'))}" if sel else "–")
             trs.append(cells)
-    doc.p("Mean PSNR [dB] / SSIM (Gaussian) over the colour images, per total vertex count (thesis scale):")
+    doc.p(f"PSNR [dB] / SSIM (Gaussian) ({over}), per total vertex count (thesis scale):")
     doc.table(["triangulation", "method"] + [f"{n:,}" for n in plan.colour_totals], trs)
 
 
@@ -567,42 +630,39 @@ def time_section(doc, ttable, trows, plan, chart_dir):
         return
     images = sorted({(r["image"], r["width"], r["height"]) for r in trows if r["status"] == "ok"})
     loads = [r["load1"] for r in trows if r.get("load1") is not None]
-    doc.p(f"Images: {', '.join(f'{i} ({w}x{h})' for i, w, h in images)}; {plan.time_repeats} repeat(s) per "
-          f"default method (1 for the thesis variants), minimum taken per image, mean over images. Load average "
-          f"during the timing runs: median {np.median(loads) if loads else float('nan'):.2f} on "
-          f"{__import__('os').cpu_count()} CPUs. Each cell: seconds here (wall) / thesis / thesis ÷ here.")
+    doc.p(f"Images: {', '.join(f'{i} ({w}x{h})' for i, w, h in images)}. Each time is trisim's own timing of "
+          f"the render alone (<code>trisim bench</code>: a warm-up render, then {plan.time_repeats} timed renders "
+          f"per default method and 1 for the thesis variants; no file reading, no metrics): the fastest wall time "
+          f"and the median CPU time, then the mean over images. Wall time on this shared machine includes "
+          f"waiting for the CPU (load average during the timing runs: median "
+          f"{np.median(loads) if loads else float('nan'):.2f} on {os.cpu_count()} CPUs); CPU time does not. The "
+          f"thesis's seconds (figure 6.22, 1.86 GHz Core2Duo E6300, .NET) are given where it timed that count.",
+          raw=True)
     labs = order_labels(ttable)
-    counts = sorted({n for d in ttable.values() for n in d} | set(THESIS_TIMES["bilinear"]))
     trs = []
-    for n in counts:
-        cells = [f"{n:,}"]
-        for lab in labs:
-            here = ttable[lab].get(n)
-            th = THESIS_TIMES.get(lab.split(" ")[0], {}).get(n) if "[" not in lab else None
-            parts = [fmt(here[0], 4) + " s" if here else "–", fmt(th, 4) + " s" if th else "–"]
-            parts.append(f"{th / here[0]:.1f}x" if (here and th) else "–")
-            cells.append("<br>".join(parts))
-        trs.append(cells)
-    doc.table(["vertices"] + labs, trs)
-    cpu_rows = []
     for n in sorted({n for d in ttable.values() for n in d}):
-        cells = [f"{n:,}"]
         for lab in labs:
             here = ttable[lab].get(n)
+            if not here:
+                continue
             th = THESIS_TIMES.get(lab.split(" ")[0], {}).get(n) if "[" not in lab else None
-            cells.append("–" if not here else fmt(here[1], 3) + " s" + (f"<br>{th / here[1]:.1f}x" if th else ""))
-        cpu_rows.append(cells)
-    doc.p("Wall-clock times on a shared, loaded machine overstate the cost (the load average above counts "
-          "processes competing for the CPUs). CPU seconds do not depend on that load; these are of the whole "
-          "trisim process (reading the files, rendering and the metrics), so they overstate the render alone and "
-          "thesis ÷ CPU is a lower bound of the speed-up. Minimum over repeats, mean over images; second line: "
-          "thesis ÷ CPU here:")
-    doc.table(["vertices"] + labs, cpu_rows)
-    ours = {lab: [(n, v[0]) for n, v in d.items()] for lab, d in ttable.items()}
+            trs.append([f"{n:,}", html.escape(lab), fmt(here[0], 4), fmt(here[1], 4), fmt(th, 4) if th else "–",
+                        f"{th / here[1]:.0f}x" if th and here[1] else "–", str(here[2])])
+    doc.table(["vertices", "method", "wall s (fastest)", "CPU s (median)", "thesis s", "thesis ÷ CPU",
+               "images"], trs)
+    ours = {lab: [(n, v[1]) for n, v in d.items()] for lab, d in ttable.items()}
     thesis = {m: list(d.items()) for m, d in THESIS_TIMES.items()}
-    path = charts.time_chart(chart_dir / "time.png", "Seconds per 512x512 image: here (solid) and the thesis "
-                                                     "(dashed)", ours, thesis)
-    doc.img(path, "Like figure 6.22, as a chart (log scale).")
+    path = charts.time_chart(chart_dir / "time.png", "Seconds per 512x512 image: render CPU time here (solid) "
+                                                     "and the thesis (dashed)", ours, thesis)
+    doc.img(path, "Like figure 6.22, as a chart (log scale): the CPU time of the render here against the thesis.")
+
+
+def dark_edge_rows(image, limit=8):
+    """The number of rows at the bottom of `image` that are black (every value below 2), up to limit."""
+    rows = 0
+    while rows < min(limit, image.shape[0] - 1) and int(np.asarray(image[image.shape[0] - 1 - rows]).max()) < 2:
+        rows += 1
+    return rows
 
 
 def pictures_section(doc, rows, plan, pic_dir):
@@ -638,6 +698,13 @@ def pictures_section(doc, rows, plan, pic_dir):
         path = pictures.renders_figure(pic_dir / f"{stem}_renders.jpg", original, renders,
                                        f"{img} ({lab}, {tri.vertex_count():,} vertices): renders and absolute errors")
         doc.img(path, "Each method's render and its absolute error.")
+        dark = dark_edge_rows(original)
+        if dark:
+            doc.add("<p class=note>" + html.escape(
+                f"The shipped {img}.png has {'a black last row' if dark == 1 else f'{dark} black last rows'}: the "
+                f"bright line along the bottom of the error maps comes from the image, not from the methods (no "
+                f"triangulation follows a line that thin). The metrics include {'it' if dark == 1 else 'them'}.")
+                    + "</p>")
         windows = [("artifacts", pictures.excess_error_window(original, renders, 112),
                     "the window where Bezier and Coons exceed bilinear's absolute error the most"),
                    ("sizes", pictures.detail_window(tri, w, h, 112),

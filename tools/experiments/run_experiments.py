@@ -5,9 +5,9 @@ Usage: run_experiments.py BIN_DIR OUT_DIR [--set quick|full] [--force] [--jobs N
 
 Writes OUT_DIR/index.html (self-contained), CSV files and charts. Results are cached under
 OUT_DIR/cache keyed by their inputs (image bytes, options, tool binaries) and reused unless
---force. The full set reads the shared test photographs (--images, default
-/work/shared/images) and skips them with a note when they are absent; the quick set reads only
-data/demo/kodim23.png from the repository.
+--force. The full set reads the project's test photographs (--images DIR, default
+$TRISTREAM_IMAGES; folders grey/, colour/, kodak/) beside the shipped demo image and skips them
+with a note when they are absent; the quick set reads only data/demo/kodim23.png.
 """
 import argparse
 import os
@@ -43,8 +43,9 @@ def parse_args(argv):
     p.add_argument("out_dir", help="report directory (e.g. out/report)")
     p.add_argument("--set", dest="set_name", choices=["quick", "full"], default="quick",
                    help="experiment set (default: quick)")
-    p.add_argument("--images", default="/work/shared/images",
-                   help="shared test photographs for the full set (default: /work/shared/images)")
+    p.add_argument("--images", default=os.environ.get("TRISTREAM_IMAGES") or None,
+                   help="test photographs for the full set, in grey/, colour/ and kodak/ "
+                        "(default: $TRISTREAM_IMAGES; without it only the shipped demo image)")
     p.add_argument("--force", action="store_true", help="recompute everything instead of reusing the cache")
     p.add_argument("--report-only", action="store_true",
                    help="compute nothing: write the report from the results already in the cache")
@@ -147,10 +148,9 @@ def build_work(plan, tools):
             enc = Enc("time", s.name, s.group, s, True, "grey", "grey", scaled(n, s.width, s.height), n)
             for method in tools.methods:
                 for engine in tools.engines:
-                    for rep in range(plan.time_repeats):
-                        timing.append(TimeRun(enc, method, "", engine, rep))
+                    timing.append(TimeRun(enc, method, "", engine, plan.time_repeats))
                 if method in THESIS_VARIANTS:
-                    timing.append(TimeRun(enc, method, "thesis", "reference", 0))
+                    timing.append(TimeRun(enc, method, "thesis", "reference", 1))
     return work, timing
 
 
@@ -171,7 +171,7 @@ def main(argv):
     except ToolError as exc:
         fail(EXIT_NOINPUT, str(exc))
     try:
-        plan = make_plan(args.set_name, repo, Path(args.images))
+        plan = make_plan(args.set_name, repo, Path(args.images) if args.images else None)
     except (OSError, ValueError) as exc:
         fail(EXIT_DATA, str(exc))
     try:

@@ -26,8 +26,7 @@ struct Fixed {
   constexpr bool is_integer() const { return (raw & (one - 1)) == 0; }
 };
 
-// Vertex positions in pixels: 28 integer bits, TS_SUBPIXEL_BITS (default 4) fraction bits.
-using fx28_4 = Fixed<int32_t, 4>;
+// Vertex positions in pixels with TS_SUBPIXEL_BITS fraction bits: fx28_4 with the default 4.
 using position_fx = Fixed<int32_t, config::subpixel_bits>;
 // Vertex values as stored in blobs: 0..255 with 8 fraction bits (unsigned 16-bit on the wire).
 using q8_8 = Fixed<int32_t, 8>;

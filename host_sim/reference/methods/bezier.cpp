@@ -6,21 +6,21 @@
 
 #include "model/topology.h"
 #include "reference/coverage.h"
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/raster.h"
 
 namespace tristream {
 namespace {
 
 void splat_thesis(const BezierPatch& patch, int channels, detail::PatchCanvas& canvas) {
   std::vector<double> value(channels);
-  const int steps = int(std::floor(1.0 / kBezierThesisStep + 1e-9));
+  const int steps = int(std::floor(1.0 / bezier_thesis_step + 1e-9));
   for (int ia = 0; ia <= steps; ++ia) {
-    const double a = ia * kBezierThesisStep;
+    const double a = ia * bezier_thesis_step;
     for (int ib = 0;; ++ib) {
-      const double b = ib * kBezierThesisStep;
+      const double b = ib * bezier_thesis_step;
       if (b > 1.0 - a + 1e-12) break;
       const Point p = patch.position(a, b);
-      if (!(std::fabs(p.x) <= detail::kMaxPatchCoordinate && std::fabs(p.y) <= detail::kMaxPatchCoordinate)) continue;
+      if (!(std::fabs(p.x) <= detail::max_patch_coordinate && std::fabs(p.y) <= detail::max_patch_coordinate)) continue;
       patch.values(a, b, value.data());
       canvas.add(int(std::floor(p.x + 0.5)), int(std::floor(p.y + 0.5)), value.data());
     }
@@ -62,7 +62,7 @@ bool BezierPatch::unfolded() const {
 
 bool BezierPatch::exact_start(double x, double y, double a, double b) const {
   const Point p = position(a, b);
-  return std::fabs(x - p.x) + std::fabs(y - p.y) < detail::kExactResidual;
+  return std::fabs(x - p.x) + std::fabs(y - p.y) < detail::exact_residual;
 }
 
 int BezierPatch::subdivisions() const {

@@ -5,7 +5,7 @@
 
 #include "model/topology.h"
 #include "reference/coverage.h"
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/raster.h"
 
 namespace tristream {
 namespace {
@@ -26,13 +26,13 @@ double length(const Point& p, const Point& q) {
 
 void splat_thesis(const CoonsPatch& patch, int channels, detail::PatchCanvas& canvas) {
   std::vector<double> value(channels);
-  const int steps = int(std::floor(1.0 / kCoonsThesisStep + 1e-9));
+  const int steps = int(std::floor(1.0 / coons_thesis_step + 1e-9));
   for (int iu = 0; iu <= steps; ++iu) {
-    const double u = iu * kCoonsThesisStep;
+    const double u = iu * coons_thesis_step;
     for (int iv = 0; iv <= steps; ++iv) {
-      const double v = iv * kCoonsThesisStep;
+      const double v = iv * coons_thesis_step;
       const Point p = patch.position(u, v);
-      if (!(std::fabs(p.x) <= detail::kMaxPatchCoordinate && std::fabs(p.y) <= detail::kMaxPatchCoordinate)) continue;
+      if (!(std::fabs(p.x) <= detail::max_patch_coordinate && std::fabs(p.y) <= detail::max_patch_coordinate)) continue;
       patch.values(u, v, value.data());
       canvas.add(int(std::floor(p.x + 0.5)), int(std::floor(p.y + 0.5)), value.data());
     }
@@ -86,14 +86,14 @@ bool CoonsPatch::solve(double x, double y, double& u, double& v) const {
   // A start that is already the solution (a pixel on a tessellation node, such as a patch
   // corner) stays: at the corner M the Jacobian is singular (the split curve runs straight
   // through it), where a step would only add noise.
-  if (std::fabs(r[0]) + std::fabs(r[1]) < detail::kExactResidual) return true;
-  for (int iteration = 0; iteration < detail::kNewtonIterations; ++iteration) {
+  if (std::fabs(r[0]) + std::fabs(r[1]) < detail::exact_residual) return true;
+  for (int iteration = 0; iteration < detail::newton_iterations; ++iteration) {
     // A singular Jacobian gives infinite or NaN steps, which fail the reach test below.
     const double inverse = 1 / (pu[0] * pv[1] - pv[0] * pu[1]);
     const double du = (pv[1] * r[0] - pv[0] * r[1]) * inverse, dv = (pu[0] * r[1] - pu[1] * r[0]) * inverse;
     cu += du, cv += dv;
-    if (!(std::fabs(cu - u) + std::fabs(cv - v) < detail::kNewtonReach)) return false;
-    if (std::fabs(du) + std::fabs(dv) < detail::kNewtonStep) {
+    if (!(std::fabs(cu - u) + std::fabs(cv - v) < detail::newton_reach)) return false;
+    if (std::fabs(du) + std::fabs(dv) < detail::newton_step) {
       u = cu, v = cv;
       return true;
     }
@@ -144,11 +144,11 @@ bool CoonsPatch::fold_cells(std::vector<detail::FoldCell>& cells) const {
   // Monomials to Bernstein coefficients on [0, 1] along each index: b_i = sum over k <= i
   // of C(i, k) / C(n, k) m_k.
   auto to_bernstein = [](const double* m, int n, int stride, double* b) {
-    static constexpr double kChoose[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
+    static constexpr double binomial[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
     double out[4];
     for (int i = 0; i <= n; ++i) {
       out[i] = 0;
-      for (int k = 0; k <= i; ++k) out[i] += kChoose[i][k] / kChoose[n][k] * m[k * stride];
+      for (int k = 0; k <= i; ++k) out[i] += binomial[i][k] / binomial[n][k] * m[k * stride];
     }
     for (int i = 0; i <= n; ++i) b[i * stride] = out[i];
   };

@@ -1,6 +1,6 @@
 #pragma once
 // Interpolation on the Coons patch of each triangle and its three edge neighbours (thesis
-// §3.4, §4.2; NOTES.md §3.4), averaged where patches overlap.
+// §3.4, §4.2; docs/CONVENTIONS.md), averaged where patches overlap.
 //
 // Construction (the thesis leaves the orientation of the split open; this is the choice):
 // the three parabolic boundary curves through (P200, P110, P020), (P020, P011, P002) and
@@ -20,20 +20,20 @@
 // not the curve list of Eq. 3.11; renaming u and v gives the same surface.) It applies to x,
 // y and every value channel alike.
 //
-// Variants as in bezier.h: "thesis" steps u and v by kCoonsThesisStep over [0, 1] and splats;
-// the default rasterizes each patch exactly (methods/patch_raster.h).
+// Variants as in bezier.h: "thesis" steps u and v by coons_thesis_step over [0, 1] and splats;
+// the default rasterizes each patch exactly (methods/patch/raster.h).
 #include <algorithm>
 #include <array>
 #include <utility>
 #include <vector>
 
-#include "reference/methods/patch_control.h"
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/control.h"
+#include "reference/methods/patch/raster.h"
 #include "reference/render.h"
 
 namespace tristream {
 
-inline constexpr double kCoonsThesisStep = 0.007;
+inline constexpr double coons_thesis_step = 0.007;
 
 class CoonsPatch {
  public:
@@ -74,26 +74,26 @@ class CoonsPatch {
     for (std::size_t c = 0, n = value_.size(); c < n; ++c) sum[c] += q[c].at(u, v);
   }
   // Solves position(u, v) = (x, y) by Newton's method from (u, v) near the solution, until a
-  // step is shorter than detail::kNewtonStep (patch_raster.h). Returns false, leaving (u, v)
-  // alone, when the Jacobian is singular, the iteration moves detail::kNewtonReach away or does not settle in
-  // kNewtonIterations steps (beside a fold, see patch_raster.h).
+  // step is shorter than detail::newton_step (patch/raster.h). Returns false, leaving (u, v)
+  // alone, when the Jacobian is singular, the iteration moves detail::newton_reach away or does not settle in
+  // newton_iterations steps (beside a fold, see patch/raster.h).
   bool solve(double x, double y, double& u, double& v) const;
-  // The closed parameter domain [0, 1]^2, widened by detail::kDomainTolerance.
+  // The closed parameter domain [0, 1]^2, widened by detail::domain_tolerance.
   static bool in_domain(double u, double v) {
-    constexpr double e = detail::kDomainTolerance;
+    constexpr double e = detail::domain_tolerance;
     return u >= -e && v >= -e && u <= 1 + e && v <= 1 + e;
   }
   // How far (u, v) lies outside the domain (the largest violated constraint; <= 0 inside).
   static double outside_by(double u, double v) { return std::max({-u, -v, u - 1, v - 1}); }
   // A point inside the domain.
   static std::pair<double, double> centre() { return {0.5, 0.5}; }
-  // The sides of the parameter domain for the exact variant's rows (patch_scan.h): side k
+  // The sides of the parameter domain for the exact variant's rows (patch/scan.h): side k
   // (v = 0, v = 1, u = 0, u = 1) at f in [0, 1] has parameters side(k, f).
-  static constexpr int kSides = 4;
+  static constexpr int side_count = 4;
   static std::pair<double, double> side(int k, double f) {
     return k < 2 ? std::pair{f, double(k)} : std::pair{double(k - 2), f};
   }
-  // For the exact variant (patch_raster.h): the squares of the domain, down to an eighth of
+  // For the exact variant (patch/raster.h): the squares of the domain, down to an eighth of
   // its side, where the Jacobian determinant may vanish, with boxes holding their images
   // (detail::find_fold_cells); none when the patch provably does not fold. Always true.
   bool fold_cells(std::vector<detail::FoldCell>& cells) const;

@@ -1,5 +1,5 @@
 #pragma once
-// Natural-neighbour (Sibson) interpolation (thesis §3.6, §4.4; NOTES.md §3.6).
+// Natural-neighbour (Sibson) interpolation (thesis §3.6, §4.4; docs/CONVENTIONS.md).
 //
 // The weights come from a Delaunay triangulation of the mesh's vertices (the file's own
 // triangles when they already are one, checked exactly; otherwise they only decide which
@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "model/topology.h"
@@ -74,9 +75,20 @@ class SibsonCoordinates {
   friend void render_natural(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options,
                              Field& out);
   void prepare();  // circumcentres, incircle terms and scratch of the triangulation
-  // The row sweep of for_each_sample() with the visitor inlined.
+  // The row sweep of for_each_sample() with the visitor inlined, in steps: the circles by row
+  // (sweep_circles), each row's runs of columns inside them as events (row_events, circle_run),
+  // and the pixels of the row with the circles active there (sweep_row). Types in natural.cpp.
+  struct SweepCircles;
+  struct RowEvents;
+  struct ActiveCircles;
   template <class Visit>
   void sweep(const PixelMapping& map, double xmax, double ymax, Visit&& visit);
+  SweepCircles sweep_circles(const PixelMapping& map) const;
+  std::pair<int, int> circle_run(const SweepCircles& circles, const PixelMapping& map, std::uint32_t slot, int j) const;
+  void row_events(const SweepCircles& circles, const PixelMapping& map, int j, RowEvents& events) const;
+  template <class Visit>
+  void sweep_row(const SweepCircles& circles, const RowEvents& events, const PixelMapping& map, double xmax,
+                 double ymax, int j, ActiveCircles& cavity, std::vector<NeighbourWeight>& weights, Visit&& visit);
   // A triangle whose closed interior contains p, or no_neighbour when p is outside the hull.
   std::uint32_t locate(const Point& p);
   // The weights from the cavity grown from t0, whose circle strictly contains p.
@@ -135,24 +147,6 @@ class SibsonCoordinates {
   std::vector<VertexSlot> vertex_slot_;  // per vertex
   std::vector<StolenPolygon> polygon_;
 };
-
-// For every output pixel, the triangle of `mesh` that owns its sample point under the rule of
-// reference/coverage.h (for_each_owned_pixel), or no_neighbour outside the domain; row-major.
-// Per triangle and row it finds the span with a few exact orient2d tests at its ends instead
-// of one test per pixel of the bounding box.
-std::vector<std::uint32_t> owning_triangles(const Mesh& mesh, const Topology& topo, const PixelMapping& map);
-
-// Whether every vertex is in a triangle and every interior edge is locally Delaunay (the
-// apex across it is not strictly inside the triangle's circumcircle; exact). With a convex
-// domain this makes the mesh a Delaunay triangulation of its vertices.
-bool is_locally_delaunay(const Mesh& mesh, const Topology& topo);
-
-// Whether the mesh's domain is the whole rectangle [0, xmax] x [0, ymax]: its four corners are
-// vertices, no vertex lies outside it (so it is the hull), and the triangles, which do not
-// overlap in a valid mesh, cover its area (the sum is exact for coordinates on a binary grid
-// such as pixel positions; for other coordinates, an area short of the rectangle's by less than
-// rounding would pass).
-bool covers_rectangle(const Mesh& mesh, double xmax, double ymax);
 
 // ChannelRenderer: every mesh-domain pixel (the domain lies inside the vertices' hull).
 void render_natural(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options,

@@ -6,23 +6,17 @@
 #include <limits>
 #include <optional>
 
+#include "geometry/circumcentre.h"
 #include "geometry/delaunay.h"
 #include "geometry/predicates.h"
 #include "model/topology.h"
 #include "reference/coverage.h"
+#include "reference/domain.h"
 #include "reference/gradients.h"
-#include "reference/methods/natural.h"
 #include "reference/methods/zienkiewicz.h"
 
 namespace tristream {
 namespace {
-
-Point circumcentre(const Point& a, const Point& b, const Point& c) {
-  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
-  const double r = 0.5 / (bx * cy - by * cx);
-  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-  return {a.x + (cy * b2 - by * c2) * r, a.y + (bx * c2 - cx * b2) * r};
-}
 
 double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
@@ -363,38 +357,56 @@ void meyer_coordinates(std::span<const Point> polygon, const Point& p, std::vect
   meyer_weights(polygon.data(), corner, n, p, w.data(), corner + (n + 1), corner + 2 * (n + 1), corner + 3 * (n + 1));
 }
 
-void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
-  const PixelMapping map(domain_width, domain_height, out.width, out.height);
-  const Topology topo = build_topology(mesh);
-  const double xmax = domain_width - 1, ymax = domain_height - 1;
-  // The domain's pixels: all of them when the mesh covers the rectangle, otherwise those the
-  // mesh's coverage rule assigns (with their triangle, for the bilinear pre-fill).
-  std::vector<std::uint32_t> domain;
-  if (!covers_rectangle(mesh, xmax, ymax)) domain = owning_triangles(mesh, topo, map);
-  const int nc = mesh.value_count;
-  const VoronoiDiagram voronoi(mesh.points);
-  const Mesh& dt = voronoi.delaunay();
+namespace {
 
-  // Zienkiewicz values at the circumcentres inside the image rectangle and the mesh domain.
+// Finds the mesh triangle holding a point: a short walk from a triangle at a nearby vertex,
+// and, for the points the walks cannot settle (a few dozen: points at a vertex or on the
+// domain's boundary), a grid of buckets built on first use.
+class MeshLocator {
+ public:
+  MeshLocator(const Mesh& mesh, const Topology& topo, double xmax, double ymax)
+      : mesh_(mesh), topo_(topo), xmax_(xmax), ymax_(ymax) {
+    for (const Point& x : mesh.points) half_grid_ = half_grid_ && on_half_grid(x.x) && on_half_grid(x.y);
+  }
+
+  // The walk's start next to vertex x, or no_neighbour.
+  std::uint32_t fan_start(std::uint32_t x) const {
+    return has_fan(x) ? topo_.vertex_triangles[topo_.vertex_start[x]] : no_neighbour;
+  }
+  bool has_fan(std::uint32_t x) const {
+    return x < mesh_.points.size() && topo_.vertex_start[x] < topo_.vertex_start[x + 1];
+  }
+  // walk_to_owner from `start`, or no_neighbour.
+  std::uint32_t walk(std::uint32_t start, const Point& q) const {
+    return walk_to_owner(mesh_, topo_, start, q, half_grid_ && on_half_grid(q.x) && on_half_grid(q.y));
+  }
+  std::uint32_t grid_find(const Point& q) {
+    if (!grid_) grid_.emplace(mesh_, xmax_, ymax_);
+    return grid_->find(q);
+  }
+
+ private:
+  const Mesh& mesh_;
+  const Topology& topo_;
+  double xmax_, ymax_;
+  bool half_grid_ = true;
+  std::optional<TriangleGrid> grid_;
+};
+
+// The zienkiewicz value of the mesh at each Delaunay triangle's circumcentre inside the image
+// rectangle and the mesh's domain (NaN and has_value 0 elsewhere), nc values per triangle.
+struct CircumcentreValues {
+  std::vector<double> value;
+  std::vector<std::uint8_t> has_value;
+};
+
+CircumcentreValues circumcentre_values(const Mesh& mesh, const Topology& topo, const Mesh& dt, double xmax, double ymax,
+                                       MeshLocator& locator) {
+  const int nc = mesh.value_count;
   std::vector<std::vector<Gradient>> gradients;
   for (int c = 0; c < nc; ++c) gradients.push_back(vertex_gradients(mesh, topo, c));
-  // The grid, for the points the walks below cannot settle (a few dozen: points at a vertex
-  // or on the domain's boundary), built on first use.
-  std::optional<TriangleGrid> grid;
-  auto grid_find = [&](const Point& q) {
-    if (!grid) grid.emplace(mesh, xmax, ymax);
-    return grid->find(q);
-  };
-  // The walk's start next to vertex x, or no_neighbour.
-  auto fan_start = [&](std::uint32_t x) {
-    return x < mesh.points.size() && topo.vertex_start[x] < topo.vertex_start[x + 1]
-               ? topo.vertex_triangles[topo.vertex_start[x]]
-               : no_neighbour;
-  };
-  bool half_grid = true;
-  for (const Point& x : mesh.points) half_grid = half_grid && on_half_grid(x.x) && on_half_grid(x.y);
-  std::vector<double> value(dt.triangles.size() * nc, std::numeric_limits<double>::quiet_NaN());
-  std::vector<std::uint8_t> has_value(dt.triangles.size(), 0);
+  CircumcentreValues out{std::vector<double>(dt.triangles.size() * nc, std::numeric_limits<double>::quiet_NaN()),
+                         std::vector<std::uint8_t>(dt.triangles.size(), 0)};
   for (std::uint32_t t = 0; t < dt.triangles.size(); ++t) {
     const auto& dv = dt.triangles[t].v;
     const Point q = circumcentre(dt.points[dv[0]], dt.points[dv[1]], dt.points[dv[2]]);
@@ -403,7 +415,7 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
     // triangle at one of t's vertices, or where the walk cannot tell, the grid.
     std::uint32_t m = no_neighbour;
     for (const std::uint32_t x : dv)
-      if (x < mesh.points.size() && topo.vertex_start[x] < topo.vertex_start[x + 1]) {
+      if (locator.has_fan(x)) {
         // Start from the mesh triangle with the most vertices in common with t.
         std::uint32_t start = topo.vertex_triangles[topo.vertex_start[x]];
         for (std::uint32_t k = topo.vertex_start[x]; k < topo.vertex_start[x + 1]; ++k) {
@@ -415,10 +427,10 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
             break;
           }
         }
-        m = walk_to_owner(mesh, topo, start, q, half_grid && on_half_grid(q.x) && on_half_grid(q.y));
+        m = locator.walk(start, q);
         break;
       }
-    if (m == no_neighbour) m = grid_find(q);
+    if (m == no_neighbour) m = locator.grid_find(q);
     if (m == no_neighbour) continue;
     const auto& v = mesh.triangles[m].v;
     const auto l = barycentric(mesh, m, q);
@@ -426,90 +438,141 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
       const ZienkiewiczCoefficients k = zienkiewicz_coefficients(
           mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.value(v[0], c), mesh.value(v[1], c),
           mesh.value(v[2], c), gradients[c][v[0]], gradients[c][v[1]], gradients[c][v[2]]);
-      value[std::size_t(t) * nc + c] = zienkiewicz_value(k, l[0], l[1], l[2]);
+      out.value[std::size_t(t) * nc + c] = zienkiewicz_value(k, l[0], l[1], l[2]);
     }
-    has_value[t] = 1;
+    out.has_value[t] = 1;
   }
+  return out;
+}
 
-  // Cells clipped to the rectangle; each vertex keeps the circumcentre whose value it takes.
-  struct Vertex {
-    Point q;
-    std::uint32_t source;  // Delaunay triangle
-  };
+// A vertex of a clipped cell and the Delaunay triangle (circumcentre) whose value it takes.
+struct CellVertex {
+  Point q;
+  std::uint32_t source;
+};
+
+// Whether the convex polygon `cell` holds point k (on its boundary included).
+bool holds_point(std::span<const Point> cell, const Point& k) {
+  bool left = false, right = false;
+  for (std::size_t i = 0; i < cell.size(); ++i) {
+    const Point& a = cell[i];
+    const Point& b = cell[(i + 1) % cell.size()];
+    const double o = cross(b.x - a.x, b.y - a.y, k.x - a.x, k.y - a.y);
+    left = left || o > 0;
+    right = right || o < 0;
+  }
+  return !(left && right);
+}
+
+// Sutherland-Hodgman of `poly` against x >= 0, x <= xmax, y >= 0, y <= ymax; a point made on
+// edge S -> E takes the source of the endpoint inside the current half-plane. `next` is scratch.
+void clip_to_rectangle(std::vector<CellVertex>& poly, std::vector<CellVertex>& next, double xmax, double ymax) {
+  for (int plane = 0; plane < 4 && !poly.empty(); ++plane) {
+    auto dist = [&](const Point& q) {  // >= 0 inside
+      switch (plane) {
+        case 0: return q.x;
+        case 1: return xmax - q.x;
+        case 2: return q.y;
+        default: return ymax - q.y;
+      }
+    };
+    next.clear();
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const CellVertex& a = poly[i];
+      const CellVertex& b = poly[(i + 1) % poly.size()];
+      const double da = dist(a.q), db = dist(b.q);
+      if (da >= 0) next.push_back(a);
+      if ((da >= 0) != (db >= 0) && da != 0 && db != 0) {
+        const double t = da / (da - db);
+        Point q{a.q.x + t * (b.q.x - a.q.x), a.q.y + t * (b.q.y - a.q.y)};
+        if (plane == 0) q.x = 0;
+        if (plane == 1) q.x = xmax;
+        if (plane == 2) q.y = 0;
+        if (plane == 3) q.y = ymax;
+        next.push_back({q, da >= 0 ? a.source : b.source});
+      }
+    }
+    std::swap(poly, next);
+  }
+}
+
+// Per site, its cell clipped to the rectangle when every vertex of it has a value, else
+// nothing (the bilinear pre-fill): what every pixel of a cell reads, per clipped vertex its
+// point, its corner term of meyer_weights (independent of the pixel) and its values.
+struct ClippedCells {
+  std::vector<std::uint32_t> start;  // site s: [start[s], start[s + 1])
+  std::vector<Point> point;
+  std::vector<double> corner, value;  // value: nc per vertex
+  std::size_t max_cell = 0;
+
+  bool interpolates(std::uint32_t site) const { return start[site] < start[site + 1]; }
+};
+
+ClippedCells clip_cells(const VoronoiDiagram& voronoi, const CircumcentreValues& values, int nc, double xmax,
+                        double ymax) {
   const std::size_t sites = voronoi.site_count();
-  std::vector<std::uint32_t> clipped_start(sites + 1, 0);
-  std::vector<Vertex> clipped;
-  std::vector<Vertex> poly, next;
+  ClippedCells cells;
+  cells.start.assign(sites + 1, 0);
+  std::vector<CellVertex> clipped, poly, next;
   const Point corners[4] = {{0, 0}, {xmax, 0}, {xmax, ymax}, {0, ymax}};
   for (std::uint32_t s = 0; s < sites; ++s) {
-    clipped_start[s] = std::uint32_t(clipped.size());
+    cells.start[s] = std::uint32_t(clipped.size());
     const auto cell = voronoi.cell(s);
     const auto tris = voronoi.cell_triangles(s);
     // A cell holding a corner of the rectangle is left to the bilinear pre-fill.
     bool holds_corner = false;
-    for (const Point& k : corners) {
-      bool left = false, right = false;
-      for (std::size_t i = 0; i < cell.size(); ++i) {
-        const Point& a = cell[i];
-        const Point& b = cell[(i + 1) % cell.size()];
-        const double o = cross(b.x - a.x, b.y - a.y, k.x - a.x, k.y - a.y);
-        left = left || o > 0;
-        right = right || o < 0;
-      }
-      holds_corner = holds_corner || !(left && right);
-    }
+    for (const Point& k : corners) holds_corner = holds_corner || holds_point(cell, k);
     if (holds_corner || cell.size() < 3) continue;
     poly.clear();
     for (std::size_t i = 0; i < cell.size(); ++i) poly.push_back({cell[i], tris[i]});
-    // Sutherland-Hodgman against x >= 0, x <= xmax, y >= 0, y <= ymax; a point made on edge
-    // S -> E takes the source of the endpoint inside the current half-plane.
-    for (int plane = 0; plane < 4 && !poly.empty(); ++plane) {
-      auto dist = [&](const Point& q) {  // >= 0 inside
-        switch (plane) {
-          case 0: return q.x;
-          case 1: return xmax - q.x;
-          case 2: return q.y;
-          default: return ymax - q.y;
-        }
-      };
-      next.clear();
-      for (std::size_t i = 0; i < poly.size(); ++i) {
-        const Vertex& a = poly[i];
-        const Vertex& b = poly[(i + 1) % poly.size()];
-        const double da = dist(a.q), db = dist(b.q);
-        if (da >= 0) next.push_back(a);
-        if ((da >= 0) != (db >= 0) && da != 0 && db != 0) {
-          const double t = da / (da - db);
-          Point q{a.q.x + t * (b.q.x - a.q.x), a.q.y + t * (b.q.y - a.q.y)};
-          if (plane == 0) q.x = 0;
-          if (plane == 1) q.x = xmax;
-          if (plane == 2) q.y = 0;
-          if (plane == 3) q.y = ymax;
-          next.push_back({q, da >= 0 ? a.source : b.source});
-        }
-      }
-      std::swap(poly, next);
-    }
+    clip_to_rectangle(poly, next, xmax, ymax);
     bool valued = poly.size() >= 3;
-    for (const Vertex& x : poly) valued = valued && has_value[x.source];
+    for (const CellVertex& x : poly) valued = valued && values.has_value[x.source];
     if (valued) clipped.insert(clipped.end(), poly.begin(), poly.end());
   }
-  clipped_start[sites] = std::uint32_t(clipped.size());
-  // Per clipped vertex, what every pixel of its cell reads: the point, its corner term of
-  // meyer_weights (independent of the pixel) and its values.
-  std::vector<Point> cell_points(clipped.size());
-  std::vector<double> cell_corner(clipped.size()), cell_value(clipped.size() * nc);
-  std::size_t max_cell = 0;
+  cells.start[sites] = std::uint32_t(clipped.size());
+  cells.point.resize(clipped.size());
+  cells.corner.resize(clipped.size());
+  cells.value.resize(clipped.size() * nc);
   for (std::uint32_t s = 0; s < sites; ++s) {
-    const std::uint32_t b = clipped_start[s], e = clipped_start[s + 1];
-    max_cell = std::max<std::size_t>(max_cell, e - b);
+    const std::uint32_t b = cells.start[s], e = cells.start[s + 1];
+    cells.max_cell = std::max<std::size_t>(cells.max_cell, e - b);
     for (std::uint32_t x = b; x < e; ++x) {
-      cell_points[x] = clipped[x].q;
-      for (int c = 0; c < nc; ++c) cell_value[std::size_t(x) * nc + c] = value[std::size_t(clipped[x].source) * nc + c];
+      cells.point[x] = clipped[x].q;
+      for (int c = 0; c < nc; ++c)
+        cells.value[std::size_t(x) * nc + c] = values.value[std::size_t(clipped[x].source) * nc + c];
     }
-    if (e > b) polygon_corners(cell_points.data() + b, e - b, cell_corner.data() + b);
+    if (e > b) polygon_corners(cells.point.data() + b, e - b, cells.corner.data() + b);
   }
-  std::vector<double> scratch(4 * (max_cell + 1));
+  return cells;
+}
+
+// The linear interpolant of the mesh at p in triangle t.
+void write_bilinear(const Mesh& mesh, std::uint32_t t, const Point& p, int i, int j, Field& out) {
+  const auto& v = mesh.triangles[t].v;
+  const auto l = barycentric(mesh, t, p);
+  for (int c = 0; c < mesh.value_count; ++c)
+    out.at(i, j, c) = l[0] * mesh.value(v[0], c) + l[1] * mesh.value(v[1], c) + l[2] * mesh.value(v[2], c);
+}
+
+}  // namespace
+
+void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
+  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+  const Topology topo = build_topology(mesh);
+  const double xmax = domain_width - 1, ymax = domain_height - 1;
+  // The domain's pixels: all of them when the mesh covers the rectangle, otherwise those the
+  // mesh's coverage rule assigns (with their triangle, for the bilinear pre-fill).
+  std::vector<std::uint32_t> domain;
+  if (!covers_rectangle(mesh, xmax, ymax)) domain = owning_triangles(mesh, topo, map);
+  const int nc = mesh.value_count;
+  const VoronoiDiagram voronoi(mesh.points);
+  MeshLocator locator(mesh, topo, xmax, ymax);
+  const ClippedCells cells =
+      clip_cells(voronoi, circumcentre_values(mesh, topo, voronoi.delaunay(), xmax, ymax, locator), nc, xmax, ymax);
+
+  const std::size_t stride = cells.max_cell + 1;
+  std::vector<double> scratch(4 * stride);
   double* const w = scratch.data();
   std::uint32_t site = 0, row_site = 0;  // nearest sites of the last pixel and of the row start
   for (int j = 0; j < out.height; ++j) {
@@ -522,12 +585,12 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
       // The nearest site: a short greedy walk from the previous pixel's.
       site = voronoi.nearest_site(p, site);
       if (i == 0) row_site = site;
-      if (clipped_start[site] < clipped_start[site + 1]) {
-        const std::uint32_t b = clipped_start[site], e = clipped_start[site + 1];
-        const std::size_t n = e - b;
-        meyer_weights(cell_points.data() + b, cell_corner.data() + b, n, p, w, w + (max_cell + 1),
-                      w + 2 * (max_cell + 1), w + 3 * (max_cell + 1));
-        const double* const val = cell_value.data() + std::size_t(b) * nc;
+      if (cells.interpolates(site)) {
+        const std::uint32_t b = cells.start[site];
+        const std::size_t n = cells.start[site + 1] - b;
+        meyer_weights(cells.point.data() + b, cells.corner.data() + b, n, p, w, w + stride, w + 2 * stride,
+                      w + 3 * stride);
+        const double* const val = cells.value.data() + std::size_t(b) * nc;
         for (int c = 0; c < nc; ++c) {
           double sum = 0;
           for (std::size_t x = 0; x < n; ++x) sum += w[x] * val[x * nc + c];
@@ -535,21 +598,17 @@ void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const
         }
         continue;
       }
-      // Bilinear pre-fill, in the mesh triangle holding p.
+      // Bilinear pre-fill, in the mesh triangle holding p: the domain's owner, else from a
+      // triangle at the nearest site (a mesh vertex), else the grid.
       std::uint32_t t = no_neighbour;
       if (!domain.empty()) {
         t = domain[k];
       } else {
-        // From a triangle at the nearest site (a mesh vertex), else as the grid.
-        const std::uint32_t start = fan_start(site);
-        if (start != no_neighbour) t = walk_to_owner(mesh, topo, start, p, half_grid && on_half_grid(p.x) && on_half_grid(p.y));
-        if (t == no_neighbour) t = grid_find(p);
+        const std::uint32_t start = locator.fan_start(site);
+        if (start != no_neighbour) t = locator.walk(start, p);
+        if (t == no_neighbour) t = locator.grid_find(p);
       }
-      if (t == no_neighbour) continue;
-      const auto& v = mesh.triangles[t].v;
-      const auto l = barycentric(mesh, t, p);
-      for (int c = 0; c < nc; ++c)
-        out.at(i, j, c) = l[0] * mesh.value(v[0], c) + l[1] * mesh.value(v[1], c) + l[2] * mesh.value(v[2], c);
+      if (t != no_neighbour) write_bilinear(mesh, t, p, i, j, out);
     }
   }
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Piecewise linear interpolation on the Voronoi diagram (thesis §3.5, §4.3; NOTES.md §3.5),
+// Piecewise linear interpolation on the Voronoi diagram (thesis §3.5, §4.3; docs/CONVENTIONS.md),
 // reproduced as the thesis describes it, weaknesses included:
 // - The Voronoi diagram comes from the Delaunay triangulation of the mesh's vertices plus
 //   three far vertices around them (for a 512 x 512 image the thesis used (256, -10000),

@@ -1,5 +1,5 @@
 #pragma once
-// Zienkiewicz's cubic over each triangle (thesis §3.2, Eq. 3.3 as restored in NOTES.md),
+// Zienkiewicz's cubic over each triangle (thesis §3.2, Eq. 3.3 as restored in docs/CONVENTIONS.md),
 // from vertex values and the vertex gradients of reference/gradients.h.
 #include <array>
 

@@ -62,7 +62,7 @@ struct CubicSteps {
   }
 };
 
-// Zienkiewicz (NOTES.md 3.2) as a cubic polynomial in the barycentric weights (a, b) of vertices
+// Zienkiewicz (docs/CONVENTIONS.md) as a cubic polynomial in the barycentric weights (a, b) of vertices
 // 0 and 1: f = sum p[i][j] a^i b^j, coefficients in q24_8 from the vertex values and the edge
 // derivatives u = edge . gradient.
 //

@@ -1,4 +1,4 @@
-#include "reference/methods/patch_control.h"
+#include "reference/methods/patch/control.h"
 
 namespace tristream {
 namespace {

@@ -1,5 +1,5 @@
 #pragma once
-// The six control points shared by the Bezier and Coons patches of a triangle (NOTES.md §3.3):
+// The six control points shared by the Bezier and Coons patches of a triangle (docs/CONVENTIONS.md):
 // for triangle (A, B, C) = (v0, v1, v2), P110 = A, P011 = B, P101 = C and the corners are
 // the apexes of the edge neighbours: P200 across CA, P020 across AB, P002 across BC.
 #include <array>

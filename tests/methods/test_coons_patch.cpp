@@ -1,4 +1,4 @@
-// The Coons patch of one triangle and its neighbours (thesis §3.4, NOTES.md §3.4).
+// The Coons patch of one triangle and its neighbours (thesis §3.4, docs/CONVENTIONS.md).
 #include <catch2/catch.hpp>
 
 #include <cmath>

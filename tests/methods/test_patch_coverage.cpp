@@ -1,4 +1,4 @@
-// Coverage of the exact variant of the patch methods (bezier, coons; patch_raster.h), checked
+// Coverage of the exact variant of the patch methods (bezier, coons; patch/raster.h), checked
 // patch by patch against an independent inversion of the patch: multi-start Newton in long
 // double on the patch rebuilt from its control points (Bernstein form, Coons boundary curves),
 // with numeric derivatives.
@@ -15,7 +15,7 @@
 #include "model/topology.h"
 #include "reference/methods/bezier.h"
 #include "reference/methods/coons.h"
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/raster.h"
 
 using namespace tristream;
 
@@ -170,11 +170,11 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
       ++tally.by_rows;
       tally.folded_by_rows += folded;
       detail::rasterize_rows(patch, fold_cells, canvas, rows);
-    } else if constexpr (detail::kTessellated<Patch>) {
+    } else if constexpr (detail::is_tessellated<Patch>) {
       detail::rasterize_tessellated(patch, canvas, nodes);
     }
     // The tessellation too where the patch has one (Bezier); else the same as the renderer.
-    if constexpr (detail::kTessellated<Patch>)
+    if constexpr (detail::is_tessellated<Patch>)
       detail::rasterize_tessellated(patch, tessellated, nodes);
     else
       detail::rasterize_rows(patch, fold_cells, tessellated, rows);
@@ -197,7 +197,7 @@ Tally check_coverage(const Mesh& mesh, int width, int height, bool triangle, Mak
           // (the Coons corner M) even this long double inversion only gets within ~1e-9.
           on_boundary = on_boundary || std::fabs(d) < 1e-6L;
           truth += d < 1e-6L;
-          // Off the boundary, preimages keep clear of kDomainTolerance: the gap the band needs.
+          // Off the boundary, preimages keep clear of domain_tolerance: the gap the band needs.
           tally.ambiguous += std::fabs(d) >= 1e-6L && std::fabs(d) < 1e-4L;
         }
         const int counted = int(canvas.count(x, y));
@@ -273,7 +273,7 @@ TEST_CASE("coons exact coverage matches an independent inversion of each patch",
 // that the lattice meshes above never made; each lost a pixel it covers.
 // - Triangle 332 (moved 224 pixels left and 264 up): pixel (6, 6) lies 0.23 inside the domain
 //   near the Coons corner M = (5, 6), but the start from the row's crossing reaches a
-//   solution 0.246 outside it (within kNear) where the continuation beyond M has folded back
+//   solution 0.246 outside it (within near_margin) where the continuation beyond M has folded back
 //   over the patch (its Jacobian determinant there has the other sign). That solution must
 //   not settle the pixel.
 // - Triangle 2031 (moved 344 left, 196 up): at pixel (6, 12) the starts from the crossings
@@ -382,7 +382,7 @@ TEST_CASE("survey: coverage of every patch of a triangulation file", "[.survey]"
 
 // Patches the image cuts (the lattice mesh moved 13 pixels left and 7 up) are still covered
 // exactly: a row's nearest crossing may then lie far from its first pixel, and where a start
-// reaches a solution far outside the domain (patch_scan.h, kNear) the other starts are tried
+// reaches a solution far outside the domain (patch/scan.h, near_margin) the other starts are tried
 // (without that, a Coons patch here misses a pixel).
 TEST_CASE("patches cut by the image's edge are covered exactly", "[bezier][coons]") {
   Mesh mesh = testing::random_lattice_mesh(40, 30, 60, 23, 10);
@@ -395,10 +395,10 @@ TEST_CASE("patches cut by the image's edge are covered exactly", "[bezier][coons
   CHECK(coons.fold_missed * 700 < coons.fold_pixels);
 }
 
-// The trap of patch_raster.h: whether a pixel on a patch's boundary counts must not hang on
+// The trap of patch/raster.h: whether a pixel on a patch's boundary counts must not hang on
 // the last bits of Newton's result. Starting each solve from a guess moved by up to 1e-3
 // gives other last bits; the decisions must not change, and the parameters agree to a tenth
-// of kDomainTolerance. (A start may also lead to another preimage where a patch folds over
+// of domain_tolerance. (A start may also lead to another preimage where a patch folds over
 // itself: a different point, not different last bits; those are counted and must be rare.)
 TEST_CASE("patch membership does not depend on the solver's start", "[bezier][coons]") {
   const Mesh mesh = testing::random_lattice_mesh(64, 48, 200, 31, 20);
@@ -442,7 +442,7 @@ TEST_CASE("patch membership does not depend on the solver's start", "[bezier][co
         continue;
       }
       REQUIRE(patch.in_domain(s0, t0) == patch.in_domain(s1, t1));
-      REQUIRE(std::fabs(s1 - s0) + std::fabs(t1 - t0) < detail::kDomainTolerance / 10);
+      REQUIRE(std::fabs(s1 - s0) + std::fabs(t1 - t0) < detail::domain_tolerance / 10);
     }
     return true;
   };
@@ -470,7 +470,7 @@ TEST_CASE("patch membership does not depend on the solver's start", "[bezier][co
   CHECK(other_root < candidates / 1000);
 }
 
-// The fold cells of a Coons patch (patch_scan.h) must hold its fold: where the Jacobian
+// The fold cells of a Coons patch (patch/scan.h) must hold its fold: where the Jacobian
 // determinant changes sign between neighbouring samples of a fine grid, the image there lies
 // in some cell's box (widened by the image of a grid step), and a patch without cells has
 // no sign change at all.
@@ -501,7 +501,8 @@ TEST_CASE("coons fold cells hold the fold", "[coons]") {
           const double reach = std::hypot(a.x - b.x, a.y - b.y);
           bool held = false;
           for (const detail::FoldCell& c : cells)
-            held = held || (a.x >= c.x_lo - reach && a.x <= c.x_hi + reach && a.y >= c.y_lo - reach && a.y <= c.y_hi + reach);
+            held = held ||
+                   (a.x >= c.x_lo - reach && a.x <= c.x_hi + reach && a.y >= c.y_lo - reach && a.y <= c.y_hi + reach);
           REQUIRE(held);
         }
   }

@@ -1,4 +1,4 @@
-// The Bezier triangle patch of one triangle and its neighbours (thesis §3.3, NOTES.md §3.3).
+// The Bezier triangle patch of one triangle and its neighbours (thesis §3.3, docs/CONVENTIONS.md).
 #include <catch2/catch.hpp>
 
 #include "methods_support.h"
@@ -10,7 +10,9 @@ using tristream::testing::four_triangles;
 
 namespace {
 
-bool same(const Point& p, const Point& q) { return p.x == Approx(q.x).margin(1e-12) && p.y == Approx(q.y).margin(1e-12); }
+bool same(const Point& p, const Point& q) {
+  return p.x == Approx(q.x).margin(1e-12) && p.y == Approx(q.y).margin(1e-12);
+}
 
 }  // namespace
 
@@ -74,5 +76,6 @@ TEST_CASE("a border triangle has no bezier patch", "[bezier]") {
   const Mesh mesh = four_triangles({10, 4}, {14, 10}, {6, 10}, {18, 4}, {10, 16}, {2, 4});
   const Topology topo = build_topology(mesh);
   PatchControl control;
-  for (std::uint32_t t = 1; t < 4; ++t) CHECK_FALSE(patch_control(mesh, topo, t, PixelMapping(20, 20, 20, 20), control));
+  for (std::uint32_t t = 1; t < 4; ++t)
+    CHECK_FALSE(patch_control(mesh, topo, t, PixelMapping(20, 20, 20, 20), control));
 }

@@ -1,4 +1,4 @@
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/raster.h"
 
 #include "model/topology.h"
 #include "reference/methods/bilinear.h"
@@ -35,11 +35,11 @@ void PatchCanvas::resolve_exact() {
 }
 
 std::vector<std::uint32_t> triangles_by_cell(const Mesh& mesh) {
-  static constexpr double kCell = 16;
-  static constexpr double kMaxCells = 4096;  // per side; points beyond share the last cell
+  static constexpr double cell_units = 16;
+  static constexpr double max_cells = 4096;  // per side; points beyond share the last cell
   double x_max = 0, y_max = 0;
   for (const Point& p : mesh.points) x_max = std::max(x_max, p.x), y_max = std::max(y_max, p.y);
-  auto index = [](double v) { return std::size_t(std::clamp(v / kCell, 0.0, kMaxCells)); };  // NaN: 0
+  auto index = [](double v) { return std::size_t(std::clamp(v / cell_units, 0.0, max_cells)); };  // NaN: 0
   const std::size_t columns = index(x_max) + 1, rows = index(y_max) + 1;
   auto cell = [&](std::uint32_t t) {
     const Point& p = mesh.points[mesh.triangles[t].v[0]];
@@ -56,9 +56,9 @@ void bilinear_prefill(const Mesh& mesh, const Topology& topo, const std::vector<
                       int domain_width, int domain_height, const RenderOptions& options, Field& out) {
   bool exact = out.width == domain_width && out.height == domain_height;
   for (std::size_t v = 0; v < mesh.vertex_count() && exact; ++v) {
-    const double x = mesh.points[v].x * kSubpixelScale, y = mesh.points[v].y * kSubpixelScale;
-    exact = std::fabs(mesh.points[v].x) <= kMaxPatchCoordinate && std::fabs(mesh.points[v].y) <= kMaxPatchCoordinate &&
-            x == std::floor(x) && y == std::floor(y);
+    const double x = mesh.points[v].x * patch_subpixel_scale, y = mesh.points[v].y * patch_subpixel_scale;
+    exact = std::fabs(mesh.points[v].x) <= max_patch_coordinate &&
+            std::fabs(mesh.points[v].y) <= max_patch_coordinate && x == std::floor(x) && y == std::floor(y);
   }
   if (!exact) {
     render_bilinear(mesh, domain_width, domain_height, options, out);

@@ -3,65 +3,22 @@
 // neighbours, a parametric surface (x, y, values)(s, t) and average every surface that lands
 // on a pixel, in sum and count buffers (thesis §3.3, §4.2). Two ways to land on pixels:
 //
-// - thesis: step s and t by a fixed step, round each sample's position to the nearest pixel
-//   (pixel (i, j) samples the point (i, j), so its cell is centred there; the thesis's integer
-//   truncation assumed pixels at their corners), add it there unless it is off the image or
-//   outside the domain; the bilinear pre-fill counts as one more sample in every pixel.
+// - thesis: s and t stepped by a fixed step, each sample rounded to the nearest pixel and
+//   added there unless it is off the image or outside the domain; the bilinear pre-fill
+//   counts as one more sample in every pixel.
 // - exact (the default): every pixel whose sample point is the image of a point of the
-//   patch's closed parameter domain counts once for the patch, with the surface's value at
-//   that point: Newton's method on the patch's position places the pixel from a start, and
-//   it counts when the solution lies in the closed domain (widened by kDomainTolerance).
-//   Candidates and starts come one of two ways:
-//   - by rows (patch_scan.h), for every Coons patch and every Bezier patch that provably
-//     does not fold: each pixel between the leftmost and rightmost crossing of its row with
-//     the boundary curves (and with boxes around the fold, where a Coons patch folds), each
-//     once, started from the pixel before it or from a crossing, or from a grid over the
-//     domain where these starts reach no solution, one far outside the domain (kNear), one
-//     outside where the Jacobian determinant has turned (the continuation beyond the domain
-//     folds back over the patch there, as beside the Coons corner M) or, where the patch
-//     folds, none in it;
-//   - by a coarse tessellation (rasterize_tessellated), for a Bezier patch that may fold:
-//     its micro-triangles, rasterized with exact integer edge tests, give the pixels inside
-//     the tessellation's polygon with a linear guess good to kGuessTolerance pixels; between
-//     each boundary chord and its curve (a parabola: it lies in the triangle of the chord
-//     and the curve's control point, see visit_boundary_arc) the pixels near that triangle
-//     give the rest, guessed from the chord. A stamp per pixel (PatchCanvas::claim) keeps a
-//     pixel from counting twice for one patch, so these candidates may overlap.
-//   Where a patch folds (its Jacobian changes sign) a pixel with preimages in two layers
-//   still counts once, with the layer Newton reaches first; a pixel beside a fold, where
-//   Newton does not converge from any start it is given, is not counted. Work per
-//   candidate pixel and patch: one Newton solve (bezier: one position evaluation and
-//   closed-form steps; coons: two to four evaluations). A domain pixel no patch covers
-//   keeps the bilinear value.
+//   patch's closed parameter domain (widened by domain_tolerance) counts once for the patch,
+//   with the surface's value there, placed by Newton's method (until its step is below
+//   newton_step) from a start. Candidates and starts come by rows (patch/scan.h) for every
+//   Coons patch and every Bezier patch that provably does not fold, and from a coarse
+//   tessellation (rasterize_tessellated, with the pixels between each boundary chord and its
+//   curve) for a Bezier patch that may fold; a stamp per pixel (PatchCanvas::claim) keeps a
+//   pixel from counting twice for one patch. A pixel beside a fold where Newton converges
+//   from no start is not counted; a domain pixel no patch covers keeps the bilinear value.
 //
-// Coverage on the boundary. Pixels whose preimage lies on a patch's parameter boundary are
-// common (the patch corners are mesh vertices, so pixel centres on a mesh of integer
-// vertices; straight boundary curves run through pixel centres). Their membership must not
-// hang on the last bits of Newton's result (a 1e-12 domain test once flipped 120 of 262,144
-// pixels by up to 31 levels when the solver's arithmetic changed). So the domain is closed
-// and widened by kDomainTolerance (1e-8 in the parameters), and Newton runs until its step
-// is below kNewtonStep, leaving errors of about 1e-12 where it converges quadratically.
-// Measured on the 13,000-vertex boat, peppers and kodim23 (colour) encodings with the row
-// starts: of about 1,000,000 Bezier and 1,300,000 Coons solutions per image, those on the
-// boundary lie within 3e-14 (Bezier) and 4e-11 (Coons) of it and all others at least 3e-7
-// away, so the band decides nothing but the boundary itself. Where the Jacobian is singular
-// on the boundary Newton converges only linearly and may stop farther off (the Coons corner
-// M, where the split curve runs straight through, is always such a point; a start that
-// already solves the equation to kExactResidual is kept as it is, so a pixel on it is
-// placed exactly; with kNewtonStep at 1e-7 one Coons pixel of the peppers stopped 8.5e-8
-// beside a boundary point that is a mesh vertex, and was not counted).
-// tests/methods/test_patches.cpp checks each patch's counts against an independent long
-// double inversion (both ways; exactly where the patch does not fold), and that moving
-// Newton's start does not change any decision. On the 13,000-vertex boat and peppers
-// encodings (26,000 patches each) that check found unfolded Coons patches missing pixels
-// (87 on the boat): 0.23 inside their domain beside M (fixed by the determinant test of
-// settles(), patch_scan.h), where the grid's starts sat on a singular corner (the grid now
-// lies inside the domain), and on straight sides along a pixel row where the determinant
-// vanishes (the side's own point at the pixel as a last start). For Bezier patches it found
-// 5 (boat) and 4 (peppers) pixels missed, all on the cusp of a side that runs out and back
-// (two corners at one vertex of degree 3), where the Jacobian is singular: an exact start is
-// now kept (BezierPatch::solve) and the tessellation starts a pixel on each cusp. The patches
-// are kept as tests.
+// docs/PATCHES.md has the design, why the boundary band and the step limit are what they
+// are, and the history of the coverage fixes. tests/methods/test_patch_coverage.cpp checks
+// each patch's counts against an independent long double inversion.
 //
 // The bilinear field (pre-fill and domain) comes from bilinear_prefill below.
 // Pixels outside the triangulation's domain (NaN in the bilinear field) are never written.
@@ -75,8 +32,8 @@
 
 #include "common/errors.h"
 #include "model/topology.h"
-#include "reference/methods/patch_control.h"
-#include "reference/methods/patch_scan.h"
+#include "reference/methods/patch/control.h"
+#include "reference/methods/patch/scan.h"
 #include "reference/render.h"
 
 namespace tristream::detail {
@@ -153,45 +110,45 @@ class PatchCanvas {
 };
 
 // Coverage decisions use positions snapped to 1/256 output pixel. Bit budget: a patch is
-// skipped unless every node is within +-2^20 pixels (kMaxPatchCoordinate), so fixed-point coordinates are below
+// skipped unless every node is within +-2^20 pixels (max_patch_coordinate), so fixed-point coordinates are below
 // 2^28, differences below 2^29 and the edge functions (products of two differences, summed)
 // below 2^59, also when stepped across a bounding box: int64 is exact.
-inline constexpr int kSubpixelBits = 8;
-inline constexpr double kSubpixelScale = 1 << kSubpixelBits;
+inline constexpr int patch_subpixel_bits = 8;
+inline constexpr double patch_subpixel_scale = 1 << patch_subpixel_bits;
 // Distance in output pixels between a patch and its tessellation, which bounds the error of
 // Newton's start: the linear interpolant of a quadratic map over a triangle with edge
 // vectors d_k (parameter space) deviates by at most max_k |d_k' H d_k| / 6 (H the second
 // derivative).
-inline constexpr double kGuessTolerance = 1.0;
+inline constexpr double guess_tolerance = 1.0;
 // Candidates of a boundary arc (visit_boundary_arc) reach this far, in output pixels,
 // beyond the triangle that holds the arc: a pixel on the curve is then a candidate whatever
 // the rounding of the triangle's corners.
-inline constexpr double kArcMargin = 1.0 / 256;
+inline constexpr double arc_margin = 1.0 / 256;
 // Newton's method (BezierPatch::solve, CoonsPatch::solve) stops after a step shorter than
-// kNewtonStep in the parameters (sum of both): where it converges quadratically the error
-// left is then about |P''| / |P'| kNewtonStep^2, 1e-12 times that ratio. A stop on the residual instead
+// newton_step in the parameters (sum of both): where it converges quadratically the error
+// left is then about |P''| / |P'| newton_step^2, 1e-12 times that ratio. A stop on the residual instead
 // would end early where the Jacobian is nearly singular (a small residual there still allows
 // parameter errors of about its square root), so the step rules; it may take up to
-// kNewtonIterations steps.
-inline constexpr double kNewtonStep = 1e-6;
-// Newton gives up when it moves farther than kNewtonReach (sum of both parameters) from its
+// newton_iterations steps.
+inline constexpr double newton_step = 1e-6;
+// Newton gives up when it moves farther than newton_reach (sum of both parameters) from its
 // start: the domain's size, since a start may be a pixel from a thin patch's solution.
-inline constexpr double kNewtonReach = 1.0;
-inline constexpr int kNewtonIterations = 12;
-// A start whose residual is below kExactResidual pixels is taken as the solution as it is.
-inline constexpr double kExactResidual = 1e-12;
+inline constexpr double newton_reach = 1.0;
+inline constexpr int newton_iterations = 12;
+// A start whose residual is below exact_residual pixels is taken as the solution as it is.
+inline constexpr double exact_residual = 1e-12;
 // A solution counts as in the patch's closed parameter domain when no domain constraint is
-// violated by more than kDomainTolerance (see the header comment: coverage on the boundary).
-inline constexpr double kDomainTolerance = 1e-8;
+// violated by more than domain_tolerance (see the header comment: coverage on the boundary).
+inline constexpr double domain_tolerance = 1e-8;
 // Subdivisions per patch side are capped (the tessellation may then deviate more).
-inline constexpr int kMaxSubdivisions = 1024;
+inline constexpr int max_subdivisions = 1024;
 
 // Subdivisions n of a parameter side for the second-derivative bound `interior` (max
 // |d' H d| over the micro-triangle edge directions d scaled to the whole side):
-// n^2 >= interior / (6 kGuessTolerance), at least 1.
+// n^2 >= interior / (6 guess_tolerance), at least 1.
 inline int subdivisions_for(double interior) {
-  const double n = std::ceil(std::sqrt(interior / (6 * kGuessTolerance)));
-  return n < 1 ? 1 : n > kMaxSubdivisions ? kMaxSubdivisions : int(n);
+  const double n = std::ceil(std::sqrt(interior / (6 * guess_tolerance)));
+  return n < 1 ? 1 : n > max_subdivisions ? max_subdivisions : int(n);
 }
 
 // A quadratic polynomial in two parameters (s, t) with its first derivatives.
@@ -215,15 +172,15 @@ struct MicroVertex {
   double t = 0;
 };
 
-// False when (x, y) is outside +-kMaxPatchCoordinate (or NaN): the caller skips the patch.
+// False when (x, y) is outside +-max_patch_coordinate (or NaN): the caller skips the patch.
 inline bool snap(double x, double y, double s, double t, MicroVertex& out) {
-  if (!(std::fabs(x) <= kMaxPatchCoordinate && std::fabs(y) <= kMaxPatchCoordinate)) return false;
+  if (!(std::fabs(x) <= max_patch_coordinate && std::fabs(y) <= max_patch_coordinate)) return false;
   // floor without a library call: exact here, the values are below 2^29 in magnitude.
   auto floor64 = [](double v) {
     const std::int64_t k = std::int64_t(v);
     return k - (double(k) > v);
   };
-  out = {floor64(x * kSubpixelScale + 0.5), floor64(y * kSubpixelScale + 0.5), s, t};
+  out = {floor64(x * patch_subpixel_scale + 0.5), floor64(y * patch_subpixel_scale + 0.5), s, t};
   return true;
 }
 
@@ -252,15 +209,15 @@ void rasterize_micro_triangle(const MicroVertex& a, const MicroVertex& b, const 
   const MicroVertex* v2 = &c;
   // Edges opposite v0, v1, v2 as edge indices of (a, b, c).
   int opposite0 = 1, opposite1 = 2, opposite2 = 0;
-  // Pixel sample points are the integers: column i at fixed-point i << kSubpixelBits. The box
+  // Pixel sample points are the integers: column i at fixed-point i << patch_subpixel_bits. The box
   // first: most micro-triangles of a fine tessellation hold no sample point.
   const std::int64_t min_x = std::min(std::min(a.x, b.x), c.x), max_x = std::max(std::max(a.x, b.x), c.x);
   const std::int64_t min_y = std::min(std::min(a.y, b.y), c.y), max_y = std::max(std::max(a.y, b.y), c.y);
-  const std::int64_t one = std::int64_t(1) << kSubpixelBits;
-  const std::int64_t i0 = std::max<std::int64_t>(0, (min_x + one - 1) >> kSubpixelBits);
-  const std::int64_t i1 = std::min<std::int64_t>(width - 1, max_x >> kSubpixelBits);
-  const std::int64_t j0 = std::max<std::int64_t>(0, (min_y + one - 1) >> kSubpixelBits);
-  const std::int64_t j1 = std::min<std::int64_t>(height - 1, max_y >> kSubpixelBits);
+  const std::int64_t one = std::int64_t(1) << patch_subpixel_bits;
+  const std::int64_t i0 = std::max<std::int64_t>(0, (min_x + one - 1) >> patch_subpixel_bits);
+  const std::int64_t i1 = std::min<std::int64_t>(width - 1, max_x >> patch_subpixel_bits);
+  const std::int64_t j0 = std::max<std::int64_t>(0, (min_y + one - 1) >> patch_subpixel_bits);
+  const std::int64_t j1 = std::min<std::int64_t>(height - 1, max_y >> patch_subpixel_bits);
   if (i0 > i1 || j0 > j1) return;
   std::int64_t area = edge_function(a, b, c.x, c.y);
   if (area == 0) return;
@@ -274,7 +231,7 @@ void rasterize_micro_triangle(const MicroVertex& a, const MicroVertex& b, const 
   const std::int64_t bias2 = (inclusive_edges >> opposite2 & 1) ? 0 : edge_bias(*v0, *v1);
   // Edge functions at the first pixel of the box, stepped by whole pixels: w(p + (1, 0)) =
   // w(p) - dy * one, w(p + (0, 1)) = w(p) + dx * one, for edge (p -> q), dx = q.x - p.x.
-  const std::int64_t px0 = i0 << kSubpixelBits, py0 = j0 << kSubpixelBits;
+  const std::int64_t px0 = i0 << patch_subpixel_bits, py0 = j0 << patch_subpixel_bits;
   std::int64_t r0 = edge_function(*v1, *v2, px0, py0);
   std::int64_t r1 = edge_function(*v2, *v0, px0, py0);
   std::int64_t r2 = edge_function(*v0, *v1, px0, py0);
@@ -293,7 +250,7 @@ void rasterize_micro_triangle(const MicroVertex& a, const MicroVertex& b, const 
 }
 
 // Calls visit(i, j, s, t) for every pixel (i, j) of the width x height image whose sample
-// point lies within kArcMargin of the triangle (p, c, q), c = 2 m - (p + q) / 2: the control
+// point lies within arc_margin of the triangle (p, c, q), c = 2 m - (p + q) / 2: the control
 // point of the parabola with ends p, q and middle point m. The arc lies in that triangle, so
 // every pixel between the arc and its chord p-q, or on either, is visited (some more near
 // them too). (s, t) is a guess of the pixel's parameters: those of p, (ps, pt), and of q,
@@ -305,8 +262,8 @@ void visit_boundary_arc(Point p, Point m, Point q, double ps, double pt, double 
   const double vx[3] = {p.x, 2 * m.x - 0.5 * (p.x + q.x), q.x};
   const double vy[3] = {p.y, 2 * m.y - 0.5 * (p.y + q.y), q.y};
   for (int k = 0; k < 3; ++k)
-    if (!(std::fabs(vx[k]) <= 4 * kMaxPatchCoordinate && std::fabs(vy[k]) <= 4 * kMaxPatchCoordinate)) return;
-  const double e = kArcMargin;
+    if (!(std::fabs(vx[k]) <= 4 * max_patch_coordinate && std::fabs(vy[k]) <= 4 * max_patch_coordinate)) return;
+  const double e = arc_margin;
   const double y_lo = std::min({vy[0], vy[1], vy[2]}) - e, y_hi = std::max({vy[0], vy[1], vy[2]}) + e;
   const int j0 = std::max(0, int(std::ceil(y_lo))), j1 = std::min(height - 1, int(std::floor(y_hi)));
   const double dx = q.x - p.x, dy = q.y - p.y, chord2 = dx * dx + dy * dy;
@@ -377,7 +334,7 @@ std::vector<std::uint32_t> triangles_by_cell(const Mesh& mesh);
 void bilinear_prefill(const Mesh& mesh, const Topology& topo, const std::vector<std::uint32_t>& order,
                       int domain_width, int domain_height, const RenderOptions& options, Field& out);
 
-// The exact variant for a patch with a tessellation (kTessellated below: Bezier): each
+// The exact variant for a patch with a tessellation (is_tessellated below: Bezier): each
 // candidate pixel of patch.tessellate, placed by patch.solve from its guess and kept when in
 // the closed domain (patch.in_domain), adds the patch's values there to `canvas`, once per
 // pixel (the canvas's stamps).
@@ -394,7 +351,7 @@ void rasterize_tessellated(const Patch& patch, PatchCanvas& canvas, std::vector<
   });
 }
 
-// The same by rows (patch_scan.h), each candidate once, for a patch whose fold, if any,
+// The same by rows (patch/scan.h), each candidate once, for a patch whose fold, if any,
 // `folds` holds.
 template <class Patch>
 void rasterize_rows(const Patch& patch, const std::vector<FoldCell>& folds, PatchCanvas& canvas, ScanScratch& scan) {
@@ -417,7 +374,7 @@ struct PatchScratch {
 
 // Patches with a tessellation (Bezier: for those that may fold).
 template <class Patch>
-inline constexpr bool kTessellated = requires(const Patch& patch) { patch.subdivisions(); };
+inline constexpr bool is_tessellated = requires(const Patch& patch) { patch.subdivisions(); };
 
 // The exact variant for one patch: by rows where its fold is bounded (patch.fold_cells: a
 // Coons patch always, a Bezier patch when it provably does not fold), else by its
@@ -426,7 +383,7 @@ template <class Patch>
 void rasterize_exact(const Patch& patch, PatchCanvas& canvas, PatchScratch& scratch) {
   if (patch.fold_cells(scratch.folds))
     rasterize_rows(patch, scratch.folds, canvas, scratch.scan);
-  else if constexpr (kTessellated<Patch>)
+  else if constexpr (is_tessellated<Patch>)
     rasterize_tessellated(patch, canvas, scratch.node);
 }
 

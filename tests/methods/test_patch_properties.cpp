@@ -12,7 +12,7 @@
 #include "geometry/delaunay.h"
 #include "common/errors.h"
 #include "reference/methods/bilinear.h"
-#include "reference/methods/patch_raster.h"
+#include "reference/methods/patch/raster.h"
 #include "reference/render.h"
 
 using namespace tristream;
@@ -84,7 +84,7 @@ TEST_CASE("the exact variant reproduces linear data", "[bezier][coons]") {
       Mesh mesh = testing::random_lattice_mesh(48, 40, 70, seed, 10, 3);
       set_values(mesh, linear);
       const Field f = render(single_mesh(48, 40, mesh), method, "");
-      // Newton stops after a step below kNewtonStep (patch_raster.h), leaving parameter errors
+      // Newton stops after a step below newton_step (patch/raster.h), leaving parameter errors
       // of about 1e-12 times the patch's relative curvature: far below 1e-6 of value here.
       for (int y = 0; y < 40; ++y)
         for (int x = 0; x < 48; ++x)
@@ -242,7 +242,8 @@ TEST_CASE("micro-triangles of a tiling cover each pixel exactly once", "[bezier]
       if (k % 2) q = {std::round(q.x), std::round(q.y)};
       p.push_back(q);
     }
-    std::sort(p.begin(), p.end(), [](const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    std::sort(p.begin(), p.end(),
+              [](const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     p.erase(std::unique(p.begin(), p.end(), [](const Point& a, const Point& b) { return a.x == b.x && a.y == b.y; }),
             p.end());
     const std::vector<Triangle> tiles = delaunay_triangulation(p);
@@ -282,7 +283,8 @@ TEST_CASE("the patch pre-fill is the bilinear field", "[bezier][coons]") {
     if (trial >= 8) {
       // Off the 1/256 grid: the fallback path.
       std::uniform_real_distribution<double> jitter(-0.3, 0.3);
-      for (std::size_t v = 4; v < mesh.vertex_count(); ++v) mesh.points[v].x += jitter(rng), mesh.points[v].y += jitter(rng);
+      for (std::size_t v = 4; v < mesh.vertex_count(); ++v)
+        mesh.points[v].x += jitter(rng), mesh.points[v].y += jitter(rng);
       mesh.triangles = delaunay_triangulation(mesh.points);
     } else if (trial >= 4) {
       // A partial domain: drop every triangle touching a corner.
