@@ -92,7 +92,7 @@ BufferBounds buffer_upper_bounds(const core::Blob& blob, core::PixelFormat forma
                                  int tile_width, int tile_height) {
   const std::size_t tw = std::size_t(tile_width > 0 ? std::min(tile_width, width) : width);
   const std::size_t th = std::size_t(tile_height > 0 ? std::min(tile_height, height) : height);
-  constexpr std::size_t alignment = 8;  // render.cpp workspace_alignment
+  constexpr std::size_t alignment = 8;  // firmware_core/src/workspace_layout.h workspace_alignment
   std::size_t scratch = 0;
   if (blob.layer_count > 1 && format != core::PixelFormat::coverage8)
     scratch = round_up(tw * th * 3 * sizeof(std::int16_t), alignment);
