@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the examples and checks what their panel shows against trisim's run of the same core:
-# display_bands must equal `trisim render --engine core` of the whole image (RGB565 big-endian,
+# display_bands and display_dma (two band buffers, DMA simulated: a buffer written during its transfer fails) must equal `trisim render --engine core` of the whole image (RGB565 big-endian,
 # dithered; the pixels do not depend on the tiling), display_zoom the 320 x 240 crop at (470, 110)
 # of the 960 x 640 render. Usage: check_examples.sh BIN_DIR SOURCE_DIR OUT_DIR
 set -euo pipefail
@@ -13,6 +13,7 @@ tri=$src/data/demo/kodim23.rgb.tri
 "$bin/display_bands" "$out/display_bands.ppm"
 "$bin/trisim" render "$tri" --engine core -m zienkiewicz --format rgb565be --dither -o "$out/display_bands.ref.png"
 "$bin/display_zoom" "$out/display_zoom.ppm"
+"$bin/display_dma" "$out/display_dma.ppm"
 "$bin/trisim" render "$tri" --engine core -m bilinear --format rgb565be --width 960 --height 640 -o "$out/zoom.ref.png"
 
 /usr/bin/python3 -c 'import PIL' 2>/dev/null ||
@@ -27,8 +28,10 @@ def same(a, b, what):
         sys.exit(f"check_examples: {what}: {a.size} vs {b.size}, {differing} pixels differ")
 same(Image.open(f"{out}/display_bands.ppm").convert("RGB"), Image.open(f"{out}/display_bands.ref.png").convert("RGB"),
      "display_bands against trisim render --engine core")
+same(Image.open(f"{out}/display_dma.ppm").convert("RGB"), Image.open(f"{out}/display_bands.ref.png").convert("RGB"),
+     "display_dma (two band buffers) against trisim render --engine core")
 same(Image.open(f"{out}/display_zoom.ppm").convert("RGB"),
      Image.open(f"{out}/zoom.ref.png").convert("RGB").crop((470, 110, 790, 350)),
      "display_zoom against the crop of trisim's 960x640 render")
-print("check_examples: display_bands and display_zoom show the core's pixels")
+print("check_examples: display_bands, display_dma and display_zoom show the core's pixels")
 PY

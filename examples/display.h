@@ -15,6 +15,11 @@ void display_set_window(int x0, int y0, int x1, int y1);
 /* Sends `size` bytes of RGB565 big-endian pixels into the window, filling it row by row. Returns
    when the bytes may be overwritten (a blocking SPI transfer, or a DMA transfer waited for). */
 void display_write(const uint8_t* bytes, size_t size);
+/* DMA: starts sending `size` bytes into the window and returns at once; the bytes must stay
+   unchanged until display_wait returns. At most one transfer at a time. */
+void display_write_start(const uint8_t* bytes, size_t size);
+/* Waits for the transfer display_write_start began (returns at once if there is none). */
+void display_wait(void);
 /* Host only: writes what the panel shows to `path` as a binary PPM. Returns 0 on success. */
 int display_save_ppm(const char* path);
 

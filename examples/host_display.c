@@ -2,6 +2,7 @@
    written out as a PPM. A board has no such copy of the frame: that is what the core avoids. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "display.h"
 
@@ -40,6 +41,39 @@ void display_write(const uint8_t* bytes, size_t size) {
     panel[2 * ((size_t)y * (size_t)panel_width + (size_t)x)] = bytes[i];
     panel[2 * ((size_t)y * (size_t)panel_width + (size_t)x) + 1] = bytes[i + 1];
   }
+}
+
+/* A DMA transfer on the host: the bytes are taken when it ends (display_wait), and a copy made at
+   its start proves nobody wrote them in between, as a real transfer would have sent them. */
+static const uint8_t* dma_bytes;
+static uint8_t* dma_copy;
+static size_t dma_size;
+
+void display_write_start(const uint8_t* bytes, size_t size) {
+  if (dma_bytes) {
+    fprintf(stderr, "display: a transfer started while another is running\n");
+    exit(70);
+  }
+  dma_copy = (uint8_t*)malloc(size ? size : 1);
+  if (!dma_copy) {
+    fprintf(stderr, "display: out of memory\n");
+    exit(70);
+  }
+  memcpy(dma_copy, bytes, size);
+  dma_bytes = bytes;
+  dma_size = size;
+}
+
+void display_wait(void) {
+  if (!dma_bytes) return;
+  if (memcmp(dma_bytes, dma_copy, dma_size) != 0) {
+    fprintf(stderr, "display: the buffer of a running transfer was written\n");
+    exit(70);
+  }
+  display_write(dma_bytes, dma_size);
+  free(dma_copy);
+  dma_copy = NULL;
+  dma_bytes = NULL;
 }
 
 int display_save_ppm(const char* path) {
