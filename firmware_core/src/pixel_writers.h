@@ -63,11 +63,11 @@ struct DirectWriter {
         if constexpr (Channels == 1) {
           for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0) {
             const uint32_t u = v0 >> s;
-            store565<F>(p, pack565_nearest(u, u, u));
+            store565<F>(p, pack565_by_table(u, u, u));
           }
         } else {
           for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0, v1 += d1, v2 += d2)
-            store565<F>(p, pack565_nearest(v0 >> s, v1 >> s, v2 >> s));
+            store565<F>(p, pack565_by_table(v0 >> s, v1 >> s, v2 >> s));
         }
         return;
       }

@@ -177,3 +177,14 @@ TEST_CASE("RGB565 without dithering by multiply-adds equals the division by 255 
                  core::detail::pack565_nearest(b, r, g) != core::detail::pack565(std::uint8_t(b), std::uint8_t(r), std::uint8_t(g), 127);
   CHECK(wrong == 0);
 }
+
+TEST_CASE("RGB565 by table equals the division by 255 for every value") {
+  int wrong = 0;
+  for (unsigned v = 0; v < 256; ++v)
+    for (unsigned w : {0u, 1u, 127u, 128u, 254u, 255u}) {
+      wrong += core::detail::pack565_by_table(v, w, w) != core::detail::pack565(std::uint8_t(v), std::uint8_t(w), std::uint8_t(w), 127);
+      wrong += core::detail::pack565_by_table(w, v, w) != core::detail::pack565(std::uint8_t(w), std::uint8_t(v), std::uint8_t(w), 127);
+      wrong += core::detail::pack565_by_table(w, w, v) != core::detail::pack565(std::uint8_t(w), std::uint8_t(w), std::uint8_t(v), 127);
+    }
+  CHECK(wrong == 0);
+}

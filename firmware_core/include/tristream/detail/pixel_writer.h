@@ -43,7 +43,7 @@ inline uint32_t bayer_offset(int32_t x, int32_t y) {
 }
 
 // n-bit value of an 8-bit one: round(v * max / 255) without dithering (offset 127).
-inline uint32_t reduce(uint32_t v, uint32_t max, uint32_t offset) { return (v * max + offset) / 255u; }
+constexpr uint32_t reduce(uint32_t v, uint32_t max, uint32_t offset) { return (v * max + offset) / 255u; }
 
 inline uint16_t pack565(uint8_t r, uint8_t g, uint8_t b, uint32_t offset) {
   return uint16_t((reduce(r, 31, offset) << 11) | (reduce(g, 63, offset) << 5) | reduce(b, 31, offset));
@@ -54,6 +54,29 @@ inline uint16_t pack565(uint8_t r, uint8_t g, uint8_t b, uint32_t offset) {
 // and the fields placed by masks: no division and no shift back.
 inline uint16_t pack565_nearest(uint32_t r, uint32_t g, uint32_t b) {
   return uint16_t(((r * 249 + 1014) & 0xF800u) | (((g * 253 + 505) >> 5) & 0x07E0u) | ((b * 249 + 1014) >> 11));
+}
+
+// The 5- and 6-bit values of every 8-bit value without dithering, reduce(v, 31, 127) and
+// reduce(v, 63, 127), for the pixel loops: one byte load per channel instead of a multiply-add and
+// masks (512 bytes of constant data; the same values by construction).
+struct Rgb565Tables {
+  uint8_t r5[256];
+  uint8_t g6[256];
+};
+constexpr Rgb565Tables make_rgb565_tables() {
+  Rgb565Tables t{};
+  for (uint32_t v = 0; v < 256; ++v) {
+    t.r5[v] = uint8_t(reduce(v, 31, 127));
+    t.g6[v] = uint8_t(reduce(v, 63, 127));
+  }
+  return t;
+}
+inline constexpr Rgb565Tables rgb565_tables = make_rgb565_tables();
+
+// pack565_nearest by the tables, for values already known to be in [0, 255].
+inline uint16_t pack565_by_table(uint32_t r, uint32_t g, uint32_t b) {
+  const Rgb565Tables& t = rgb565_tables;
+  return uint16_t((uint32_t(t.r5[r]) << 11) | (uint32_t(t.g6[g]) << 5) | t.r5[b]);
 }
 
 // The two bytes of an RGB565 pixel in the format's byte order, as one store where the host is
