@@ -12,12 +12,13 @@
 #include "geometry/delaunay.h"
 #include "geometry/predicates.h"
 #include "io/atomic_file.h"
+#include "io/limits.h"
 
 namespace tristream {
 namespace {
 
 // Limits that keep a hostile file from asking for absurd amounts of memory.
-constexpr long max_image_side = 65535;
+using limits::max_image_side;
 constexpr long max_vertices = 50'000'000;
 constexpr long max_triangles = 100'000'000;
 
