@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include "common/tool_main.h"
 #include "encoder/encoder.h"
 #include "io/image_io.h"
+#include "io/limits.h"
 #include "io/tri_file.h"
 
 using namespace tristream;
@@ -38,6 +40,18 @@ class ProgressBar {
  private:
   int last_ = -1;
 };
+
+// An image triencode can encode: sides a .tri file can hold (limits::max_image_side) and at most
+// limits::max_encode_pixels pixels. Throws DataError naming the limit.
+void check_encodable(const std::string& path, const Image& image) {
+  const std::string found = std::to_string(image.width) + "x" + std::to_string(image.height);
+  if (image.width > limits::max_image_side || image.height > limits::max_image_side)
+    throw DataError(path + ": expected an image of at most " + std::to_string(limits::max_image_side) +
+                    " pixels a side (the largest a .tri file holds), found " + found);
+  if (std::uint64_t(image.width) * std::uint64_t(image.height) > limits::max_encode_pixels)
+    throw DataError(path + ": expected an image of at most " + std::to_string(limits::max_encode_pixels) +
+                    " pixels (the limit for encoding), found " + found);
+}
 
 }  // namespace
 
@@ -110,7 +124,8 @@ int main(int argc, char** argv) {
     ProgressBar bar;
     if (!quiet && isatty(STDERR_FILENO)) o.progress = [&bar](double f) { bar(f); };
 
-    const Image image = read_image(input);
+    const Image image = read_image(input, limits::max_encode_pixels);
+    check_encodable(input, image);
     EncodeResult r;
     try {
       r = encode(image, o);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <functional>
@@ -16,6 +17,7 @@
 #include "core_bridge/pack.h"
 #include "core_bridge/render_core.h"
 #include "io/image_io.h"
+#include "io/limits.h"
 #include "io/tri_file.h"
 #include "metrics/metrics.h"
 #include "reference/render.h"
@@ -65,6 +67,17 @@ void add_render_options(CLI::App* cmd, RenderRequest& req) {
   cmd->add_option("--background", req.background, "Value of pixels outside the triangulation")
       ->check(CLI::Range(0, 255))
       ->capture_default_str();
+}
+
+// Refuses a render of more than limits::max_image_pixels before anything is allocated: a usage
+// error when --width/--height ask for it, a data error when the file's size does.
+void check_render_size(const Triangulation& tri, const RenderRequest& req) {
+  const std::uint64_t w = req.width ? req.width : tri.width, h = req.height ? req.height : tri.height;
+  if (w * h <= limits::max_image_pixels) return;
+  const std::string what = "a render of at most " + std::to_string(limits::max_image_pixels) +
+                           " pixels (the limit for a render), found " + std::to_string(w) + "x" + std::to_string(h);
+  if (req.width || req.height) throw UsageError("--width/--height: expected " + what);
+  throw DataError(req.input + ": expected " + what + " (the file's size; --width and --height render smaller)");
 }
 
 struct Rendered {
@@ -213,6 +226,7 @@ CLI::App* add_metrics_command(CLI::App& app, MetricsCommand& c) {
 
 int run_render(const RenderCommand& c) {
   const Triangulation tri = read_tri_file(c.req.input);
+  check_render_size(tri, c.req);
   const Rendered r = render(tri, c.req);
   write_png(c.output, r.image);
   std::fprintf(stderr, "trisim: %s %dx%d with %s (%s) in %.1f ms\n", c.output.c_str(), r.image.width,
@@ -278,6 +292,7 @@ void print_comparison(const Comparison& cmp, const RenderRequest& req, const Ssi
 
 int run_compare(CompareCommand& c) {
   const Triangulation tri = read_tri_file(c.req.input);
+  check_render_size(tri, c.req);
   if (c.methods.empty()) c.methods = {"bilinear"};
   if (std::find(c.methods.begin(), c.methods.end(), "all") != c.methods.end()) c.methods = method_names();
   const SsimOptions so = ssim_options(c.window);
@@ -337,6 +352,7 @@ Timings time_frames(const std::function<int()>& once, int runs) {
 
 int run_bench(const BenchCommand& c) {
   const Triangulation tri = read_tri_file(c.req.input);
+  check_render_size(tri, c.req);
   std::function<int()> once;  // renders one frame, returns its pixel count
   std::optional<CoreRenderer> core_renderer;
   CoreFrame frame;
