@@ -10,6 +10,7 @@
 
 #include "common/errors.h"
 #include "geometry/delaunay.h"
+#include "geometry/mesh_check.h"
 #include "geometry/predicates.h"
 #include "io/atomic_file.h"
 #include "io/limits.h"
@@ -127,74 +128,23 @@ std::vector<std::string_view> layer_names(ColorSpace space) {
   return {"y", "cb", "cr"};
 }
 
-// Rejects triangles whose interiors overlap. Pairs are found through a uniform grid of
-// about one cell per triangle; each pair is tested once, by the separating-axis test with
-// exact orientation predicates (triangles are normalized to positive orientation).
-void check_no_overlap(const Mesh& mesh, const std::vector<int>& lines, const Parser& parser) {
-  const std::size_t n = mesh.triangles.size();
-  if (n < 2) return;
-  struct Box {
-    double x0, y0, x1, y1;
-  };
-  std::vector<Box> boxes(n);
-  Box all{1e300, 1e300, -1e300, -1e300};
-  for (std::size_t t = 0; t < n; ++t) {
-    Box b{1e300, 1e300, -1e300, -1e300};
-    for (auto v : mesh.triangles[t].v) {
-      const Point& p = mesh.points[v];
-      b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
-    }
-    boxes[t] = b;
-    all = {std::min(all.x0, b.x0), std::min(all.y0, b.y0), std::max(all.x1, b.x1), std::max(all.y1, b.y1)};
+// Rejects triangles whose interiors overlap and meshes that are not edge to edge
+// (geometry/mesh_check.h), naming the lines of the triangles and the vertex.
+void check_mesh(const Mesh& mesh, const std::vector<int>& triangle_lines, const std::vector<int>& vertex_lines,
+                const Parser& parser) {
+  const auto defect = find_mesh_defect(mesh.points, mesh.triangles);
+  if (!defect) return;
+  if (defect->kind == MeshDefect::Kind::overlap) {
+    const auto [first, second] = std::minmax(triangle_lines[defect->a], triangle_lines[defect->b]);
+    parser.fail(second, "triangles whose interiors do not overlap",
+                "a triangle overlapping the one on line " + std::to_string(first));
   }
-  const int side = std::max(1, int(std::sqrt(double(n))));
-  const double cw = std::max(all.x1 - all.x0, 1e-9) / side;
-  const double ch = std::max(all.y1 - all.y0, 1e-9) / side;
-  auto cell_x = [&](double x) { return std::clamp(int((x - all.x0) / cw), 0, side - 1); };
-  auto cell_y = [&](double y) { return std::clamp(int((y - all.y0) / ch), 0, side - 1); };
-
-  std::vector<std::uint32_t> start(std::size_t(side) * side + 1, 0);
-  for (std::size_t t = 0; t < n; ++t)
-    for (int cy = cell_y(boxes[t].y0); cy <= cell_y(boxes[t].y1); ++cy)
-      for (int cx = cell_x(boxes[t].x0); cx <= cell_x(boxes[t].x1); ++cx) ++start[cy * side + cx + 1];
-  for (std::size_t c = 0; c + 1 < start.size(); ++c) start[c + 1] += start[c];
-  std::vector<std::uint32_t> items(start.back());
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-  for (std::uint32_t t = 0; t < n; ++t)
-    for (int cy = cell_y(boxes[t].y0); cy <= cell_y(boxes[t].y1); ++cy)
-      for (int cx = cell_x(boxes[t].x0); cx <= cell_x(boxes[t].x1); ++cx) items[fill[cy * side + cx]++] = t;
-
-  auto separated = [&](std::uint32_t a, std::uint32_t b) {
-    const auto& ta = mesh.triangles[a].v;
-    const auto& tb = mesh.triangles[b].v;
-    for (int e = 0; e < 3; ++e) {
-      const Point& p = mesh.points[ta[e]];
-      const Point& q = mesh.points[ta[(e + 1) % 3]];
-      if (orient2d(p, q, mesh.points[tb[0]]) <= 0 && orient2d(p, q, mesh.points[tb[1]]) <= 0 &&
-          orient2d(p, q, mesh.points[tb[2]]) <= 0)
-        return true;
-    }
-    return false;
-  };
-
-  for (int cy = 0; cy < side; ++cy)
-    for (int cx = 0; cx < side; ++cx) {
-      const std::size_t c = std::size_t(cy) * side + cx;
-      for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
-        for (std::uint32_t j = i + 1; j < start[c + 1]; ++j) {
-          const std::uint32_t a = items[i], b = items[j];
-          const Box& ba = boxes[a];
-          const Box& bb = boxes[b];
-          const double ix0 = std::max(ba.x0, bb.x0), iy0 = std::max(ba.y0, bb.y0);
-          if (ix0 > std::min(ba.x1, bb.x1) || iy0 > std::min(ba.y1, bb.y1)) continue;
-          if (cell_x(ix0) != cx || cell_y(iy0) != cy) continue;  // the pair is tested in one cell only
-          if (!separated(a, b) && !separated(b, a)) {
-            const auto [first, second] = std::minmax(a, b);
-            parser.fail(lines[second], "triangles whose interiors do not overlap",
-                        "a triangle overlapping the one on line " + std::to_string(lines[first]));
-          }
-        }
-    }
+  const Triangle& t = mesh.triangles[defect->a];
+  parser.fail(triangle_lines[defect->a],
+              "triangles that meet edge to edge (no vertex inside another triangle's edge)",
+              "the vertex on line " + std::to_string(vertex_lines[defect->vertex]) +
+                  " inside an edge of this triangle (vertices on lines " + std::to_string(vertex_lines[t.v[0]]) +
+                  ", " + std::to_string(vertex_lines[t.v[1]]) + ", " + std::to_string(vertex_lines[t.v[2]]) + ")");
 }
 
 Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const std::string& layer) {
@@ -207,7 +157,14 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
   mesh.values.reserve(std::size_t(std::min(n, 1L << 20)) * value_count);
 
   std::vector<int> vertex_lines;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> by_x;  // duplicate detection
+  // Duplicate detection: position -> vertex. Exact bit patterns (-0 is folded into +0 on reading).
+  struct PointHash {
+    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const {
+      return std::hash<std::uint64_t>()(k.first * 0x9E3779B97F4A7C15ull ^ k.second);
+    }
+  };
+  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, std::uint32_t, PointHash> by_position;
+  by_position.reserve(std::size_t(std::min(n, 1L << 20)));
   const std::string values_usage = value_count == 1 ? "<x> <y> <value>" : "<x> <y> <v0> <v1> <v2>";
   for (long i = 0; i < n; ++i) {
     Line line = parser.next("vertex line " + std::to_string(i + 1) + " of " + std::to_string(n) + " ('" +
@@ -217,14 +174,13 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
       parser.fail(line.number, "a vertex line '" + values_usage + "'", quoted(line.text));
     Point p{parser.number(tokens[0], line.number, "an x coordinate inside the image", 0, width - 1),
             parser.number(tokens[1], line.number, "a y coordinate inside the image", 0, height - 1)};
-    std::uint64_t key;
-    std::memcpy(&key, &p.x, sizeof key);
-    auto& same_x = by_x[key];
-    for (std::uint32_t other : same_x)
-      if (mesh.points[other].y == p.y)
-        parser.fail(line.number, "distinct vertex positions",
-                    "a duplicate of the vertex on line " + std::to_string(vertex_lines[other]));
-    same_x.push_back(std::uint32_t(mesh.points.size()));
+    std::pair<std::uint64_t, std::uint64_t> key;
+    std::memcpy(&key.first, &p.x, sizeof key.first);
+    std::memcpy(&key.second, &p.y, sizeof key.second);
+    const auto [same, fresh] = by_position.try_emplace(key, std::uint32_t(mesh.points.size()));
+    if (!fresh)
+      parser.fail(line.number, "distinct vertex positions",
+                  "a duplicate of the vertex on line " + std::to_string(vertex_lines[same->second]));
     mesh.points.push_back(p);
     vertex_lines.push_back(line.number);
     for (int c = 0; c < value_count; ++c)
@@ -264,7 +220,7 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
     mesh.triangles.push_back(tri);
     triangle_lines.push_back(line.number);
   }
-  check_no_overlap(mesh, triangle_lines, parser);
+  check_mesh(mesh, triangle_lines, vertex_lines, parser);
   return mesh;
 }
 
