@@ -71,5 +71,30 @@ expect 66 "not a regular file" timeout 20 "$bin/triencode" "$tmp/fifo" -n 10 -o 
 expect 65 "at most 65535 pixels a side" "$bin/triencode" "$tmp/wide.pgm" -n 10 -o "$tmp/wide.tri"
 check "triencode left a .tri for an image it refused" test ! -e "$tmp/wide.tri"
 
+# Item 9: results that cannot be written to stdout are exit 74; JSON holds names that are not UTF-8.
+expect 0 "" "$bin/trisim" render "$tmp/small.tri" -o "$tmp/small.png"
+expect_stdout() {  # expect_stdout <code> <redirection: full|closed> <command...>
+  local code=$1 how=$2 got
+  shift 2
+  if [ "$how" = full ]; then "$@" >/dev/full 2>"$tmp/err"; else "$@" >&- 2>"$tmp/err"; fi
+  got=$?
+  if [ "$got" -eq "$code" ] && grep -qF "stdout" "$tmp/err"; then passes=$((passes + 1)); else
+    echo "FAIL: $* >$how -> exit $got (expected $code), stderr: $(head -c 300 "$tmp/err")"
+    failures=$((failures + 1))
+  fi
+}
+for how in full closed; do
+  expect_stdout 74 $how "$bin/trisim" metrics "$tmp/small.png" "$tmp/small.png"
+  expect_stdout 74 $how "$bin/trisim" metrics "$tmp/small.png" "$tmp/small.png" --json
+  expect_stdout 74 $how "$bin/trisim" compare "$tmp/small.tri" --original "$tmp/small.png" --json
+  expect_stdout 74 $how "$bin/tripack" "$tmp/small.tri" -o "$tmp/small.bin"
+  expect_stdout 74 $how "$bin/triencode" "$tmp/small.png" -n 8 -q -o "$tmp/enc.tri"
+done
+weird=$(printf '%s/n\xff\xfe.tri' "$tmp")
+expect 0 "" "$bin/triencode" "$tmp/small.png" -n 8 -q --json -o "$weird"
+check "triencode did not write the file with a non-UTF-8 name" test -s "$weird"
+check "triencode --json with a non-UTF-8 name is not valid JSON naming it" \
+  python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); assert j["output"].endswith("n\\xFF\\xFE.tri"), j' "$tmp/out"
+
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

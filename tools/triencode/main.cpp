@@ -10,6 +10,7 @@
 #include <string>
 
 #include "common/errors.h"
+#include "common/json_name.h"
 #include "common/tool_main.h"
 #include "encoder/encoder.h"
 #include "io/image_io.h"
@@ -137,8 +138,8 @@ int main(int argc, char** argv) {
 
     if (json) {
       nlohmann::json j;
-      j["input"] = input;
-      j["output"] = output;
+      j["input"] = json_file_name(input);
+      j["output"] = json_file_name(output);
       j["width"] = image.width;
       j["height"] = image.height;
       j["space"] = std::string(to_string(r.triangulation.space));
