@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <unordered_map>
@@ -23,10 +25,22 @@ using limits::max_image_side;
 constexpr long max_vertices = 50'000'000;
 constexpr long max_triangles = 100'000'000;
 
+// 64-bit: a file of more than 2^31 lines cannot reach the reader (limits::max_input_bytes),
+// but parse_tri takes any text.
+using LineNumber = long long;
+
 struct Line {
   std::string_view text;  // comment stripped, trimmed
-  int number = 0;         // 1-based line number in the file
+  LineNumber number = 0;  // 1-based line number in the file
 };
+
+// Whether a decimal number that does not fit a double is too small rather than too large.
+bool underflows(std::string_view token) {
+  const std::string copy(token);
+  errno = 0;
+  const double v = std::strtod(copy.c_str(), nullptr);
+  return errno == ERANGE && std::fabs(v) < 1;
+}
 
 std::string quoted(std::string_view s) {
   constexpr std::size_t shown = 60;
@@ -39,7 +53,7 @@ std::string quoted(std::string_view s) {
 class Parser {
  public:
   Parser(std::string_view text, const std::string& name) : name_(name) {
-    int number = 0;
+    LineNumber number = 0;
     std::size_t start = 0;
     while (start <= text.size()) {
       std::size_t end = text.find('\n', start);
@@ -58,7 +72,7 @@ class Parser {
     last_line_ = number;
   }
 
-  [[noreturn]] void fail(int line, const std::string& expected, const std::string& found) const {
+  [[noreturn]] void fail(LineNumber line, const std::string& expected, const std::string& found) const {
     throw DataError(name_ + ":" + std::to_string(line) + ": expected " + expected + ", found " + found);
   }
 
@@ -93,17 +107,25 @@ class Parser {
     return tokens;
   }
 
-  long integer(std::string_view token, int line, const std::string& what, long lo, long hi) const {
+  long integer(std::string_view token, LineNumber line, const std::string& what, long lo, long hi) const {
     long value = 0;
     auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (ec != std::errc() || ptr != token.data() + token.size() || value < lo || value > hi)
+    const bool digits_only = !token.empty() && token[0] >= '0' && token[0] <= '9';
+    const bool leading_zero = token.size() > 1 && token[0] == '0';
+    if (ec != std::errc() || ptr != token.data() + token.size() || !digits_only || leading_zero || value < lo ||
+        value > hi)
       fail(line, what + " (an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ")", quoted(token));
     return value;
   }
 
-  double number(std::string_view token, int line, const std::string& what, double lo, double hi) const {
+  double number(std::string_view token, LineNumber line, const std::string& what, double lo, double hi) const {
     double value = 0;
     auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    // A number too small for a double (1e-400) is 0, as 1e-320 is a denormal: only overflow is out of range.
+    if (ec == std::errc::result_out_of_range && ptr == token.data() + token.size() && underflows(token)) {
+      value = 0;
+      ec = std::errc();
+    }
     if (ec != std::errc() || ptr != token.data() + token.size() || !std::isfinite(value) || value < lo ||
         value > hi) {
       char range[64];
@@ -113,14 +135,14 @@ class Parser {
     return value + 0.0;  // folds -0 into +0
   }
 
-  int current_line() const { return current_; }
+  LineNumber current_line() const { return current_; }
 
  private:
   const std::string& name_;
   std::vector<Line> lines_;
   std::size_t pos_ = 0;
-  int last_line_ = 0;
-  int current_ = 0;
+  LineNumber last_line_ = 0;
+  LineNumber current_ = 0;
 };
 
 std::vector<std::string_view> layer_names(ColorSpace space) {
@@ -130,7 +152,7 @@ std::vector<std::string_view> layer_names(ColorSpace space) {
 
 // Rejects triangles whose interiors overlap and meshes that are not edge to edge
 // (geometry/mesh_check.h), naming the lines of the triangles and the vertex.
-void check_mesh(const Mesh& mesh, const std::vector<int>& triangle_lines, const std::vector<int>& vertex_lines,
+void check_mesh(const Mesh& mesh, const std::vector<LineNumber>& triangle_lines, const std::vector<LineNumber>& vertex_lines,
                 const Parser& parser) {
   const auto defect = find_mesh_defect(mesh.points, mesh.triangles);
   if (!defect) return;
@@ -156,7 +178,7 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
   mesh.points.reserve(std::size_t(std::min(n, 1L << 20)));
   mesh.values.reserve(std::size_t(std::min(n, 1L << 20)) * value_count);
 
-  std::vector<int> vertex_lines;
+  std::vector<LineNumber> vertex_lines;
   // Duplicate detection: position -> vertex. Exact bit patterns (-0 is folded into +0 on reading).
   struct PointHash {
     std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const {
@@ -189,7 +211,7 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
 
   const bool has_triangles = !parser.at_end() && Parser::split(parser.peek().text)[0] == "triangles";
   long m = 0;
-  int triangles_line = 0;
+  LineNumber triangles_line = 0;
   if (has_triangles) {
     auto th = parser.keyword_line("triangles", 1, "triangles <M>");
     triangles_line = parser.current_line();
@@ -203,7 +225,7 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
     return mesh;
   }
 
-  std::vector<int> triangle_lines;
+  std::vector<LineNumber> triangle_lines;
   mesh.triangles.reserve(std::size_t(std::min(m, 1L << 20)));
   for (long t = 0; t < m; ++t) {
     Line line = parser.next("triangle line " + std::to_string(t + 1) + " of " + std::to_string(m) + " ('<i> <j> <k>')");
@@ -250,6 +272,8 @@ void format_mesh(std::string& out, const Mesh& mesh) {
 }  // namespace
 
 Triangulation parse_tri(std::string_view text, const std::string& source_name) {
+  constexpr std::string_view bom = "\xEF\xBB\xBF";  // a UTF-8 byte order mark is skipped
+  if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
   Parser parser(text, source_name);
   Triangulation tri;
 

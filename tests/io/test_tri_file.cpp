@@ -152,6 +152,21 @@ TEST_CASE("errors name the line, what was expected and what was found") {
              Catch::Contains("in.tri:13: expected triangles whose interiors do not overlap, found a triangle overlapping the one on line 12"));
 }
 
+TEST_CASE("small things of issue 17: a BOM, leading zeros, underflow") {
+  const std::string body = "size 10 10\nchannels grey\nvertices 3\n0 0 1\n9 0 2\n0 9 3\n";
+  CHECK_NOTHROW(parse_tri("\xEF\xBB\xBFtri 1\n" + body, "bom.tri"));
+  CHECK_THAT(error_of("tri 01\n" + body), Catch::Contains("in.tri:1: expected format version 1"));
+  CHECK_THAT(error_of("tri 1\nsize 010 10\n"), Catch::Contains("in.tri:2: expected an image width"));
+  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels grey\nvertices +3\n"), Catch::Contains("in.tri:4: expected a vertex count"));
+  // Too small for a double is zero (as a denormal is nearly zero); too large is out of range.
+  const Triangulation t = parse_tri("tri 1\nsize 10 10\nchannels grey\nvertices 3\n1e-400 0 1e-400\n9 0 2\n0 9 -1e-999\n", "u.tri");
+  CHECK(t.layers[0].points[0].x == 0);
+  CHECK(t.layers[0].value(0, 0) == 0);
+  CHECK(t.layers[0].value(2, 0) == 0);
+  CHECK_NOTHROW(parse_tri("tri 1\nsize 10 10\nchannels grey\nvertices 3\n1e-320 0 1\n9 0 2\n0 9 3\n", "d.tri"));
+  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels grey\nvertices 3\n1e400 0 1\n"), Catch::Contains("in.tri:5: expected an x coordinate"));
+}
+
 TEST_CASE("files that are missing give InputError") {
   CHECK_THROWS_AS(read_tri_file("/nonexistent/x.tri"), InputError);
 }

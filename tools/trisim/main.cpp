@@ -16,6 +16,7 @@
 #include "common/tool_main.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/render_core.h"
+#include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/limits.h"
 #include "io/tri_file.h"
@@ -37,6 +38,7 @@ struct RenderRequest {
   int tile = 32;       // --engine core: square tile side, 0 = full frame
   std::string format;  // --engine core: pixel format ("" = l8 for grey, rgb888 for colour)
   bool dither = false;
+  const CLI::App* command = nullptr;  // the subcommand, to see which options were given
 };
 
 std::vector<std::string> method_names() {
@@ -46,6 +48,7 @@ std::vector<std::string> method_names() {
 }
 
 void add_render_options(CLI::App* cmd, RenderRequest& req) {
+  req.command = cmd;
   cmd->add_option("input", req.input, "Triangulation file (.tri)")->required();
   cmd->add_option("-m,--method", req.method, "Interpolation method")
       ->check(CLI::IsMember(method_names()))
@@ -80,6 +83,21 @@ void check_render_size(const Triangulation& tri, const RenderRequest& req) {
   throw DataError(req.input + ": expected " + what + " (the file's size; --width and --height render smaller)");
 }
 
+// Options that would be ignored are usage errors: the core's options with the reference engine,
+// a method variant with the core, dithering of a format that is not RGB565.
+void check_engine_options(const RenderRequest& req) {
+  const CLI::App& cmd = *req.command;
+  if (req.engine == "reference") {
+    for (const char* core_only : {"--tile", "--format", "--dither", "--raw"})
+      if (cmd.get_option_no_throw(core_only) && cmd.count(core_only))
+        throw UsageError(std::string(core_only) + ": applies to --engine core only");
+    return;
+  }
+  if (!req.variant.empty()) throw UsageError("--variant: applies to --engine reference only");
+  if (req.dither && req.format != "rgb565le" && req.format != "rgb565be")
+    throw UsageError("--dither: applies to --format rgb565le and rgb565be only");
+}
+
 struct Rendered {
   Image image;
   double ms = 0;
@@ -96,10 +114,12 @@ CoreOptions core_options(const Triangulation& tri, const RenderRequest& req) {
   return o;
 }
 
+// The picture a render is measured by: for a grey triangulation rendered by the core in a colour
+// format, the luma of the decoded frame (what an original grey image is compared with).
 Rendered render(const Triangulation& tri, const RenderRequest& req) {
   if (req.engine == "core") {
     const auto t0 = std::chrono::steady_clock::now();
-    Image image = render_core(tri, req.method, core_options(tri, req));
+    Image image = render_core(tri, req.method, core_options(tri, req), req.input);
     if (tri.channels() == 1 && image.channels == 3) image = to_grey(image);
     Rendered out{std::move(image), 0};
     out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -158,6 +178,7 @@ SsimOptions ssim_options(const std::string& window) {
 struct RenderCommand {
   RenderRequest req;
   std::string output;
+  bool raw = false;  // --engine core: the frame's bytes instead of a PNG
 };
 
 struct CompareCommand {
@@ -181,7 +202,9 @@ struct MetricsCommand {
 CLI::App* add_render_command(CLI::App& app, RenderCommand& c) {
   auto* cmd = app.add_subcommand("render", "Render a triangulation to a PNG image");
   add_render_options(cmd, c.req);
-  cmd->add_option("-o,--output", c.output, "Output PNG")->required();
+  cmd->add_option("-o,--output", c.output, "Output PNG (with --raw: the frame's bytes)")->required();
+  cmd->add_flag("--raw", c.raw,
+                "Core: write the frame's bytes as they would go to the display (rows packed, in --format) instead of a PNG");
   return cmd;
 }
 
@@ -224,13 +247,30 @@ CLI::App* add_metrics_command(CLI::App& app, MetricsCommand& c) {
   return cmd;
 }
 
+// Writes what the render produces: with the core, the frame in its pixel format (a PNG of the
+// decoded values, RGB for every format but l8, or with --raw the bytes themselves).
 int run_render(const RenderCommand& c) {
+  check_engine_options(c.req);
   const Triangulation tri = read_tri_file(c.req.input);
   check_render_size(tri, c.req);
-  const Rendered r = render(tri, c.req);
-  write_png(c.output, r.image);
-  std::fprintf(stderr, "trisim: %s %dx%d with %s (%s) in %.1f ms\n", c.output.c_str(), r.image.width,
-               r.image.height, c.req.method.c_str(), c.req.engine.c_str(), r.ms);
+  int width = 0, height = 0;
+  double ms = 0;
+  if (c.req.engine == "core") {
+    const auto t0 = std::chrono::steady_clock::now();
+    const CoreFrame frame = render_core_frame(tri, c.req.method, core_options(tri, c.req), c.req.input);
+    ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (c.raw)
+      write_file_atomically(c.output, std::string_view(reinterpret_cast<const char*>(frame.bytes.data()), frame.bytes.size()));
+    else
+      write_png(c.output, frame_to_image(frame));
+    width = frame.width, height = frame.height;
+  } else {
+    const Rendered r = render(tri, c.req);
+    write_png(c.output, r.image);
+    width = r.image.width, height = r.image.height, ms = r.ms;
+  }
+  std::fprintf(stderr, "trisim: %s %dx%d with %s (%s) in %.1f ms\n", c.output.c_str(), width, height,
+               c.req.method.c_str(), c.req.engine.c_str(), ms);
   return exit_ok;
 }
 
@@ -291,6 +331,7 @@ void print_comparison(const Comparison& cmp, const RenderRequest& req, const Ssi
 }
 
 int run_compare(CompareCommand& c) {
+  check_engine_options(c.req);
   const Triangulation tri = read_tri_file(c.req.input);
   check_render_size(tri, c.req);
   if (c.methods.empty()) c.methods = {"bilinear"};
@@ -351,6 +392,7 @@ Timings time_frames(const std::function<int()>& once, int runs) {
 }
 
 int run_bench(const BenchCommand& c) {
+  check_engine_options(c.req);
   const Triangulation tri = read_tri_file(c.req.input);
   check_render_size(tri, c.req);
   std::function<int()> once;  // renders one frame, returns its pixel count
