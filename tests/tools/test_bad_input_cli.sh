@@ -55,6 +55,10 @@ expect 65 "the limit for a render" "$bin/trisim" bench "$tmp/huge.tri" --engine 
 expect 0 "" "$bin/trisim" render "$tmp/huge.tri" --width 300 --height 300 -o "$tmp/x.png"
 expect 64 "the limit for a render" "$bin/trisim" render "$tmp/small.tri" --width 65535 --height 65535 -o "$tmp/x.png"
 expect 64 "the limit for a render" "$bin/trisim" compare "$tmp/small.tri" --width 65535 --height 65535 --original "$tmp/x.png"
+# An input file over 1 GiB (sparse: no disk is used) is refused before it is read.
+truncate -s 1025M "$tmp/big.tri"
+expect 65 "the limit for an input file" "$bin/tripack" "$tmp/big.tri" -o "$tmp/x.bin"
+rm -f "$tmp/big.tri"
 # A PNG header that claims 30000 x 30000 pixels is refused before decoding.
 printf '\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x75\x30\x00\x00\x75\x30\x08\x00\x00\x00\x00\x00\x00\x00\x00' >"$tmp/claims.png"
 expect 65 "the limit for" "$bin/triencode" "$tmp/claims.png" -n 10 -o "$tmp/x.tri"
