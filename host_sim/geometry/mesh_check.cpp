@@ -30,48 +30,21 @@ class Sweep {
 
   std::optional<MeshDefect> run() {
     if (auto d = collect_edges()) return d;
-    // Events: every vertex some edge uses, in lexicographic order.
-    std::vector<std::uint32_t> order;
-    std::vector<char> used(p_.size(), 0);
-    for (const Edge& e : edges_) used[e.lo] = used[e.hi] = 1;
-    for (std::uint32_t v = 0; v < p_.size(); ++v)
-      if (used[v]) order.push_back(v);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return lex_less(p_[a], p_[b]); });
-    // Edges grouped by their lo and by their hi end (counting sort).
-    std::vector<std::uint32_t> by_lo_start(p_.size() + 1, 0), by_hi_start(p_.size() + 1, 0);
-    for (const Edge& e : edges_) ++by_lo_start[e.lo + 1], ++by_hi_start[e.hi + 1];
-    for (std::size_t i = 0; i < p_.size(); ++i) by_lo_start[i + 1] += by_lo_start[i], by_hi_start[i + 1] += by_hi_start[i];
-    std::vector<std::uint32_t> by_lo(edges_.size()), by_hi(edges_.size());
-    {
-      std::vector<std::uint32_t> fl(by_lo_start.begin(), by_lo_start.end() - 1), fh(by_hi_start.begin(), by_hi_start.end() - 1);
-      for (std::uint32_t i = 0; i < edges_.size(); ++i) by_lo[fl[edges_[i].lo]++] = i, by_hi[fh[edges_[i].hi]++] = i;
-    }
+    const Groups ending = group_by(&Edge::hi), starting = group_by(&Edge::lo);
     Status status(Below{this});
     std::vector<Status::iterator> where(edges_.size());
-    for (std::uint32_t v : order) {
-      for (std::uint32_t k = by_hi_start[v]; k < by_hi_start[v + 1]; ++k) {
-        const auto it = where[by_hi[k]];
-        const auto after = status.erase(it);
+    for (std::uint32_t v : events()) {
+      for (std::uint32_t k = ending.start[v]; k < ending.start[v + 1]; ++k) {
+        const auto after = status.erase(where[ending.edges[k]]);
         if (after != status.begin() && after != status.end())
           if (auto d = meet(*std::prev(after), *after)) return d;
       }
-      const Point& q = p_[v];
-      const auto at = status.lower_bound(q);  // the first edge not below q
-      if (at != status.end() && orient2d(p_[edges_[*at].lo], p_[edges_[*at].hi], q) == 0)
-        return t_junction(*at, v);
-      if (at != status.begin()) {
-        const Edge& below = edges_[*std::prev(at)];
-        const std::uint32_t t = below.above;
-        if (t != none && !has_vertex(t, v)) return MeshDefect{MeshDefect::Kind::overlap, t, triangle_of(v), 0};
-      }
-      for (std::uint32_t k = by_lo_start[v]; k < by_lo_start[v + 1]; ++k) {
-        const std::uint32_t e = by_lo[k];
+      const auto at = status.lower_bound(p_[v]);  // the first edge not below v
+      if (auto d = check_vertex(status, at, v)) return d;
+      for (std::uint32_t k = starting.start[v]; k < starting.start[v + 1]; ++k) {
+        const std::uint32_t e = starting.edges[k];
         const auto [it, inserted] = status.insert(e);
-        if (!inserted) {  // collinear with an edge from the same end: the shorter's other end is inside the longer
-          const std::uint32_t f = *it;
-          const bool e_shorter = lex_less(p_[edges_[e].hi], p_[edges_[f].hi]);
-          return t_junction(e_shorter ? f : e, e_shorter ? edges_[e].hi : edges_[f].hi);
-        }
+        if (!inserted) return collinear(e, *it);
         where[e] = it;
         if (it != status.begin())
           if (auto d = meet(*std::prev(it), e)) return d;
@@ -108,6 +81,49 @@ class Sweep {
     }
   };
   using Status = std::set<std::uint32_t, Below>;
+
+  // Edge indices grouped by one end: those of vertex v are edges[start[v] .. start[v + 1]).
+  struct Groups {
+    std::vector<std::uint32_t> start, edges;
+  };
+  Groups group_by(std::uint32_t Edge::*end) const {
+    Groups g{std::vector<std::uint32_t>(p_.size() + 1, 0), std::vector<std::uint32_t>(edges_.size())};
+    for (const Edge& e : edges_) ++g.start[e.*end + 1];
+    for (std::size_t i = 0; i < p_.size(); ++i) g.start[i + 1] += g.start[i];
+    std::vector<std::uint32_t> fill(g.start.begin(), g.start.end() - 1);
+    for (std::uint32_t i = 0; i < edges_.size(); ++i) g.edges[fill[edges_[i].*end]++] = i;
+    return g;
+  }
+
+  // Every vertex some edge uses, in lexicographic order.
+  std::vector<std::uint32_t> events() const {
+    std::vector<char> used(p_.size(), 0);
+    for (const Edge& e : edges_) used[e.lo] = used[e.hi] = 1;
+    std::vector<std::uint32_t> order;
+    for (std::uint32_t v = 0; v < p_.size(); ++v)
+      if (used[v]) order.push_back(v);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return lex_less(p_[a], p_[b]); });
+    return order;
+  }
+
+  // With the edges ending at v removed and those starting there not yet inserted, every edge in
+  // the status passes v: v must not lie on the first edge not below it (`at`), and the edge just
+  // below v must not have above it a triangle v does not belong to.
+  template <class Set>
+  std::optional<MeshDefect> check_vertex(const Set& status, typename Set::const_iterator at, std::uint32_t v) const {
+    if (at != status.end() && orient2d(p_[edges_[*at].lo], p_[edges_[*at].hi], p_[v]) == 0)
+      return t_junction(*at, v);
+    if (at == status.begin()) return std::nullopt;
+    const std::uint32_t t = edges_[*std::prev(at)].above;
+    if (t != none && !has_vertex(t, v)) return MeshDefect{MeshDefect::Kind::overlap, t, triangle_of(v), 0};
+    return std::nullopt;
+  }
+
+  // Two edges from one end in the same direction: the shorter one's other end is inside the longer.
+  MeshDefect collinear(std::uint32_t e, std::uint32_t f) const {
+    const bool e_shorter = lex_less(p_[edges_[e].hi], p_[edges_[f].hi]);
+    return t_junction(e_shorter ? f : e, e_shorter ? edges_[e].hi : edges_[f].hi);
+  }
 
   static std::uint64_t key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; }
 

@@ -152,8 +152,8 @@ std::vector<std::string_view> layer_names(ColorSpace space) {
 
 // Rejects triangles whose interiors overlap and meshes that are not edge to edge
 // (geometry/mesh_check.h), naming the lines of the triangles and the vertex.
-void check_mesh(const Mesh& mesh, const std::vector<LineNumber>& triangle_lines, const std::vector<LineNumber>& vertex_lines,
-                const Parser& parser) {
+void check_mesh(const Mesh& mesh, const std::vector<LineNumber>& triangle_lines,
+                const std::vector<LineNumber>& vertex_lines, const Parser& parser) {
   const auto defect = find_mesh_defect(mesh.points, mesh.triangles);
   if (!defect) return;
   if (defect->kind == MeshDefect::Kind::overlap) {

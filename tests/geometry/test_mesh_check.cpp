@@ -107,7 +107,8 @@ TEST_CASE("damaged meshes: the sweep finds a defect exactly when the brute force
         break;
       }
       case 1:  // drop some triangles (holes, T-junctions of unused vertices do not count)
-        for (std::size_t k = 0; k < 1 + rng() % 3 && tris.size() > 1; ++k) tris.erase(tris.begin() + long(rng() % tris.size()));
+        for (std::size_t k = 0; k < 1 + rng() % 3 && tris.size() > 1; ++k)
+          tris.erase(tris.begin() + long(rng() % tris.size()));
         break;
       case 2: {  // add a random triangle
         Triangle t;

@@ -78,7 +78,8 @@ void check_conflicts(const CLI::App& app, bool grey) {
   const bool separate = given("--color") && app.get_option("--color")->as<std::string>() == "separate";
   if (grey)
     for (const char* colour_only : {"--color", "--space", "--cotri"})
-      if (given(colour_only)) throw UsageError(std::string(colour_only) + ": applies to colour encodings only (not a grey image or --grey)");
+      if (given(colour_only))
+        throw UsageError(std::string(colour_only) + ": applies to colour encodings only (not a grey image or --grey)");
   if (separate && given("--cotri")) throw UsageError("--cotri: applies to --color co only");
   if (given("--relocate") && app.get_option("--fit")->as<std::string>() == "pixel")
     throw UsageError("--relocate: applies to --fit lsq only");

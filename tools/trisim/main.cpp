@@ -204,7 +204,8 @@ CLI::App* add_render_command(CLI::App& app, RenderCommand& c) {
   add_render_options(cmd, c.req);
   cmd->add_option("-o,--output", c.output, "Output PNG (with --raw: the frame's bytes)")->required();
   cmd->add_flag("--raw", c.raw,
-                "Core: write the frame's bytes as they would go to the display (rows packed, in --format) instead of a PNG");
+                "Core: write the frame's bytes as they would go to the display (rows packed, in --format) "
+                "instead of a PNG");
   return cmd;
 }
 
@@ -260,7 +261,8 @@ int run_render(const RenderCommand& c) {
     const CoreFrame frame = render_core_frame(tri, c.req.method, core_options(tri, c.req), c.req.input);
     ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (c.raw)
-      write_file_atomically(c.output, std::string_view(reinterpret_cast<const char*>(frame.bytes.data()), frame.bytes.size()));
+      write_file_atomically(c.output,
+                            std::string_view(reinterpret_cast<const char*>(frame.bytes.data()), frame.bytes.size()));
     else
       write_png(c.output, frame_to_image(frame));
     width = frame.width, height = frame.height;
