@@ -21,6 +21,7 @@ enum ExitCode : int {
   exit_noinput = 66,
   exit_software = 70,
   exit_cantcreate = 73,
+  exit_ioerr = 74,  // results could not be written to stdout
 };
 
 }  // namespace tristream

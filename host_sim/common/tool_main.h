@@ -1,9 +1,12 @@
 #pragma once
 // The shared frame of every command-line tool: runs the body, prints diagnostics on stderr
 // as "<tool>: <message>" and maps each error type to its exit code (common/errors.h). Gives every
-// tool --version (the one version of tristream/version.h).
+// tool --version (the one version of tristream/version.h). Results that could not be written to
+// stdout (a full disk, a closed stdout) are exit 74.
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <string>
 
@@ -11,6 +14,13 @@
 #include "tristream/version.h"
 
 namespace tristream {
+
+// Flushes stdout; false (with a message) when anything written to it was lost.
+inline bool stdout_written(const char* tool) {
+  const bool ok = std::fflush(stdout) == 0 && !std::ferror(stdout);
+  if (!ok) std::fprintf(stderr, "%s: cannot write the results to stdout (%s)\n", tool, std::strerror(errno));
+  return ok;
+}
 
 template <class Body>
 int run_tool(const char* tool, CLI::App& app, int argc, char** argv, Body&& body) {
@@ -28,7 +38,8 @@ int run_tool(const char* tool, CLI::App& app, int argc, char** argv, Body&& body
       std::fprintf(stderr, "%s: %s\nRun '%s --help' for usage.\n", tool, e.what(), tool);
       return exit_usage;
     }
-    return body();
+    const int code = body();
+    return stdout_written(tool) ? code : int(exit_ioerr);
   } catch (const UsageError& e) {
     std::fprintf(stderr, "%s: %s\n", tool, e.what());
     return exit_usage;

@@ -104,16 +104,18 @@ Image frame_to_image(const CoreFrame& f) {
   return img;
 }
 
-CoreFrame render_core_frame(const Triangulation& tri, std::string_view method, const CoreOptions& options) {
-  const std::vector<std::uint8_t> blob = pack_blob(tri, parse_core_method(method));
-  CoreRenderer r(blob, options);
+CoreFrame render_core_frame(const Triangulation& tri, std::string_view method, const CoreOptions& options,
+                            std::string_view name) {
+  const std::vector<std::uint8_t> blob = pack_blob(tri, parse_core_method(method), name);
+  CoreRenderer r(blob, options, name);
   CoreFrame f;
   r.render(f);
   return f;
 }
 
-Image render_core(const Triangulation& tri, std::string_view method, const CoreOptions& options) {
-  return frame_to_image(render_core_frame(tri, method, options));
+Image render_core(const Triangulation& tri, std::string_view method, const CoreOptions& options,
+                  std::string_view name) {
+  return frame_to_image(render_core_frame(tri, method, options, name));
 }
 
 core::PixelFormat parse_pixel_format(std::string_view name) {

@@ -55,9 +55,12 @@ class CoreRenderer {
 // Decodes a frame to an 8-bit image: L8 -> 1 channel, every other format -> RGB.
 Image frame_to_image(const CoreFrame& frame);
 
-// Packs `tri` for `method` ("bilinear" or "zienkiewicz") and renders it with the core.
-Image render_core(const Triangulation& tri, std::string_view method, const CoreOptions& options);
-CoreFrame render_core_frame(const Triangulation& tri, std::string_view method, const CoreOptions& options);
+// Packs `tri` for `method` ("bilinear" or "zienkiewicz") and renders it with the core. `name`
+// (the file's) starts the messages of errors in the data.
+Image render_core(const Triangulation& tri, std::string_view method, const CoreOptions& options,
+                  std::string_view name = "triangulation");
+CoreFrame render_core_frame(const Triangulation& tri, std::string_view method, const CoreOptions& options,
+                            std::string_view name = "triangulation");
 
 // "l8", "rgb888", "rgb565le", "rgb565be", "xrgb8888"; throws UsageError otherwise.
 core::PixelFormat parse_pixel_format(std::string_view name);

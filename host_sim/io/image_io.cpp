@@ -7,6 +7,7 @@
 
 #include "common/errors.h"
 #include "io/atomic_file.h"
+#include "io/limits.h"
 
 // Implementations come from Debian's libstb (linked through pkg-config "stb").
 #include <stb/stb_image.h>
@@ -14,12 +15,15 @@
 
 namespace tristream {
 
-Image read_image(const std::string& path) {
+Image read_image(const std::string& path, std::uint64_t max_pixels) {
   const std::string bytes = read_file(path);
   int w = 0, h = 0, n = 0;
   if (!stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h, &n))
     throw DataError(path + ": expected a PNG, JPEG, BMP or PNM image, found undecodable data (" +
                     stbi_failure_reason() + ")");
+  if (std::uint64_t(w) * std::uint64_t(h) > max_pixels)
+    throw DataError(path + ": expected an image of at most " + std::to_string(max_pixels) +
+                    " pixels (the limit for an image), found " + std::to_string(w) + "x" + std::to_string(h));
   const int want = (n <= 2) ? 1 : 3;
   stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w,
                                         &h, &n, want);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <unordered_map>
@@ -10,21 +12,35 @@
 
 #include "common/errors.h"
 #include "geometry/delaunay.h"
+#include "geometry/mesh_check.h"
 #include "geometry/predicates.h"
 #include "io/atomic_file.h"
+#include "io/limits.h"
 
 namespace tristream {
 namespace {
 
 // Limits that keep a hostile file from asking for absurd amounts of memory.
-constexpr long max_image_side = 65535;
+using limits::max_image_side;
 constexpr long max_vertices = 50'000'000;
 constexpr long max_triangles = 100'000'000;
 
+// 64-bit: a file of more than 2^31 lines cannot reach the reader (limits::max_input_bytes),
+// but parse_tri takes any text.
+using LineNumber = long long;
+
 struct Line {
   std::string_view text;  // comment stripped, trimmed
-  int number = 0;         // 1-based line number in the file
+  LineNumber number = 0;  // 1-based line number in the file
 };
+
+// Whether a decimal number that does not fit a double is too small rather than too large.
+bool underflows(std::string_view token) {
+  const std::string copy(token);
+  errno = 0;
+  const double v = std::strtod(copy.c_str(), nullptr);
+  return errno == ERANGE && std::fabs(v) < 1;
+}
 
 std::string quoted(std::string_view s) {
   constexpr std::size_t shown = 60;
@@ -37,7 +53,7 @@ std::string quoted(std::string_view s) {
 class Parser {
  public:
   Parser(std::string_view text, const std::string& name) : name_(name) {
-    int number = 0;
+    LineNumber number = 0;
     std::size_t start = 0;
     while (start <= text.size()) {
       std::size_t end = text.find('\n', start);
@@ -56,7 +72,7 @@ class Parser {
     last_line_ = number;
   }
 
-  [[noreturn]] void fail(int line, const std::string& expected, const std::string& found) const {
+  [[noreturn]] void fail(LineNumber line, const std::string& expected, const std::string& found) const {
     throw DataError(name_ + ":" + std::to_string(line) + ": expected " + expected + ", found " + found);
   }
 
@@ -91,17 +107,25 @@ class Parser {
     return tokens;
   }
 
-  long integer(std::string_view token, int line, const std::string& what, long lo, long hi) const {
+  long integer(std::string_view token, LineNumber line, const std::string& what, long lo, long hi) const {
     long value = 0;
     auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (ec != std::errc() || ptr != token.data() + token.size() || value < lo || value > hi)
+    const bool digits_only = !token.empty() && token[0] >= '0' && token[0] <= '9';
+    const bool leading_zero = token.size() > 1 && token[0] == '0';
+    if (ec != std::errc() || ptr != token.data() + token.size() || !digits_only || leading_zero || value < lo ||
+        value > hi)
       fail(line, what + " (an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ")", quoted(token));
     return value;
   }
 
-  double number(std::string_view token, int line, const std::string& what, double lo, double hi) const {
+  double number(std::string_view token, LineNumber line, const std::string& what, double lo, double hi) const {
     double value = 0;
     auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    // A number too small for a double (1e-400) is 0, as 1e-320 is a denormal: only overflow is out of range.
+    if (ec == std::errc::result_out_of_range && ptr == token.data() + token.size() && underflows(token)) {
+      value = 0;
+      ec = std::errc();
+    }
     if (ec != std::errc() || ptr != token.data() + token.size() || !std::isfinite(value) || value < lo ||
         value > hi) {
       char range[64];
@@ -111,14 +135,14 @@ class Parser {
     return value + 0.0;  // folds -0 into +0
   }
 
-  int current_line() const { return current_; }
+  LineNumber current_line() const { return current_; }
 
  private:
   const std::string& name_;
   std::vector<Line> lines_;
   std::size_t pos_ = 0;
-  int last_line_ = 0;
-  int current_ = 0;
+  LineNumber last_line_ = 0;
+  LineNumber current_ = 0;
 };
 
 std::vector<std::string_view> layer_names(ColorSpace space) {
@@ -126,74 +150,23 @@ std::vector<std::string_view> layer_names(ColorSpace space) {
   return {"y", "cb", "cr"};
 }
 
-// Rejects triangles whose interiors overlap. Pairs are found through a uniform grid of
-// about one cell per triangle; each pair is tested once, by the separating-axis test with
-// exact orientation predicates (triangles are normalized to positive orientation).
-void check_no_overlap(const Mesh& mesh, const std::vector<int>& lines, const Parser& parser) {
-  const std::size_t n = mesh.triangles.size();
-  if (n < 2) return;
-  struct Box {
-    double x0, y0, x1, y1;
-  };
-  std::vector<Box> boxes(n);
-  Box all{1e300, 1e300, -1e300, -1e300};
-  for (std::size_t t = 0; t < n; ++t) {
-    Box b{1e300, 1e300, -1e300, -1e300};
-    for (auto v : mesh.triangles[t].v) {
-      const Point& p = mesh.points[v];
-      b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
-    }
-    boxes[t] = b;
-    all = {std::min(all.x0, b.x0), std::min(all.y0, b.y0), std::max(all.x1, b.x1), std::max(all.y1, b.y1)};
+// Rejects triangles whose interiors overlap and meshes that are not edge to edge
+// (geometry/mesh_check.h), naming the lines of the triangles and the vertex.
+void check_mesh(const Mesh& mesh, const std::vector<LineNumber>& triangle_lines,
+                const std::vector<LineNumber>& vertex_lines, const Parser& parser) {
+  const auto defect = find_mesh_defect(mesh.points, mesh.triangles);
+  if (!defect) return;
+  if (defect->kind == MeshDefect::Kind::overlap) {
+    const auto [first, second] = std::minmax(triangle_lines[defect->a], triangle_lines[defect->b]);
+    parser.fail(second, "triangles whose interiors do not overlap",
+                "a triangle overlapping the one on line " + std::to_string(first));
   }
-  const int side = std::max(1, int(std::sqrt(double(n))));
-  const double cw = std::max(all.x1 - all.x0, 1e-9) / side;
-  const double ch = std::max(all.y1 - all.y0, 1e-9) / side;
-  auto cell_x = [&](double x) { return std::clamp(int((x - all.x0) / cw), 0, side - 1); };
-  auto cell_y = [&](double y) { return std::clamp(int((y - all.y0) / ch), 0, side - 1); };
-
-  std::vector<std::uint32_t> start(std::size_t(side) * side + 1, 0);
-  for (std::size_t t = 0; t < n; ++t)
-    for (int cy = cell_y(boxes[t].y0); cy <= cell_y(boxes[t].y1); ++cy)
-      for (int cx = cell_x(boxes[t].x0); cx <= cell_x(boxes[t].x1); ++cx) ++start[cy * side + cx + 1];
-  for (std::size_t c = 0; c + 1 < start.size(); ++c) start[c + 1] += start[c];
-  std::vector<std::uint32_t> items(start.back());
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-  for (std::uint32_t t = 0; t < n; ++t)
-    for (int cy = cell_y(boxes[t].y0); cy <= cell_y(boxes[t].y1); ++cy)
-      for (int cx = cell_x(boxes[t].x0); cx <= cell_x(boxes[t].x1); ++cx) items[fill[cy * side + cx]++] = t;
-
-  auto separated = [&](std::uint32_t a, std::uint32_t b) {
-    const auto& ta = mesh.triangles[a].v;
-    const auto& tb = mesh.triangles[b].v;
-    for (int e = 0; e < 3; ++e) {
-      const Point& p = mesh.points[ta[e]];
-      const Point& q = mesh.points[ta[(e + 1) % 3]];
-      if (orient2d(p, q, mesh.points[tb[0]]) <= 0 && orient2d(p, q, mesh.points[tb[1]]) <= 0 &&
-          orient2d(p, q, mesh.points[tb[2]]) <= 0)
-        return true;
-    }
-    return false;
-  };
-
-  for (int cy = 0; cy < side; ++cy)
-    for (int cx = 0; cx < side; ++cx) {
-      const std::size_t c = std::size_t(cy) * side + cx;
-      for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
-        for (std::uint32_t j = i + 1; j < start[c + 1]; ++j) {
-          const std::uint32_t a = items[i], b = items[j];
-          const Box& ba = boxes[a];
-          const Box& bb = boxes[b];
-          const double ix0 = std::max(ba.x0, bb.x0), iy0 = std::max(ba.y0, bb.y0);
-          if (ix0 > std::min(ba.x1, bb.x1) || iy0 > std::min(ba.y1, bb.y1)) continue;
-          if (cell_x(ix0) != cx || cell_y(iy0) != cy) continue;  // the pair is tested in one cell only
-          if (!separated(a, b) && !separated(b, a)) {
-            const auto [first, second] = std::minmax(a, b);
-            parser.fail(lines[second], "triangles whose interiors do not overlap",
-                        "a triangle overlapping the one on line " + std::to_string(lines[first]));
-          }
-        }
-    }
+  const Triangle& t = mesh.triangles[defect->a];
+  parser.fail(triangle_lines[defect->a],
+              "triangles that meet edge to edge (no vertex inside another triangle's edge)",
+              "the vertex on line " + std::to_string(vertex_lines[defect->vertex]) +
+                  " inside an edge of this triangle (vertices on lines " + std::to_string(vertex_lines[t.v[0]]) +
+                  ", " + std::to_string(vertex_lines[t.v[1]]) + ", " + std::to_string(vertex_lines[t.v[2]]) + ")");
 }
 
 Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const std::string& layer) {
@@ -205,8 +178,15 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
   mesh.points.reserve(std::size_t(std::min(n, 1L << 20)));
   mesh.values.reserve(std::size_t(std::min(n, 1L << 20)) * value_count);
 
-  std::vector<int> vertex_lines;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> by_x;  // duplicate detection
+  std::vector<LineNumber> vertex_lines;
+  // Duplicate detection: position -> vertex. Exact bit patterns (-0 is folded into +0 on reading).
+  struct PointHash {
+    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const {
+      return std::hash<std::uint64_t>()(k.first * 0x9E3779B97F4A7C15ull ^ k.second);
+    }
+  };
+  std::unordered_map<std::pair<std::uint64_t, std::uint64_t>, std::uint32_t, PointHash> by_position;
+  by_position.reserve(std::size_t(std::min(n, 1L << 20)));
   const std::string values_usage = value_count == 1 ? "<x> <y> <value>" : "<x> <y> <v0> <v1> <v2>";
   for (long i = 0; i < n; ++i) {
     Line line = parser.next("vertex line " + std::to_string(i + 1) + " of " + std::to_string(n) + " ('" +
@@ -216,14 +196,13 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
       parser.fail(line.number, "a vertex line '" + values_usage + "'", quoted(line.text));
     Point p{parser.number(tokens[0], line.number, "an x coordinate inside the image", 0, width - 1),
             parser.number(tokens[1], line.number, "a y coordinate inside the image", 0, height - 1)};
-    std::uint64_t key;
-    std::memcpy(&key, &p.x, sizeof key);
-    auto& same_x = by_x[key];
-    for (std::uint32_t other : same_x)
-      if (mesh.points[other].y == p.y)
-        parser.fail(line.number, "distinct vertex positions",
-                    "a duplicate of the vertex on line " + std::to_string(vertex_lines[other]));
-    same_x.push_back(std::uint32_t(mesh.points.size()));
+    std::pair<std::uint64_t, std::uint64_t> key;
+    std::memcpy(&key.first, &p.x, sizeof key.first);
+    std::memcpy(&key.second, &p.y, sizeof key.second);
+    const auto [same, fresh] = by_position.try_emplace(key, std::uint32_t(mesh.points.size()));
+    if (!fresh)
+      parser.fail(line.number, "distinct vertex positions",
+                  "a duplicate of the vertex on line " + std::to_string(vertex_lines[same->second]));
     mesh.points.push_back(p);
     vertex_lines.push_back(line.number);
     for (int c = 0; c < value_count; ++c)
@@ -232,7 +211,7 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
 
   const bool has_triangles = !parser.at_end() && Parser::split(parser.peek().text)[0] == "triangles";
   long m = 0;
-  int triangles_line = 0;
+  LineNumber triangles_line = 0;
   if (has_triangles) {
     auto th = parser.keyword_line("triangles", 1, "triangles <M>");
     triangles_line = parser.current_line();
@@ -246,7 +225,7 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
     return mesh;
   }
 
-  std::vector<int> triangle_lines;
+  std::vector<LineNumber> triangle_lines;
   mesh.triangles.reserve(std::size_t(std::min(m, 1L << 20)));
   for (long t = 0; t < m; ++t) {
     Line line = parser.next("triangle line " + std::to_string(t + 1) + " of " + std::to_string(m) + " ('<i> <j> <k>')");
@@ -263,7 +242,7 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
     mesh.triangles.push_back(tri);
     triangle_lines.push_back(line.number);
   }
-  check_no_overlap(mesh, triangle_lines, parser);
+  check_mesh(mesh, triangle_lines, vertex_lines, parser);
   return mesh;
 }
 
@@ -293,6 +272,8 @@ void format_mesh(std::string& out, const Mesh& mesh) {
 }  // namespace
 
 Triangulation parse_tri(std::string_view text, const std::string& source_name) {
+  constexpr std::string_view bom = "\xEF\xBB\xBF";  // a UTF-8 byte order mark is skipped
+  if (text.substr(0, bom.size()) == bom) text.remove_prefix(bom.size());
   Parser parser(text, source_name);
   Triangulation tri;
 

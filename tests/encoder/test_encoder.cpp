@@ -16,6 +16,7 @@
 #include "encoder/planes.h"
 #include "encoder/relocate.h"
 #include "geometry/delaunay.h"
+#include "geometry/mesh_check.h"
 #include "geometry/predicates.h"
 #include "io/image_io.h"
 #include "io/tri_file.h"
@@ -286,6 +287,21 @@ TEST_CASE("encoding is deterministic to the byte", "[encoder]") {
     o.fit = VertexFit::lsq;
     REQUIRE(format_tri(encode(img, o).triangulation) == format_tri(encode(img, o).triangulation));
   }
+}
+
+TEST_CASE("encoder output is edge to edge: every mesh passes the reader's mesh check", "[encoder]") {
+  // The reader rejects overlaps and T-junctions (geometry/mesh_check.h); the encoder makes Delaunay
+  // triangulations, relocation included, in every colour mode.
+  const Image img = synthetic(70, 50, 3, 23);
+  for (ColorMode mode : {ColorMode::co, ColorMode::separate})
+    for (CotriMethod cotri : {CotriMethod::greedy, CotriMethod::thesis}) {
+      EncodeOptions o = with_vertices(300);
+      o.color = mode;
+      o.cotri = cotri;
+      const Triangulation t = encode(img, o).triangulation;
+      for (const Mesh& m : t.layers) REQUIRE_FALSE(find_mesh_defect(m.points, m.triangles).has_value());
+      REQUIRE_NOTHROW(parse_tri(format_tri(t), "encoded.tri"));
+    }
 }
 
 TEST_CASE("impossible options are usage errors", "[encoder]") {

@@ -56,6 +56,31 @@ expect 0 "" "$bin/trisim" render "$tri" --method zienkiewicz -o "$tmp/a.png"
 [ -s "$tmp/a.png" ] && passes=$((passes + 1)) || { echo "FAIL: render wrote no PNG"; failures=$((failures + 1)); }
 ls "$tmp" | grep -q '\.tmp\.' && { echo "FAIL: a temporary file was left behind"; failures=$((failures + 1)); }
 
+
+# Outputs that are not regular files: a device is written through (and /dev/full's ENOSPC is an
+# error), a FIFO is written through and stays a FIFO, a link stays a link. Inputs must be regular files.
+expect 73 "No space left" "$bin/trisim" render "$tri" -o /dev/full
+[ -c /dev/full ] && passes=$((passes + 1)) || { echo "FAIL: /dev/full is no longer a device"; failures=$((failures + 1)); }
+mkfifo "$tmp/out.fifo"
+timeout 20 cat "$tmp/out.fifo" >"$tmp/from_fifo" &
+reader=$!
+expect 0 "" timeout 20 "$bin/trisim" render "$tri" --method zienkiewicz -o "$tmp/out.fifo"
+wait $reader
+cmp -s "$tmp/from_fifo" "$tmp/a.png" && [ -p "$tmp/out.fifo" ] && passes=$((passes + 1)) ||
+  { echo "FAIL: render to a FIFO did not write through it"; failures=$((failures + 1)); }
+rm -f "$tmp/out.fifo" "$tmp/from_fifo"
+ln -s "$tmp/a.png" "$tmp/link.png"
+expect 0 "" "$bin/trisim" render "$tri" --method bilinear -o "$tmp/link.png"
+expect 0 "" "$bin/trisim" render "$tri" --method bilinear -o "$tmp/b.png"
+[ -L "$tmp/link.png" ] && cmp -s "$tmp/a.png" "$tmp/b.png" && passes=$((passes + 1)) ||
+  { echo "FAIL: render through a link replaced the link"; failures=$((failures + 1)); }
+rm -f "$tmp/link.png" "$tmp/b.png"
+expect 0 "" "$bin/trisim" render "$tri" --method zienkiewicz -o "$tmp/a.png"
+expect 66 "directory" "$bin/trisim" render "$tmp" -o "$tmp/x.png"
+mkfifo "$tmp/in.fifo"
+expect 66 "not a regular file" timeout 20 "$bin/trisim" render "$tmp/in.fifo" -o "$tmp/x.png"
+rm -f "$tmp/in.fifo"
+
 expect 0 "" "$bin/trisim" compare "$tri" --method bilinear --original "$tmp/a.png" --json
 for key in method engine mse psnr ssim ms; do
   grep -q "\"$key\":" "$tmp/out" && passes=$((passes + 1)) || { echo "FAIL: compare --json lacks '$key'"; failures=$((failures + 1)); }

@@ -3,15 +3,18 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/errors.h"
+#include "common/json_name.h"
 #include "common/tool_main.h"
 #include "encoder/encoder.h"
 #include "io/image_io.h"
+#include "io/limits.h"
 #include "io/tri_file.h"
 
 using namespace tristream;
@@ -39,6 +42,49 @@ class ProgressBar {
   int last_ = -1;
 };
 
+// An image triencode can encode: sides a .tri file can hold (limits::max_image_side) and at most
+// limits::max_encode_pixels pixels. Throws DataError naming the limit.
+void check_encodable(const std::string& path, const Image& image) {
+  const std::string found = std::to_string(image.width) + "x" + std::to_string(image.height);
+  if (image.width > limits::max_image_side || image.height > limits::max_image_side)
+    throw DataError(path + ": expected an image of at most " + std::to_string(limits::max_image_side) +
+                    " pixels a side (the largest a .tri file holds), found " + found);
+  if (std::uint64_t(image.width) * std::uint64_t(image.height) > limits::max_encode_pixels)
+    throw DataError(path + ": expected an image of at most " + std::to_string(limits::max_encode_pixels) +
+                    " pixels (the limit for encoding), found " + found);
+}
+
+// A validator of a finite number above `lo` (or at least `lo` when `inclusive`) and at most
+// `hi`; NaN and infinities are refused. The message states `expected` (not the bounds in full).
+CLI::Validator finite_in(double lo, bool inclusive, double hi, const std::string& expected) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double v = 0;
+        std::size_t used = 0;
+        try {
+          v = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        const bool ok = used == text.size() && std::isfinite(v) && (inclusive ? v >= lo : v > lo) && v <= hi;
+        return ok ? std::string() : "expected " + expected + ", found '" + text + "'";
+      },
+      expected);
+}
+
+// Options that would be ignored are usage errors (`grey`: the encoding is grey).
+void check_conflicts(const CLI::App& app, bool grey) {
+  auto given = [&](const char* name) { return app.count(name) > 0; };
+  const bool separate = given("--color") && app.get_option("--color")->as<std::string>() == "separate";
+  if (grey)
+    for (const char* colour_only : {"--color", "--space", "--cotri"})
+      if (given(colour_only))
+        throw UsageError(std::string(colour_only) + ": applies to colour encodings only (not a grey image or --grey)");
+  if (separate && given("--cotri")) throw UsageError("--cotri: applies to --color co only");
+  if (given("--relocate") && app.get_option("--fit")->as<std::string>() == "pixel")
+    throw UsageError("--relocate: applies to --fit lsq only");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -48,7 +94,7 @@ int main(int argc, char** argv) {
                "candidates chosen on a Gaussian-smoothed copy), then move vertices to neighbouring pixels\n"
                "where that lowers the error of the least-squares fit."};
   std::string input, output;
-  std::size_t vertices = 0;
+  long long vertices = 0;  // signed, so that "-n -5" is refused instead of wrapping
   double max_rms = 0;
   std::string color = "co", space = "rgb", cotri = "greedy", fit = "lsq", rank = "total";
   double sigma = -1;
@@ -61,7 +107,7 @@ int main(int argc, char** argv) {
   auto* e_opt = app.add_option("-e,--error", max_rms,
                                "Stop when the RMS error of the linear interpolant (0-255 scale, encoding space) "
                                "is at most this")
-                    ->check(CLI::PositiveNumber);
+                    ->check(finite_in(0, false, 255, "a number above 0, at most 255"));
   app.add_option("--color", color, "Colour images: one co-triangulation or one per channel")
       ->check(CLI::IsMember({"co", "separate"}))
       ->capture_default_str();
@@ -83,7 +129,7 @@ int main(int argc, char** argv) {
   app.add_option("--sigma", sigma,
                  "Gaussian sigma of the copy candidates are chosen on (0: the image itself; default 0.5 with "
                  "--fit lsq, 1 with --fit pixel)")
-      ->check(CLI::Range(0.0, 10.0));
+      ->check(finite_in(0, true, 10, "a number in 0..10"));
   app.add_option("--relocate", relocate,
                  "With --fit lsq: passes moving vertices to neighbouring pixels where that lowers the error, "
                  "keeping the mesh Delaunay (0: none)")
@@ -95,9 +141,9 @@ int main(int argc, char** argv) {
   return run_tool("triencode", app, argc, argv, [&] {
     if (!n_opt->count() && !e_opt->count()) throw UsageError("give --vertices N or --error E");
     EncodeOptions o;
-    o.vertices = vertices;
     if (n_opt->count() && vertices < 4)
       throw UsageError("--vertices " + std::to_string(vertices) + ": expected at least 4 (the corners)");
+    o.vertices = std::size_t(vertices);
     o.max_rms = max_rms;
     o.color = color == "co" ? ColorMode::co : ColorMode::separate;
     o.space = space == "rgb" ? ColorSpace::rgb : ColorSpace::ycbcr;
@@ -110,7 +156,9 @@ int main(int argc, char** argv) {
     ProgressBar bar;
     if (!quiet && isatty(STDERR_FILENO)) o.progress = [&bar](double f) { bar(f); };
 
-    const Image image = read_image(input);
+    const Image image = read_image(input, limits::max_encode_pixels);
+    check_encodable(input, image);
+    check_conflicts(app, grey || image.channels == 1);
     EncodeResult r;
     try {
       r = encode(image, o);
@@ -122,8 +170,8 @@ int main(int argc, char** argv) {
 
     if (json) {
       nlohmann::json j;
-      j["input"] = input;
-      j["output"] = output;
+      j["input"] = json_file_name(input);
+      j["output"] = json_file_name(output);
       j["width"] = image.width;
       j["height"] = image.height;
       j["space"] = std::string(to_string(r.triangulation.space));

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/errors.h"
+#include "common/json_name.h"
 #include "common/tool_main.h"
 #include "core_bridge/c_source.h"
 #include "core_bridge/core_stack.h"
@@ -107,7 +108,7 @@ int main(int argc, char** argv) {
     const BufferBounds bound = buffer_upper_bounds(sizes.blob(), o.format, out_w, out_h, o.tile_width, o.tile_height);
     if (req.json) {
       nlohmann::json j;
-      j["output"] = req.output;
+      j["output"] = json_file_name(req.output);
       j["method"] = req.method;
       j["format"] = req.format;
       j["tile"] = req.tile;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <functional>
@@ -15,7 +16,9 @@
 #include "common/tool_main.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/render_core.h"
+#include "io/atomic_file.h"
 #include "io/image_io.h"
+#include "io/limits.h"
 #include "io/tri_file.h"
 #include "metrics/metrics.h"
 #include "reference/render.h"
@@ -35,6 +38,7 @@ struct RenderRequest {
   int tile = 32;       // --engine core: square tile side, 0 = full frame
   std::string format;  // --engine core: pixel format ("" = l8 for grey, rgb888 for colour)
   bool dither = false;
+  const CLI::App* command = nullptr;  // the subcommand, to see which options were given
 };
 
 std::vector<std::string> method_names() {
@@ -44,6 +48,7 @@ std::vector<std::string> method_names() {
 }
 
 void add_render_options(CLI::App* cmd, RenderRequest& req) {
+  req.command = cmd;
   cmd->add_option("input", req.input, "Triangulation file (.tri)")->required();
   cmd->add_option("-m,--method", req.method, "Interpolation method")
       ->check(CLI::IsMember(method_names()))
@@ -67,6 +72,32 @@ void add_render_options(CLI::App* cmd, RenderRequest& req) {
       ->capture_default_str();
 }
 
+// Refuses a render of more than limits::max_image_pixels before anything is allocated: a usage
+// error when --width/--height ask for it, a data error when the file's size does.
+void check_render_size(const Triangulation& tri, const RenderRequest& req) {
+  const std::uint64_t w = req.width ? req.width : tri.width, h = req.height ? req.height : tri.height;
+  if (w * h <= limits::max_image_pixels) return;
+  const std::string what = "a render of at most " + std::to_string(limits::max_image_pixels) +
+                           " pixels (the limit for a render), found " + std::to_string(w) + "x" + std::to_string(h);
+  if (req.width || req.height) throw UsageError("--width/--height: expected " + what);
+  throw DataError(req.input + ": expected " + what + " (the file's size; --width and --height render smaller)");
+}
+
+// Options that would be ignored are usage errors: the core's options with the reference engine,
+// a method variant with the core, dithering of a format that is not RGB565.
+void check_engine_options(const RenderRequest& req) {
+  const CLI::App& cmd = *req.command;
+  if (req.engine == "reference") {
+    for (const char* core_only : {"--tile", "--format", "--dither", "--raw"})
+      if (cmd.get_option_no_throw(core_only) && cmd.count(core_only))
+        throw UsageError(std::string(core_only) + ": applies to --engine core only");
+    return;
+  }
+  if (!req.variant.empty()) throw UsageError("--variant: applies to --engine reference only");
+  if (req.dither && req.format != "rgb565le" && req.format != "rgb565be")
+    throw UsageError("--dither: applies to --format rgb565le and rgb565be only");
+}
+
 struct Rendered {
   Image image;
   double ms = 0;
@@ -83,10 +114,12 @@ CoreOptions core_options(const Triangulation& tri, const RenderRequest& req) {
   return o;
 }
 
+// The picture a render is measured by: for a grey triangulation rendered by the core in a colour
+// format, the luma of the decoded frame (what an original grey image is compared with).
 Rendered render(const Triangulation& tri, const RenderRequest& req) {
   if (req.engine == "core") {
     const auto t0 = std::chrono::steady_clock::now();
-    Image image = render_core(tri, req.method, core_options(tri, req));
+    Image image = render_core(tri, req.method, core_options(tri, req), req.input);
     if (tri.channels() == 1 && image.channels == 3) image = to_grey(image);
     Rendered out{std::move(image), 0};
     out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -142,205 +175,304 @@ SsimOptions ssim_options(const std::string& window) {
   return o;
 }
 
+struct RenderCommand {
+  RenderRequest req;
+  std::string output;
+  bool raw = false;  // --engine core: the frame's bytes instead of a PNG
+};
+
+struct CompareCommand {
+  RenderRequest req;
+  std::vector<std::string> methods;
+  std::string original, window = "gaussian", save;
+  bool json = false;
+};
+
+struct BenchCommand {
+  RenderRequest req;
+  bool json = false;
+  int runs = 0;  // 0: as many as fit in about 2 s
+};
+
+struct MetricsCommand {
+  std::string a, b, window = "gaussian";
+  bool json = false;
+};
+
+CLI::App* add_render_command(CLI::App& app, RenderCommand& c) {
+  auto* cmd = app.add_subcommand("render", "Render a triangulation to a PNG image");
+  add_render_options(cmd, c.req);
+  cmd->add_option("-o,--output", c.output, "Output PNG (with --raw: the frame's bytes)")->required();
+  cmd->add_flag("--raw", c.raw,
+                "Core: write the frame's bytes as they would go to the display (rows packed, in --format) "
+                "instead of a PNG");
+  return cmd;
+}
+
+CLI::App* add_compare_command(CLI::App& app, CompareCommand& c) {
+  auto* cmd = app.add_subcommand(
+      "compare", "Render a triangulation with one or more methods and compare each render with the original");
+  add_render_options(cmd, c.req);
+  cmd->remove_option(cmd->get_option("--method"));
+  std::vector<std::string> method_choices = method_names();
+  method_choices.push_back("all");
+  cmd->add_option("-m,--method", c.methods, "Interpolation methods, or 'all' (default: bilinear)")
+      ->check(CLI::IsMember(method_choices));
+  cmd->add_option("--save", c.save, "Also write each render as <dir>/<method>.png")->check(CLI::ExistingDirectory);
+  cmd->add_option("--original", c.original, "Original image")->required();
+  cmd->add_option("--ssim-window", c.window, "SSIM window: 'gaussian' (11x11, sigma 1.5) or '8x8'")
+      ->check(CLI::IsMember({"gaussian", "8x8"}))
+      ->capture_default_str();
+  cmd->add_flag("--json", c.json, "Print one JSON object per method, one per line");
+  return cmd;
+}
+
+CLI::App* add_bench_command(CLI::App& app, BenchCommand& c) {
+  auto* cmd = app.add_subcommand(
+      "bench", "Render repeatedly after a warm-up; print the median ms per frame (wall and CPU), the fastest, and Mpixel/s");
+  add_render_options(cmd, c.req);
+  cmd->add_option("--runs", c.runs, "Timed renders (default: as many as fit in about 2 s, 5 to 200)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_flag("--json", c.json, "Print one JSON object");
+  return cmd;
+}
+
+CLI::App* add_metrics_command(CLI::App& app, MetricsCommand& c) {
+  auto* cmd = app.add_subcommand("metrics", "MSE, PSNR and SSIM of two images of equal size");
+  cmd->add_option("a", c.a, "First image")->required();
+  cmd->add_option("b", c.b, "Second image")->required();
+  cmd->add_option("--ssim-window", c.window, "SSIM window: 'gaussian' (11x11, sigma 1.5) or '8x8'")
+      ->check(CLI::IsMember({"gaussian", "8x8"}))
+      ->capture_default_str();
+  cmd->add_flag("--json", c.json, "Print one JSON object");
+  return cmd;
+}
+
+// Writes what the render produces: with the core, the frame in its pixel format (a PNG of the
+// decoded values, RGB for every format but l8, or with --raw the bytes themselves).
+int run_render(const RenderCommand& c) {
+  check_engine_options(c.req);
+  const Triangulation tri = read_tri_file(c.req.input);
+  check_render_size(tri, c.req);
+  int width = 0, height = 0;
+  double ms = 0;
+  if (c.req.engine == "core") {
+    const auto t0 = std::chrono::steady_clock::now();
+    const CoreFrame frame = render_core_frame(tri, c.req.method, core_options(tri, c.req), c.req.input);
+    ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (c.raw)
+      write_file_atomically(c.output,
+                            std::string_view(reinterpret_cast<const char*>(frame.bytes.data()), frame.bytes.size()));
+    else
+      write_png(c.output, frame_to_image(frame));
+    width = frame.width, height = frame.height;
+  } else {
+    const Rendered r = render(tri, c.req);
+    write_png(c.output, r.image);
+    width = r.image.width, height = r.image.height, ms = r.ms;
+  }
+  std::fprintf(stderr, "trisim: %s %dx%d with %s (%s) in %.1f ms\n", c.output.c_str(), width, height,
+               c.req.method.c_str(), c.req.engine.c_str(), ms);
+  return exit_ok;
+}
+
+// One method's render measured against the original (and, for the core, against the reference).
+struct Comparison {
+  Rendered render;
+  Metrics metrics;
+  int max_diff_ref = -1;  // -1: not rendered by the core
+  double psnr_ref = 0;
+};
+
+Comparison compare_method(const Triangulation& tri, const RenderRequest& req, const CompareCommand& c,
+                          const SsimOptions& so, Image& original) {
+  Comparison out;
+  out.render = render(tri, req);
+  const Image& image = out.render.image;
+  if (original.pixels.empty()) original = load_original(c.original, tri, image.width, image.height);
+  out.metrics = compare_images(image, original, so);
+  if (req.engine == "core") {
+    RenderRequest ref = req;
+    ref.engine = "reference";
+    const Image reference = render(tri, ref).image;
+    out.max_diff_ref = 0;
+    for (std::size_t i = 0; i < reference.pixels.size(); ++i)
+      out.max_diff_ref = std::max(out.max_diff_ref, std::abs(int(reference.pixels[i]) - int(image.pixels[i])));
+    out.psnr_ref = psnr(image, reference);
+  }
+  return out;
+}
+
+void print_comparison(const Comparison& cmp, const RenderRequest& req, const SsimOptions& so, bool json,
+                      std::size_t vertices, std::size_t triangles) {
+  const Image& image = cmp.render.image;
+  const Metrics& m = cmp.metrics;
+  if (json) {
+    nlohmann::json j = metrics_json(m, so);
+    j["method"] = req.method;
+    j["engine"] = req.engine;
+    j["variant"] = req.variant;
+    j["ms"] = cmp.render.ms;
+    j["width"] = image.width;
+    j["height"] = image.height;
+    j["vertices"] = vertices;
+    j["triangles"] = triangles;
+    if (cmp.max_diff_ref >= 0) {
+      j["max_abs_diff_vs_reference"] = cmp.max_diff_ref;
+      j["psnr_vs_reference"] = is_identical_psnr(cmp.psnr_ref) ? nlohmann::json(nullptr) : nlohmann::json(cmp.psnr_ref);
+    }
+    std::printf("%s\n", j.dump().c_str());
+  } else {
+    std::printf("%-14s %-10s %10.4f %10.4f %9.6f %10.3f\n", req.method.c_str(), req.engine.c_str(), m.mse,
+                is_identical_psnr(m.psnr) ? INFINITY : m.psnr, m.ssim, cmp.render.ms);
+    if (cmp.max_diff_ref >= 0)
+      std::printf("%-14s %-10s max |core - reference| %d, PSNR vs reference %.2f dB\n", "", "", cmp.max_diff_ref,
+                  is_identical_psnr(cmp.psnr_ref) ? INFINITY : cmp.psnr_ref);
+  }
+  std::fflush(stdout);
+}
+
+int run_compare(CompareCommand& c) {
+  check_engine_options(c.req);
+  const Triangulation tri = read_tri_file(c.req.input);
+  check_render_size(tri, c.req);
+  if (c.methods.empty()) c.methods = {"bilinear"};
+  if (std::find(c.methods.begin(), c.methods.end(), "all") != c.methods.end()) c.methods = method_names();
+  const SsimOptions so = ssim_options(c.window);
+  std::size_t vertices = 0, triangles = 0;
+  for (const Mesh& mesh : tri.layers) vertices += mesh.vertex_count(), triangles += mesh.triangles.size();
+  if (!c.json) std::printf("%-14s %-10s %10s %10s %9s %10s\n", "method", "engine", "mse", "psnr_db", "ssim", "ms");
+  Image original;
+  for (const std::string& method : c.methods) {
+    RenderRequest req = c.req;
+    req.method = method;
+    const Comparison cmp = compare_method(tri, req, c, so, original);
+    if (!c.save.empty()) write_png(c.save + "/" + method + ".png", cmp.render.image);
+    print_comparison(cmp, req, so, c.json, vertices, triangles);
+  }
+  if (!c.json)
+    std::printf("# %zu vertices, %zu triangles; SSIM %s\n", vertices, triangles,
+                so.window == SsimWindow::gaussian11 ? "Gaussian 11x11, sigma 1.5" : "uniform 8x8");
+  return exit_ok;
+}
+
+// Wall and thread CPU milliseconds of each timed frame, and the pixels of one frame.
+struct Timings {
+  std::vector<double> ms, cpu_ms;
+  int pixels = 0;
+};
+
+double thread_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+double median_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+// Two warm-up frames, then `runs` timed frames, or when runs is 0 at least 5 and until 2 s or 200 frames.
+// The thread's CPU time is less disturbed by other processes than the wall time.
+Timings time_frames(const std::function<int()>& once, int runs) {
+  Timings t;
+  t.pixels = once();
+  t.pixels = once();
+  const auto start = std::chrono::steady_clock::now();
+  while (true) {
+    const double c0 = thread_cpu_ms();
+    const auto t0 = std::chrono::steady_clock::now();
+    t.pixels = once();
+    const auto t1 = std::chrono::steady_clock::now();
+    t.cpu_ms.push_back(thread_cpu_ms() - c0);
+    t.ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    const double elapsed = std::chrono::duration<double>(t1 - start).count();
+    if (runs ? int(t.ms.size()) >= runs : (t.ms.size() >= 200 || (t.ms.size() >= 5 && elapsed > 2.0))) break;
+  }
+  return t;
+}
+
+int run_bench(const BenchCommand& c) {
+  check_engine_options(c.req);
+  const Triangulation tri = read_tri_file(c.req.input);
+  check_render_size(tri, c.req);
+  std::function<int()> once;  // renders one frame, returns its pixel count
+  std::optional<CoreRenderer> core_renderer;
+  CoreFrame frame;
+  std::vector<std::uint8_t> blob;  // read in place by the core: outlives core_renderer
+  if (c.req.engine == "core") {
+    blob = pack_blob(tri, parse_core_method(c.req.method), c.req.input);
+    core_renderer.emplace(blob, core_options(tri, c.req), c.req.input);
+    once = [&] {
+      core_renderer->render(frame);  // tiles delivered through the sink into a frame
+      return frame.width * frame.height;
+    };
+  } else {
+    once = [&] {
+      const Image image = render(tri, c.req).image;
+      return image.width * image.height;
+    };
+  }
+  const Timings t = time_frames(once, c.runs);
+  const double median = median_of(t.ms), cpu_median = median_of(t.cpu_ms);
+  const double fastest = *std::min_element(t.ms.begin(), t.ms.end());
+  const double mpix = t.pixels / (median * 1e-3) * 1e-6;
+  if (c.json) {
+    nlohmann::json j;
+    j["method"] = c.req.method;
+    j["engine"] = c.req.engine;
+    j["runs"] = t.ms.size();
+    j["pixels"] = t.pixels;
+    j["ms_median"] = median;
+    j["ms_min"] = fastest;
+    j["cpu_ms_median"] = cpu_median;
+    j["mpix_per_s"] = mpix;
+    if (core_renderer) {
+      j["tile"] = c.req.tile;
+      j["format"] = c.req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : c.req.format;
+      j["ram_bytes"] = core_renderer->tile_buffer_bytes() + core_renderer->workspace_bytes();
+    }
+    std::printf("%s\n", j.dump().c_str());
+  } else {
+    std::printf("%s %s: median %.3f ms per frame over %zu runs (CPU %.3f ms, fastest %.3f ms), %.1f Mpixel/s\n",
+                c.req.method.c_str(), c.req.engine.c_str(), median, t.ms.size(), cpu_median, fastest, mpix);
+  }
+  return exit_ok;
+}
+
+int run_metrics(const MetricsCommand& c) {
+  const Image a = read_image(c.a);
+  Image b = read_image(c.b);
+  if (a.channels == 1 && b.channels == 3) b = to_grey(b);
+  Image a2 = (a.channels == 3 && b.channels == 1) ? to_grey(a) : a;
+  if (a2.width != b.width || a2.height != b.height)
+    throw DataError(c.b + ": expected an image of " + std::to_string(a2.width) + "x" + std::to_string(a2.height) +
+                    " like " + c.a + ", found " + std::to_string(b.width) + "x" + std::to_string(b.height));
+  const SsimOptions so = ssim_options(c.window);
+  const Metrics m = compare_images(a2, b, so);
+  if (c.json) std::printf("%s\n", metrics_json(m, so).dump().c_str());
+  else print_metrics(m, so);
+  return exit_ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"trisim: render triangulation-represented images and measure them"};
   app.require_subcommand(1);
-
-  RenderRequest render_req;
-  std::string render_output;
-  auto* render_cmd = app.add_subcommand("render", "Render a triangulation to a PNG image");
-  add_render_options(render_cmd, render_req);
-  render_cmd->add_option("-o,--output", render_output, "Output PNG")->required();
-
-  RenderRequest compare_req;
-  std::vector<std::string> compare_methods;
-  std::string compare_original, compare_window = "gaussian", compare_save;
-  bool compare_json = false;
-  auto* compare_cmd = app.add_subcommand(
-      "compare", "Render a triangulation with one or more methods and compare each render with the original");
-  add_render_options(compare_cmd, compare_req);
-  compare_cmd->remove_option(compare_cmd->get_option("--method"));
-  std::vector<std::string> method_choices = method_names();
-  method_choices.push_back("all");
-  compare_cmd->add_option("-m,--method", compare_methods, "Interpolation methods, or 'all' (default: bilinear)")
-      ->check(CLI::IsMember(method_choices));
-  compare_cmd->add_option("--save", compare_save, "Also write each render as <dir>/<method>.png")
-      ->check(CLI::ExistingDirectory);
-  compare_cmd->add_option("--original", compare_original, "Original image")->required();
-  compare_cmd->add_option("--ssim-window", compare_window, "SSIM window: 'gaussian' (11x11, sigma 1.5) or '8x8'")
-      ->check(CLI::IsMember({"gaussian", "8x8"}))
-      ->capture_default_str();
-  compare_cmd->add_flag("--json", compare_json, "Print one JSON object per method, one per line");
-
-  RenderRequest bench_req;
-  bool bench_json = false;
-  int bench_runs = 0;
-  auto* bench_cmd = app.add_subcommand(
-      "bench", "Render repeatedly after a warm-up; print the median ms per frame (wall and CPU), the fastest, and Mpixel/s");
-  add_render_options(bench_cmd, bench_req);
-  bench_cmd->add_option("--runs", bench_runs, "Timed renders (default: as many as fit in about 2 s, 5 to 200)")
-      ->check(CLI::Range(1, 100000));
-  bench_cmd->add_flag("--json", bench_json, "Print one JSON object");
-
-  std::string metrics_a, metrics_b, metrics_window = "gaussian";
-  bool metrics_json_out = false;
-  auto* metrics_cmd = app.add_subcommand("metrics", "MSE, PSNR and SSIM of two images of equal size");
-  metrics_cmd->add_option("a", metrics_a, "First image")->required();
-  metrics_cmd->add_option("b", metrics_b, "Second image")->required();
-  metrics_cmd->add_option("--ssim-window", metrics_window, "SSIM window: 'gaussian' (11x11, sigma 1.5) or '8x8'")
-      ->check(CLI::IsMember({"gaussian", "8x8"}))
-      ->capture_default_str();
-  metrics_cmd->add_flag("--json", metrics_json_out, "Print one JSON object");
-
+  RenderCommand render_c;
+  CompareCommand compare_c;
+  BenchCommand bench_c;
+  MetricsCommand metrics_c;
+  const CLI::App* render_cmd = add_render_command(app, render_c);
+  const CLI::App* compare_cmd = add_compare_command(app, compare_c);
+  const CLI::App* bench_cmd = add_bench_command(app, bench_c);
+  add_metrics_command(app, metrics_c);
   return run_tool("trisim", app, argc, argv, [&]() -> int {
-    if (*render_cmd) {
-      const Triangulation tri = read_tri_file(render_req.input);
-      const Rendered r = render(tri, render_req);
-      write_png(render_output, r.image);
-      std::fprintf(stderr, "trisim: %s %dx%d with %s (%s) in %.1f ms\n", render_output.c_str(), r.image.width,
-                   r.image.height, render_req.method.c_str(), render_req.engine.c_str(), r.ms);
-      return exit_ok;
-    }
-    if (*bench_cmd) {
-      const Triangulation tri = read_tri_file(bench_req.input);
-      std::function<int()> once;  // renders one frame, returns its pixel count
-      std::optional<CoreRenderer> core_renderer;
-      CoreFrame frame;
-      std::vector<std::uint8_t> blob;  // read in place by the core: outlives core_renderer
-      if (bench_req.engine == "core") {
-        blob = pack_blob(tri, parse_core_method(bench_req.method), bench_req.input);
-        core_renderer.emplace(blob, core_options(tri, bench_req), bench_req.input);
-        once = [&] {
-          core_renderer->render(frame);  // tiles delivered through the sink into a frame
-          return frame.width * frame.height;
-        };
-      } else {
-        once = [&] {
-          const Image image = render(tri, bench_req).image;
-          return image.width * image.height;
-        };
-      }
-      int pixels = once();  // warm-up
-      pixels = once();
-      // Wall time per frame, and this thread's CPU time (less disturbed by other processes).
-      auto thread_cpu_ms = [] {
-        timespec t{};
-        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-        return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-      };
-      std::vector<double> ms, cpu_ms;
-      const auto start = std::chrono::steady_clock::now();
-      while (true) {
-        const double c0 = thread_cpu_ms();
-        const auto t0 = std::chrono::steady_clock::now();
-        pixels = once();
-        const auto t1 = std::chrono::steady_clock::now();
-        cpu_ms.push_back(thread_cpu_ms() - c0);
-        ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
-        const double elapsed = std::chrono::duration<double>(t1 - start).count();
-        if (bench_runs ? int(ms.size()) >= bench_runs : (ms.size() >= 200 || (ms.size() >= 5 && elapsed > 2.0))) break;
-      }
-      auto median_of = [](std::vector<double> v) {
-        std::sort(v.begin(), v.end());
-        return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-      };
-      const double median = median_of(ms), cpu_median = median_of(cpu_ms);
-      const double fastest = *std::min_element(ms.begin(), ms.end());
-      const double mpix = pixels / (median * 1e-3) * 1e-6;
-      if (bench_json) {
-        nlohmann::json j;
-        j["method"] = bench_req.method;
-        j["engine"] = bench_req.engine;
-        j["runs"] = ms.size();
-        j["pixels"] = pixels;
-        j["ms_median"] = median;
-        j["ms_min"] = fastest;
-        j["cpu_ms_median"] = cpu_median;
-        j["mpix_per_s"] = mpix;
-        if (core_renderer) {
-          j["tile"] = bench_req.tile;
-          j["format"] = bench_req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : bench_req.format;
-          j["ram_bytes"] = core_renderer->tile_buffer_bytes() + core_renderer->workspace_bytes();
-        }
-        std::printf("%s\n", j.dump().c_str());
-      } else {
-        std::printf("%s %s: median %.3f ms per frame over %zu runs (CPU %.3f ms, fastest %.3f ms), %.1f Mpixel/s\n",
-                    bench_req.method.c_str(), bench_req.engine.c_str(), median, ms.size(), cpu_median, fastest, mpix);
-      }
-      return exit_ok;
-    }
-    if (*compare_cmd) {
-      const Triangulation tri = read_tri_file(compare_req.input);
-      if (compare_methods.empty()) compare_methods = {"bilinear"};
-      if (std::find(compare_methods.begin(), compare_methods.end(), "all") != compare_methods.end())
-        compare_methods = method_names();
-      const SsimOptions so = ssim_options(compare_window);
-      std::size_t vertices = 0, triangles = 0;
-      for (const Mesh& mesh : tri.layers) vertices += mesh.vertex_count(), triangles += mesh.triangles.size();
-      if (!compare_json)
-        std::printf("%-14s %-10s %10s %10s %9s %10s\n", "method", "engine", "mse", "psnr_db", "ssim", "ms");
-      Image original;
-      for (const std::string& method : compare_methods) {
-        RenderRequest req = compare_req;
-        req.method = method;
-        const Rendered r = render(tri, req);
-        if (original.pixels.empty()) original = load_original(compare_original, tri, r.image.width, r.image.height);
-        const Metrics m = compare_images(r.image, original, so);
-        int max_diff_ref = -1;
-        double psnr_ref = 0;
-        if (req.engine == "core") {
-          RenderRequest ref = req;
-          ref.engine = "reference";
-          const Image reference = render(tri, ref).image;
-          max_diff_ref = 0;
-          for (std::size_t i = 0; i < reference.pixels.size(); ++i)
-            max_diff_ref = std::max(max_diff_ref, std::abs(int(reference.pixels[i]) - int(r.image.pixels[i])));
-          psnr_ref = psnr(r.image, reference);
-        }
-        if (!compare_save.empty()) write_png(compare_save + "/" + method + ".png", r.image);
-        if (compare_json) {
-          nlohmann::json j = metrics_json(m, so);
-          j["method"] = method;
-          j["engine"] = req.engine;
-          j["variant"] = req.variant;
-          j["ms"] = r.ms;
-          j["width"] = r.image.width;
-          j["height"] = r.image.height;
-          j["vertices"] = vertices;
-          j["triangles"] = triangles;
-          if (max_diff_ref >= 0) {
-            j["max_abs_diff_vs_reference"] = max_diff_ref;
-            j["psnr_vs_reference"] = is_identical_psnr(psnr_ref) ? nlohmann::json(nullptr) : nlohmann::json(psnr_ref);
-          }
-          std::printf("%s\n", j.dump().c_str());
-        } else {
-          std::printf("%-14s %-10s %10.4f %10.4f %9.6f %10.3f\n", method.c_str(), req.engine.c_str(), m.mse,
-                      is_identical_psnr(m.psnr) ? INFINITY : m.psnr, m.ssim, r.ms);
-          if (max_diff_ref >= 0)
-            std::printf("%-14s %-10s max |core - reference| %d, PSNR vs reference %.2f dB\n", "", "", max_diff_ref,
-                        is_identical_psnr(psnr_ref) ? INFINITY : psnr_ref);
-        }
-        std::fflush(stdout);
-      }
-      if (!compare_json)
-        std::printf("# %zu vertices, %zu triangles; SSIM %s\n", vertices, triangles,
-                    so.window == SsimWindow::gaussian11 ? "Gaussian 11x11, sigma 1.5" : "uniform 8x8");
-      return exit_ok;
-    }
-    const Image a = read_image(metrics_a);
-    Image b = read_image(metrics_b);
-    if (a.channels == 1 && b.channels == 3) b = to_grey(b);
-    Image a2 = (a.channels == 3 && b.channels == 1) ? to_grey(a) : a;
-    if (a2.width != b.width || a2.height != b.height)
-      throw DataError(metrics_b + ": expected an image of " + std::to_string(a2.width) + "x" +
-                      std::to_string(a2.height) + " like " + metrics_a + ", found " + std::to_string(b.width) + "x" +
-                      std::to_string(b.height));
-    const SsimOptions so = ssim_options(metrics_window);
-    const Metrics m = compare_images(a2, b, so);
-    if (metrics_json_out) std::printf("%s\n", metrics_json(m, so).dump().c_str());
-    else print_metrics(m, so);
-    return exit_ok;
+    if (*render_cmd) return run_render(render_c);
+    if (*bench_cmd) return run_bench(bench_c);
+    if (*compare_cmd) return run_compare(compare_c);
+    return run_metrics(metrics_c);
   });
 }
