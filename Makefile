@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tristream: every target installs what it needs first (tools/install-deps.sh), then builds.
 #   make run     build the tools only, then render the demo data with every method into out/ and print a table
 #   make test    build, then run every test through ctest

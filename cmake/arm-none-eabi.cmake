@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # CMake toolchain for arm-none-eabi-gcc (Debian gcc-arm-none-eabi + libstdc++-arm-none-eabi-newlib).
 # TRISTREAM_ARM_FLAGS selects the CPU: the default is the Cortex-M4 firmware target; the qemu
 # run of the golden test uses an A-profile CPU (firmware_core/cross/run-golden-qemu.sh).

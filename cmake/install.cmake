@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake --install: component "core" (the library as libtristream.a, its headers, the CMake
 # package tristream::core with its version file, and tristream.pc), component "tools" (trisim,
 # tripack, triencode). Consumers: find_package(tristream CONFIG) or pkg-config tristream.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Runs the examples and checks what their panel shows against trisim's run of the same core:
 # display_bands and display_dma (two band buffers, DMA simulated: a buffer written during its transfer fails) must equal `trisim render --engine core` of the whole image (RGB565 big-endian,
 # dithered; the pixels do not depend on the tiling), display_zoom the 320 x 240 crop at (470, 110)

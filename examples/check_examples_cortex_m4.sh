@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Compiles the examples and their generated blobs for Cortex-M4 with arm-none-eabi-gcc as C99,
 # -Wall -Wextra -Wpedantic -Werror (objects only: a board supplies display.h's driver and links).
 # Usage: check_examples_cortex_m4.sh ARM_GCC SOURCE_DIR EXAMPLES_BUILD_DIR

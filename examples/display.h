@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The display the examples draw on, as an SPI panel driver would offer it (ST7789, ILI9341):
    choose a window of the panel, then stream the window's pixels row by row, RGB565 high byte
    first. On a board these are the driver's calls; on the host, host_display.c keeps the panel's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A picture on an SPI panel without a framebuffer: the core renders the blob in bands of 16 rows
    into one static band buffer, and each band goes to the panel as soon as it is ready.
 

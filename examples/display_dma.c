@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Double buffering for a DMA display pipeline: the core draws each 16-row band into one of two
    static band buffers while the DMA engine sends the band before from the other, in one
    ts_render_frame call (the tiles alternate between ts_buffers.tile[0] and tile[1]).

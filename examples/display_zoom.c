@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A 320 x 240 panel showing part of a larger picture, zoomed: the core renders the image at 1.25
    times its size (960 x 640 output pixels) but only the 320 x 240 viewport the panel shows, in
    bands of 16 rows of the viewport's width. Nothing outside the viewport is computed.

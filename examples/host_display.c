@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The host's stand-in for an SPI panel (display.h): the pixels the panel would show, in memory,
    written out as a PPM. A board has no such copy of the frame: that is what the core avoids. */
 #include <stdio.h>

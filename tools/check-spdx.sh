@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Lists the source files (C, C++, CMake, shell, Python, Makefiles; scripts by their #! line) tracked by git that lack a
+# Lists the source files (C, C++, assembly, linker scripts, CMake, shell, Python, Makefiles; scripts by their #! line) tracked by git that lack a
 # "SPDX-License-Identifier: MIT" line in their first five lines, and exits 1 if there is any.
 # Data, documentation and generated files are not checked.
 # Usage: tools/check-spdx.sh [REPO_DIR]   (default: the repository this script is in)
@@ -12,7 +12,7 @@ missing=0
 checked=0
 while IFS= read -r -d '' file; do
   case "$file" in
-    *.c | *.h | *.cpp | *.hpp | *.cc | *.cmake | */CMakeLists.txt | CMakeLists.txt | *.sh | *.py | Makefile | */Makefile | *.mk) ;;
+    *.c | *.h | *.cpp | *.hpp | *.cc | *.S | *.ld | *.cmake | */CMakeLists.txt | CMakeLists.txt | *.sh | *.py | Makefile | */Makefile | *.mk) ;;
     *)  # scripts without an extension, such as .ci/run, by their #! line
       [ -f "$file" ] && head -n 1 "$file" | grep -Eq '^#!.*(sh|python)' || continue ;;
   esac

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Installs the Debian packages a task needs, and only those that are missing.
 # Usage: tools/install-deps.sh [build|fuzz|cross|bench|mcu|experiments|browser|all]...   (default: build)
 # browser: headless Chromium, for the check of the report page (make experiments-quick).

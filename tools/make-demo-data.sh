@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Regenerates the demo triangulations in data/demo from data/demo/kodim23.png with triencode
 # (Kodak Lossless True Color Image Suite, free for any use). Deterministic: the same bytes
 # every run. Usage: tools/make-demo-data.sh BIN_DIR

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The main job of `make run`: renders every demo triangulation in data/demo with every method
 # (reference engine) and with the firmware core (bilinear, zienkiewicz) into OUT_DIR/<name>/
 # [core/]<method>.png and prints, per triangulation, a table of method, engine,

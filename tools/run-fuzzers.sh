@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Runs each libFuzzer binary in BIN_DIR for SECONDS seconds, starting from a scratch copy of
 # its shipped corpus (tests/fuzz/corpus/<kind>), so the repository is never modified.
 # Usage: tools/run-fuzzers.sh BIN_DIR SECONDS

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # cmake -DIN=<blob.bin> -DOUT=<file.c> -P bin_to_c.cmake: the blob as `const uint8_t golden_blob[]`.
 file(READ ${IN} hex HEX)
 string(LENGTH "${hex}" n)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Cross-compiles firmware_core for Cortex-M4 (arm-none-eabi-g++ -Os -fno-exceptions -fno-rtti),
 # links a firmware-shaped demo, prints text/data/bss, and fails if any heap allocator of the C
 # or C++ runtime was linked (the C allocation functions, reentrant or not, and the C++

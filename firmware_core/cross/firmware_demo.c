@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Firmware-shaped use of the core on Cortex-M4: a blob in flash, static tile buffer and
    workspace, tiles pushed to a display stub. Links no allocator (checked by build.sh). */
 #include <stddef.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libstdc++'s random_device refers to getentropy, which newlib's semihosting library lacks;
    Catch2 links it in. The test never asks for entropy. */
 #include <errno.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Builds the golden-image test as a 32-bit ARM binary (arm-none-eabi, Cortex-A7, newlib
 # semihosting) and runs it under qemu-arm: the pixels must match the same PNGs as on x86-64.
 # Usage: firmware_core/cross/run-golden-qemu.sh [build-dir]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The active set of a layer: the triangles that meet the current band, as a ring bitmap in the
 // caller's workspace.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The bilinear (linear per triangle) shader: values stepped by their exact per-pixel gradients.
 #include <stdint.h>

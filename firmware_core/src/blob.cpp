@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tristream/blob.h"
 
 #include "tristream/detail/bytes.h"

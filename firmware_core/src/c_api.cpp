@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "tristream/tristream.h"
 
 #include "tristream/render.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Layered blobs (one mesh per channel): each layer's channel goes into an int16 q4 scratch of the
 // tile (3 values per pixel), which is converted to the pixel format once all layers are drawn.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // What a render call resolves from its parameters before drawing: output size, viewport, tile
 // size, pixel format and the position mapping, with the checks that reject bad parameters.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The mapping of domain positions to output positions when the output has another size than the
 // triangulation: corner to corner, rounded to nearest, in position_fx.

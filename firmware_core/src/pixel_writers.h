@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Pixel writers: how a shader's values become pixels of the tile.
 //

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Rasterization of one triangle inside a clip rectangle: the scan path for small triangles
 // (scan_path.h), span bounds stepped row by row for the others, explicit corners of boundary

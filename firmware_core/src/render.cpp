@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The public render calls. The private headers beside this file (one concept each) are included by
 // this translation unit only, and their internals have internal linkage (an unnamed namespace
 // inside detail): GCC then inlines the per-pixel code as it did when it was one file (with external

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The scan path: small triangles (pixel box below scan_max_extent each way, no explicit corner) take
 // int32 edge values and find each row's covered columns as a mask over the box (RowMasks), instead

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // RowMasks without SIMD: the covered columns of a scan-path box row, column by column. The SSE2
 // alternative is scan_row_masks_sse2.h; both give the same masks.

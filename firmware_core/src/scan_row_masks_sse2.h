@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // RowMasks for SSE2 (x86-64 hosts): the covered columns of a scan-path box row, four columns at a
 // time and without branches. The scalar alternative is scan_row_masks_scalar.h; both give the same

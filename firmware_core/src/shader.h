@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The per-triangle input of a shader, and the Shader interface.
 //

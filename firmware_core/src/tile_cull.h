@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The tile cull: which live triangles meet a tile's columns, from the raw vertex x alone.
 #include <stddef.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // One tile of a frame: the background, then each layer's live triangles that meet the tile with the
 // shader of the blob's method and the writer of the pixel format; the tile function per format.

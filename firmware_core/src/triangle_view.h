@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Reading triangles and vertex values from a validated blob layer: a triangle's vertices in
 // output positions, its rows, and the values of a vertex.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The caller's workspace: [alignment padding][channel scratch][active-set bitmaps, one equal share
 // per layer].

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The Zienkiewicz (cubic) shader: values from integer barycentrics per pixel, or forward
 // differenced along long rows of large triangles.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Host-side error types. Tools map each to a distinct exit code (sysexits.h values).
 #include <stdexcept>

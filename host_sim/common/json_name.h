@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // File names in JSON output. A POSIX name is any bytes, JSON text is UTF-8 (nlohmann::json throws
 // on anything else when it dumps).

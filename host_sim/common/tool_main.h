@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The shared frame of every command-line tool: runs the body, prints diagnostics on stderr
 // as "<tool>: <message>" and maps each error type to its exit code (common/errors.h). Gives every

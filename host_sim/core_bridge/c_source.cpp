@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "core_bridge/c_source.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The C form of a blob (tripack -o x.c): x.c holds the bytes and a ts_blob_descriptor, x.h
 // declares it, refuses to compile against a core that cannot render it, and gives compile-time

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The stack the core needs on a Cortex-M4, for the RAM figures (tripack, docs/FIXED_POINT.md):
 // per method, the largest high-water mark `make bench-mcu` measured below render()'s caller

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "core_bridge/pack.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The host packer: a Triangulation to the core's blob format (firmware_core/include/tristream/blob.h).
 #include <cstdint>

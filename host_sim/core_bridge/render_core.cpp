@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "core_bridge/render_core.h"
 
 #include <cstring>

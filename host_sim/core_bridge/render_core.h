@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Running the fixed-point core on the host: blob bytes in, a whole frame assembled from the
 // tiles the core delivers, plus the conversions trisim needs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "encoder/encoder.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The encoder: an image in, a triangulation out (greedy insertion, encoder/greedy.h).
 #include <cstddef>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Greedy insertion (Garland and Heckbert 1995, algorithm III): an incremental Delaunay
 // triangulation of pixel positions; each triangle keeps one candidate pixel in a priority

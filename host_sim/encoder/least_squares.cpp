@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "encoder/least_squares.h"
 
 #include <algorithm>

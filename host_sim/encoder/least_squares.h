@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Least-squares vertex values: for fixed positions and triangles, the values that minimise
 // the squared error of the linear interpolant over every pixel of the domain.

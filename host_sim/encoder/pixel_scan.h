@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The pixels of a triangle with integer vertices, for triangles that tile the rectangle
 // [0, W-1] x [0, H-1] (the encoder's meshes): every pixel of the rectangle is visited by

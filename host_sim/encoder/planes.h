@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The encoder's working copy of an image: float channels in the encoding colour space.
 #include <cstddef>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // A post-pass of the encoder: vertices move to neighbouring pixels where that lowers the
 // squared error of the linear interpolant, the mesh stays a Delaunay triangulation and the

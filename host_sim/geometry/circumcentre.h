@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Circumcentres of triangles in double precision (no exact arithmetic: callers that decide
 // with them, such as incircle tests, use geometry/predicates.h instead). Both forms are finite

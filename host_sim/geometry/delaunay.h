@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Delaunay triangulation with exact predicates (geometry/predicates.h): a one-shot function
 // and an incremental builder (Bowyer-Watson with ghost triangles) that reports which

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Whether triangles form a mesh the renderers can draw: interiors that do not overlap, and edge to
 // edge (no vertex inside another triangle's edge). O(n log n) for n triangles of any shape.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Exact geometric predicates on double coordinates: a floating-point filter, then an exact
 // fallback in expansion arithmetic (Shewchuk, "Adaptive precision floating-point arithmetic

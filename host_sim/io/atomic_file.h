@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Whole-file writes that never leave a half-written file behind, and whole-file reads with a size limit.
 #include <cstdint>

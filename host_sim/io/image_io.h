@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Image files through stb_image (PNG, JPEG, BMP, PGM/PPM in) and stb_image_write (PNG out).
 #include <cstdint>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Limits the host tools check before they allocate, so that a small hostile input cannot ask for
 // gigabytes (README "Limits"). Each is refused with a message that names it.

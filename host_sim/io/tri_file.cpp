@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "io/tri_file.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Reader and writer of .tri triangulation files (docs/FORMAT.md).
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "metrics/metrics.h"
 
 #include <array>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Full-reference image quality metrics: MSE, PSNR and SSIM of two 8-bit images.
 //

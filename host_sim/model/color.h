@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // JPEG YCbCr (ITU-R BT.601, full range, chroma offset 128), in double precision.
 #include <array>

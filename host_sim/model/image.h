@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // An 8-bit image with interleaved channels, row-major, no padding.
 #include <cstddef>

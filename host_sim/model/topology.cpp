@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "model/topology.h"
 
 #include <vector>

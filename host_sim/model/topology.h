@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Adjacency of a mesh: the neighbour across each triangle edge and the triangles around
 // each vertex. Edge e of triangle t joins t.v[e] and t.v[(e + 1) % 3].

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The host-side model of a triangulation-represented image (see docs/FORMAT.md).
 #include <array>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The pixel coverage rule shared by every triangle-based reference method (docs/CONVENTIONS.md):
 // output pixel (i, j) samples the domain point (i * sx, j * sy). A sample point strictly

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The triangulated domain seen from the output pixels, for the methods that do not walk
 // triangles themselves (natural, voronoi): which triangle owns each pixel under the coverage

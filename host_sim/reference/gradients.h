@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Vertex gradients estimated from the surface (x, y, value) as thesis Eq. 3.2 (docs/CONVENTIONS.md):
 // the unit normals of the triangles around a vertex, weighted by their areas, summed;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "reference/render.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Double-precision reference renderers of every interpolation method (docs/CONVENTIONS.md).
 #include <cstdint>

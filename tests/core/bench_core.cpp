@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Speed of the fixed-point core on the host: 512 x 512 RGB frames assembled from the tiles the
 // sink receives. Prints ms per frame (real and CPU time) and Mpixel/s (counter "Mpix/s"), then a summary
 // table from CPU time: bilinear and zienkiewicz side by side with their ratio, and the targets of issue 3.

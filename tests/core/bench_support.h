@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Benchmark scenes: 512 x 512 RGB triangulations of about N triangles, vertex values sampled from
 // the Kodak demo photograph (data/demo/kodim23.png), vertices random on the pixel lattice.

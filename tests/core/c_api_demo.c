@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A C program that renders a blob compiled in by tripack (-o demo_blob.c) through the C API,
    with static buffers only. Exit 0 when every tile arrived and every pixel was written. */
 #include <stdio.h>

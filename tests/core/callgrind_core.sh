@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Instructions per pixel of the core (valgrind --tool=callgrind, counted inside
 # tristream::core::render only) for the benchmark matrix of issue 3: 512 x 512, about 2,000,
 # 4,000, 20,000 and 40,000 triangles, bilinear and zienkiewicz, 32x32 tiles and full frame,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Compiles a file that includes the public C headers (tristream/tristream.h, version.h) alone and uses its
 # names, once per language mode: C89 through C2x and C++98 through C++20, each with
 # -Wall -Wextra -pedantic -Werror. Fails naming the first mode that does not compile.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // core_frames <triangles> <bilinear|zienkiewicz> <tile, 0 = full frame> <rgb888|rgb565le> <frames>:
 // renders the 512 x 512 benchmark scene (bench_support.h) repeatedly, for instruction counts
 // under callgrind (tests/core/callgrind_core.sh counts only inside tristream::core::render).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Helpers of the core tests: meshes with sub-pixel vertices, core renders at any tiling.
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The exact integer helpers of the core's setup: the reciprocal divider must give the same
 // quotients as plain division, bit for bit, over the whole range the setup uses.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Blob validation: every kind of damage is reported with its status and byte offset, and the
 // core never reads outside the bytes it is given (run under ASan: the blob is copied into a
 // buffer of exactly its size).

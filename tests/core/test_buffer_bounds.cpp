@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The compile-time buffer bounds of tripack's generated header (core_bridge/c_source.h): for many
 // output sizes up to the given one, viewports of them and tile sizes up to the given one, the
 // core's own tile_buffer_size and workspace_size never exceed them, and rendering with buffers of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Coverage properties of the core: every pixel whose sample point lies in the domain is
 // written exactly once, whatever the mesh, vertex order, winding or tiling.
 #include <catch2/catch.hpp>

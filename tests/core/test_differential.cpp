@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Differential tests: the fixed-point core against the double-precision reference renderer.
 // Tolerances (per pixel and channel): bilinear 1, zienkiewicz 2 (issue 3).
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Pixel formats, dithering, colour conversion and viewport placement, checked pixel by pixel
 // against independent expectations.
 #include <catch2/catch.hpp>

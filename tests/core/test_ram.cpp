@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The RAM figure of issue 3: a 512 x 512 RGB565 frame in 32 x 32 tiles from a 20,000-vertex
 // triangulation needs at most 8 KiB besides the blob (tile buffer + workspace), and the core
 // renders with exactly the workspace it reports.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The core never allocates: open, size and render run under counting replacements of
 // operator new and malloc, and the counters must not move.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Forward differencing of the zienkiewicz cubic along rows (detail/interpolate.h): the helpers
 // against 128-bit arithmetic, every forward-differenced value against the exact value of the same
 // cubic (within the bound of docs/FIXED_POINT.md), and values independent of where a span starts.

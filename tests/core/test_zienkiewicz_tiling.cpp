@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Zienkiewicz rows long enough for forward differencing and its restarts every 64 pixels (large
 // triangles of sparse meshes): the output must be bit-identical for every tiling, whatever tile
 // edge cuts a row inside a restart chunk.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Figures and names the documentation quotes, checked against the code they describe.
 
 Run: /usr/bin/python3 -m unittest discover -s tests/docs -v (ctest runs it as test_docs).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Encoder speed: `bench_encoder` prints the time to encode a 512x512 photograph (grey and
 // colour) to 2,621 and 10,000 vertices, with and without the relocation post-pass; the
 // issue's target is 10,000 vertices under 1 s. The photographs come from $TRISTREAM_IMAGES

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Quality of the encoder (issue 4): prints a Markdown table of PSNR / SSIM (Wang 2004
 // Gaussian 11x11, metrics.h default) of bilinear and zienkiewicz reference renders, for
 // adaptive sampling (plain Garland-Heckbert, improved, improved + least squares with and

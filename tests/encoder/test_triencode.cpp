@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Runs the triencode executable: exit codes, messages, byte-identical outputs.
 #include <sys/wait.h>
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Unit tests of the experiment driver's helpers (tools/experiments). Run with
 /usr/bin/python3 -m unittest discover -s tests/experiments  (or directly). Tests that need the
 built tools look for them in $TRISTREAM_BIN (default build/bin) and skip when they are absent."""

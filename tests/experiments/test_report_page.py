@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """The browser check of the report page (tools/experiments/check_page.py) in headless Chromium:
 it passes a page whose images all decode and fails one with a broken image, a script error or a
 figure file missing from the page. Skips when chromium is not installed (tools/install-deps.sh

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Fuzz target of the core: blob validation, then (for blobs that pass) sizing and rendering
 // with parameters taken from the first 4 bytes. Validation must reject or accept without
 // reading outside the input; rendering a validated blob must stay inside its buffers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Fuzz target of the mesh check (geometry/mesh_check.h): points on a 16 x 16 lattice (many
 // collinear and touching cases) and triangles from the input's bytes; find_mesh_defect must
 // agree with the brute force of every pair (tests/support/mesh_brute_force.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Fuzz target that renders: the first 16 bytes of the input choose the render parameters (pixel
 // format, dithering, tile size, output size, viewport, the sizes of the tile buffer and of the
 // workspace, background), the rest is the blob. Rendering must stay inside its buffers (ASan,

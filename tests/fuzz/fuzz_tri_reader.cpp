@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // libFuzzer target: the .tri reader must accept or reject any bytes with a DataError, and a
 // file it accepts must write back and read again to the same text.
 #include <cstdint>

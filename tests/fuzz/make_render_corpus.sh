@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Remakes tests/fuzz/corpus/render: each .tri of tests/fuzz/corpus/tri packed by tripack for both
 # core methods, behind a few 16-byte parameter headers (the layout is in fuzz_render.cpp).
 # Usage: tests/fuzz/make_render_corpus.sh BIN_DIR

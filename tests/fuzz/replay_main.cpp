@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Replays every file of the given corpus directories (or files) through a fuzz target's
 // LLVMFuzzerTestOneInput, so the corpus runs as an ordinary test without libFuzzer.
 #include <cstdint>

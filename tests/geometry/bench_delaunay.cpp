@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Delaunay construction speed: `bench_delaunay` prints the time per triangulation.
 #include <benchmark/benchmark.h>
 

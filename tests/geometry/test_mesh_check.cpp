@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // find_mesh_defect against a brute-force check of every pair, on valid and damaged meshes.
 #include <catch2/catch.hpp>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The golden renders: blobs packed from the .tri files here, rendered by the core with these
 // parameters, kept as PNG. Shared by the host test, the ARM (qemu) run and update_golden.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Golden images: every case rendered by the core must match its PNG in tests/golden bit for
 // bit. A mismatch writes <name>.diff.png (changed pixels white on black) to the working
 // directory. The same source runs on x86-64 and, cross-compiled, as a 32-bit ARM binary under

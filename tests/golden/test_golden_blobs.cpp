@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The golden blobs are what the packer makes of the golden .tri files today (so the golden
 // test cannot silently run on stale blobs).
 #include <catch2/catch.hpp>

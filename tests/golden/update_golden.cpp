@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // update_golden: the explicit update command of the golden images. Repacks every golden blob
 // from its .tri file and re-renders every case into its PNG (tests/golden/README.md).
 #include <cstdio>

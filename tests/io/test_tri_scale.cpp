@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Validation of large meshes of awkward shapes is near-linear (issue 17 item 5). CTest gives this
 // test a TIMEOUT that a quadratic check (the fan below has 200,000 triangles whose bounding boxes
 // all overlap) could not meet. TRISTREAM_SCALE_TRIANGLES sets the fan's size (default 200000);

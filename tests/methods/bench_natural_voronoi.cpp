@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Speed of the natural and voronoi reference renderers at 512x512 from about 13,000 vertices
 // (the issue 5 target: under 100 ms each on one core). Prints figures; not a test.
 //   build*/bin/bench_natural_voronoi [more.tri ...] [--benchmark_* flags]

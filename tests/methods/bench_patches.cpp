@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Speed of the patch renderers (bezier, coons: default exact variant) and clough-tocher at
 // 512x512 from about 13,000 vertices (issue 5 target for bezier and coons: under 100 ms each
 // on one core), beside bilinear, which the patch methods run first as their pre-fill and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Helpers shared by the tests of the reference methods.
 #include <cmath>

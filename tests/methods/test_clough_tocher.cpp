@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Clough-Tocher: interpolation, polynomial precision and C1 continuity.
 #include <catch2/catch.hpp>
 

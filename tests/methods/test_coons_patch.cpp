@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Coons patch of one triangle and its neighbours (thesis §3.4, docs/CONVENTIONS.md).
 #include <catch2/catch.hpp>
 

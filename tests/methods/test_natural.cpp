@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Natural-neighbour (Sibson) coordinates against an independent brute-force area computation,
 // and the properties of the interpolant (partition of unity, linear precision, vertex values).
 #include <catch2/catch.hpp>

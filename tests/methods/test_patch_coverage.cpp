@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Coverage of the exact variant of the patch methods (bezier, coons; patch/raster.h), checked
 // patch by patch against an independent inversion of the patch: multi-start Newton in long
 // double on the patch rebuilt from its control points (Bernstein form, Coons boundary curves),

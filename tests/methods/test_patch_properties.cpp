@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Properties shared by the patch methods (bezier, coons), in both variants, and the exact
 // micro-triangle rasterizer they use.
 #include <catch2/catch.hpp>

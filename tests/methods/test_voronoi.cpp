@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Piecewise linear interpolation on the Voronoi diagram: the diagram against brute force, the
 // polygon coordinates, and the renderer against an independent recomputation.
 #include <catch2/catch.hpp>

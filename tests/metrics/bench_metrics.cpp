@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Speed of the metrics on a 768x512 RGB pair (the Kodak size). Prints figures; not a test.
 //   build*/bin/bench_metrics
 #include <benchmark/benchmark.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Expected metric values for tests/metrics/test_metrics.cpp, computed by scikit-image.
 
 Run with Debian's python (python3-skimage):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Metrics against scikit-image (expected values from make_expected.py) and by construction.
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The ways a firmware project takes the core, each built and run on a blob:
 #   install PREFIX                 cmake --install the core component of BUILD_DIR into PREFIX
 #   find-package PREFIX WORK       consumer/ configured with find_package(tristream CONFIG) from PREFIX

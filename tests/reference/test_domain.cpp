@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The domain seen from the pixels (reference/domain.h): the owner of each pixel equals the
 // coverage rule's, and the tests that let natural and voronoi skip work are right.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The O(n^2) definition find_mesh_defect (geometry/mesh_check.h) is tested against: every pair of
 // triangles, and every used vertex against every edge.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Random triangulations for property tests: vertices on lattice points of a W x H image
 // (the four corners always included), Delaunay-triangulated, then optionally made

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Where tests and benchmarks find photographs. The repository ships one, the demo's
 // data/demo/kodim23.png. More come from the directory named by the environment variable

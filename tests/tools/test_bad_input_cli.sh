@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Bad input, faults and scale (issue 17) across trisim, tripack and triencode: limits checked
 # before allocating, non-regular inputs, encoder outputs its reader accepts, lost stdout.
 # Usage: test_bad_input_cli.sh BIN_DIR

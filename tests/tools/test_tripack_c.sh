@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # tripack -o x.c: the generated C compiles (C89 and C99, -Wall -Wextra -pedantic -Werror) and
 # links with the core for awkward output names (a keyword, a quote, a leading digit, the C API's
 # prefix) and with --symbol; the header refuses, at compile time, a core without the blob's

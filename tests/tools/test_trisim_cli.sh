@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Command-line contract of trisim: outputs, JSON keys, diagnostics and exit codes.
 # Usage: test_trisim_cli.sh BIN_DIR SOURCE_DIR
 set -uo pipefail

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The meshes of the bench-mcu matrix, by name:
 //   kodim23  data/demo/kodim23.rgb.tri (768 x 512, 7,964 triangles)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The memory interface between the bench-mcu harness (host) and the benchmark program it runs on
    the emulated Cortex-M4 (m4/bench_main.cpp). The harness writes a bench_params into the
    program's bench_params_in, calls bench_prepare() and then bench_render(), and reads the

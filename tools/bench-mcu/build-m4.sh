@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Configures and builds the Cortex-M4 side of bench-mcu (tools/bench-mcu/m4) in <dir>, with the
 # project's arm-none-eabi toolchain file. Usage: build-m4.sh <dir> [target...] (default: all).
 set -euo pipefail

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "cycle_model.h"
 
 #include <capstone/capstone.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The Cortex-M4 cycle model of bench-mcu (docs/MCU_BENCH.md has the table and its sources): each
 // Thumb-2 instruction gets a static cost from the Technical Reference Manual's instruction timing

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // A 32-bit little-endian ARM ELF executable as the harness needs it: the loadable segments (at
 // their run addresses), the symbols, and the Thumb code ranges (from the $t / $d mapping symbols).

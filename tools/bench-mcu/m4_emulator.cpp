@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "m4_emulator.h"
 
 #include <unicorn/unicorn.h>

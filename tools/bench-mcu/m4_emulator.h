@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // An emulated Cortex-M4 (unicorn, UC_MODE_THUMB | UC_MODE_MCLASS, CPU model Cortex-M4) running a
 // benchmark program, counting instructions and modelled cycles (cycle_model.h) with a hook per

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // bench_mcu: runs firmware_core on an emulated Cortex-M4 (m4_emulator.h) and reports
 // instructions, modelled cycles, stack, RAM and flash per configuration, with the pixels checked
 // against the host build of the core. docs/MCU_BENCH.md describes the model and the matrix.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # make bench-mcu: cross-builds the Cortex-M4 programs (build-m4.sh) into <build>/bench-mcu-m4 and
 # runs the whole matrix with bench_mcu (one JSON line per configuration, then a summary). Extra
 # arguments go to `bench_mcu run`, e.g. a subset: --meshes kodim23 --opts O2 --dither off.

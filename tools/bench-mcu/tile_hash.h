@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A 64-bit digest of the tiles a render delivers, computed the same way by the benchmark program
    on the emulated Cortex-M4 and by the host build of the core: each tile's rectangle, then its
    rows' bytes (width * bytes per pixel from each row). Two independent 32-bit hashes (FNV-1a, and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Charts of the report, drawn by matplotlib (Debian's python3-matplotlib) into PNG files."""
 import io
 from collections import defaultdict

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Checks that a report page renders in a real browser: headless Chromium (Debian's chromium)
 loads a copy of the page with a probe script, and the page passes when no script or resource
 error was raised and every <img> decoded to a non-zero natural size.

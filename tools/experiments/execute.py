@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Turning a plan into cached results: derived inputs, encodings, quality runs and timing runs."""
 import json
 import os

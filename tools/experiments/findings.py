@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Statements of where the results agree or disagree with the thesis's conclusions, computed from
 the result rows. The thesis's claims are quoted; every number and verdict comes from the data."""
 from collections import defaultdict

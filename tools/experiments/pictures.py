@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Pictures of the report: the triangulation over the image, the Voronoi diagram, each method's
 render and its absolute-error heat map, full size and as a zoomed detail."""
 from pathlib import Path

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """What the quick and the full experiment sets contain.
 
 Vertex counts follow the thesis (section 6.1.1): 1,000 to 15,000 vertices for a 512x512 image.

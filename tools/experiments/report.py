@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The report: CSV files, charts, pictures and one self-contained index.html."""
 import base64
 import csv

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MIT
 """Reproduces the thesis's chapter 6 (quality and time of the interpolation methods) as a report.
 
 Usage: run_experiments.py BIN_DIR OUT_DIR [--set quick|full] [--force] [--jobs N] [--images DIR]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Running triencode and trisim with a cache of results keyed by their inputs.
 
 Every cached item is keyed by the SHA-256 of a JSON description of everything it depends on:

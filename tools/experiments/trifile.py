@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """A reader of the .tri text format (docs/FORMAT.md) for the report's pictures and analyses.
 
 Only files written by triencode are read here, and trisim has already validated each of them

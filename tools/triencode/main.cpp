@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // triencode: turn an image into a triangulation file by greedy insertion.
 #include <unistd.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // tripack: pack a .tri triangulation into a blob for the fixed-point core (binary or C source),
 // and report the RAM the core needs to render it (tile buffer, workspace and stack).
 #include <CLI/CLI.hpp>

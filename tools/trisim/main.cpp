@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // trisim: render triangulation files, compare renders with originals, measure images.
 #include <CLI/CLI.hpp>
 #include <algorithm>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The packed triangulation ("blob"): a versioned little-endian byte layout made by the host packer
 // (tripack) and read in place by the core. Layout (all offsets from the blob's first byte,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every compile-time knob of the core, with its default. Override by defining the macro before
    this header is included (e.g. -DTS_SUBPIXEL_BITS=4), and build the core and everything that
    includes its headers with the same definitions (the CMake targets carry them); blobs record the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Fixed-point formats of the core, named by format: qI_F / fxI_F hold a value v as v * 2^F in an
 // integer of I + F bits (plus sign). Bit budgets are in docs/FIXED_POINT.md.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Output pixel formats, as bytes in memory (the order a display or file expects).
 #include <stdint.h>

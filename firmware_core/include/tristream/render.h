@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Streaming rendering of a validated blob, band by band and tile by tile, into caller memory.
 #include <stddef.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Result of every fallible core call. Host tools turn these into messages. Each value has a C
 // name in tristream.h (TS_ plus the enumerator in capitals; c_api.cpp checks them): a new status

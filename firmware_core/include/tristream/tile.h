@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // A tile: a view of caller memory holding the pixels of a screen rectangle.
 #include <stdint.h>

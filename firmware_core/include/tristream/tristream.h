@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The C interface of the tristream core: open a blob, size the buffers, render tile by tile.
    Thin wrappers over the C++ API in tristream/render.h; all memory belongs to the caller. */
 #ifndef TRISTREAM_TRISTREAM_H

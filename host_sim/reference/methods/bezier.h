@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Interpolation on the second-degree Bezier triangle patch of each triangle and its three
 // edge neighbours (thesis §3.3, §4.2; docs/CONVENTIONS.md), averaged where patches overlap.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "reference/methods/bilinear.h"
 
 #include "reference/coverage.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Linear interpolation over each triangle (thesis §3.1, "bilinear" in its terms).
 #include "reference/render.h"

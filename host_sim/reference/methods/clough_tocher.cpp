@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "reference/methods/clough_tocher.h"
 
 #include <vector>

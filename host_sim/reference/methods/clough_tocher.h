@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Clough-Tocher interpolation: a C1 piecewise cubic over the split of each triangle at its
 // centroid S into three micro-triangles (V_k, V_k+1, S), each a cubic Bezier triangle. A

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "reference/methods/coons.h"
 
 #include <algorithm>

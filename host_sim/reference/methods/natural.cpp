@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "reference/methods/natural.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Natural-neighbour (Sibson) interpolation (thesis §3.6, §4.4; docs/CONVENTIONS.md).
 //

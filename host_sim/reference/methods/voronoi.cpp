@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "reference/methods/voronoi.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Piecewise linear interpolation on the Voronoi diagram (thesis §3.5, §4.3; docs/CONVENTIONS.md),
 // reproduced as the thesis describes it, weaknesses included:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Zienkiewicz's cubic over each triangle (thesis §3.2, Eq. 3.3 as restored in docs/CONVENTIONS.md),
 // from vertex values and the vertex gradients of reference/gradients.h.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Renders a blob file through the C API in 16-row bands of RGB565 (big-endian) and checks that
    every band arrived in order and every pixel once. Prints the version it was built against.
    Usage: consumer BLOB_FILE. Exit 0 on success. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The benchmark program for the emulated Cortex-M4: renders the blob the harness mapped, with the
 // parameters it wrote (bench_protocol.h), into buffers carved from the RAM between the static
 // data and the stack (bench.ld), and digests every tile in bench_sink. No heap, no start-up code:

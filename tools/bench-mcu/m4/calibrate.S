@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 @ Calibration loops for the bench-mcu cycle model: hand-written Thumb-2 with the instruction and
 @ cycle counts worked out by hand from docs/MCU_BENCH.md's table (P = 2), next to each
 @ instruction. `bench_mcu calibrate` runs every case of calibration_cases (name, function, r0,

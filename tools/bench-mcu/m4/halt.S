@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 @ The address the harness puts in LR before calling into the program: emulation stops when
 @ execution reaches it (uc_emu_start's `until`). The instructions are never executed.
     .syntax unified

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Exact integer helpers of the per-triangle setup (64-bit; never used per pixel).
 #include <stdint.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Little-endian reads of unaligned bytes; compilers turn them into single loads.
 #include <stdint.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Edge functions of a triangle and the per-row span bounds they imply.
 //

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Per-triangle setup and per-pixel stepping of the interpolants. Edge k of a triangle runs from
 // vertex k to vertex k+1; E_k / area2 is the barycentric weight of vertex k+2 (indices mod 3).

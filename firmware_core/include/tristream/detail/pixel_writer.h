@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Turning interpolated channel values (q24_8, unclamped) into output pixels: colour conversion,
 // clamping, rounding, RGB565 packing (with optional Bayer dithering on absolute position).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // The six control points shared by the Bezier and Coons patches of a triangle (docs/CONVENTIONS.md):
 // for triangle (A, B, C) = (v0, v1, v2), P110 = A, P011 = B, P101 = C and the corners are

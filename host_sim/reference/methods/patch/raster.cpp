@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "reference/methods/patch/raster.h"
 
 #include "model/topology.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Private to the patch methods (bezier, coons). Both build, for each triangle with three edge
 // neighbours, a parametric surface (x, y, values)(s, t) and average every surface that lands

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #pragma once
 // Private to the patch methods (bezier, coons): the candidates of the exact variant row by
 // row between a patch's boundary curves, widened around its fold where it has one
