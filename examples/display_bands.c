@@ -52,11 +52,13 @@ int main(int argc, char** argv) {
   params.dither = 1;            /* ordered dithering hides the banding of 5- and 6-bit channels */
 
   /* What this render needs exactly (the static buffers hold the bound for every render). */
-  if (ts_tile_buffer_size(&blob, &params, &band_bytes) != TS_OK || ts_workspace_size(&blob, &params, &workspace_bytes) != TS_OK)
+  if (ts_tile_buffer_size(&blob, &params, &band_bytes) != TS_OK ||
+      ts_workspace_size(&blob, &params, &workspace_bytes) != TS_OK)
     return 1;
-  printf("display_bands: %u x %u in 16-row bands: band buffer %lu bytes (static %lu), workspace %lu bytes (static %lu)\n",
-         (unsigned)kodim23.width, (unsigned)kodim23.height, (unsigned long)band_bytes, (unsigned long)sizeof band_buffer,
-         (unsigned long)workspace_bytes, (unsigned long)sizeof workspace);
+  printf(
+      "display_bands: %u x %u in 16-row bands: band buffer %lu bytes (static %lu), workspace %lu bytes (static %lu)\n",
+      (unsigned)kodim23.width, (unsigned)kodim23.height, (unsigned long)band_bytes, (unsigned long)sizeof band_buffer,
+      (unsigned long)workspace_bytes, (unsigned long)sizeof workspace);
 
   display_init(kodim23.width, kodim23.height);
   s = ts_render(&blob, &params, band_buffer, sizeof band_buffer, workspace, sizeof workspace, send_band, &next_row);

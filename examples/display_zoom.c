@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
   params.tile_height = 16;
   params.format = TS_RGB565_BE;
 
-  if (ts_tile_buffer_size(&blob, &params, &band_bytes) != TS_OK || ts_workspace_size(&blob, &params, &workspace_bytes) != TS_OK)
+  if (ts_tile_buffer_size(&blob, &params, &band_bytes) != TS_OK ||
+      ts_workspace_size(&blob, &params, &workspace_bytes) != TS_OK)
     return 1;
   printf("display_zoom: %dx%d of a 960x640 zoom in %dx16 bands: band buffer %lu bytes (static %lu), workspace %lu "
          "bytes (static %lu)\n",

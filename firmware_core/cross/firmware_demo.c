@@ -16,7 +16,8 @@ volatile uint32_t display_checksum;
 static void send_to_display(void* context, const ts_tile* tile) {
   uint32_t sum = *(uint32_t*)context;
   for (int32_t y = 0; y < tile->rect.y1 - tile->rect.y0; ++y)
-    for (int32_t x = 0; x < 2 * (tile->rect.x1 - tile->rect.x0); ++x) sum = sum * 31u + tile->pixels[y * tile->stride + x];
+    for (int32_t x = 0; x < 2 * (tile->rect.x1 - tile->rect.x0); ++x)
+      sum = sum * 31u + tile->pixels[y * tile->stride + x];
   *(uint32_t*)context = sum;
 }
 

@@ -54,7 +54,8 @@ static_assert(chunked_division_fits(12, 4), "the default configuration divides s
 inline __m128i mullo_lanes(__m128i v, uint32_t k) {
   const __m128i kk = _mm_set1_epi32(int32_t(k));
   const __m128i even = _mm_mul_epu32(v, kk), odd = _mm_mul_epu32(_mm_srli_epi64(v, 32), kk);
-  return _mm_unpacklo_epi32(_mm_shuffle_epi32(even, _MM_SHUFFLE(0, 0, 2, 0)), _mm_shuffle_epi32(odd, _MM_SHUFFLE(0, 0, 2, 0)));
+  return _mm_unpacklo_epi32(_mm_shuffle_epi32(even, _MM_SHUFFLE(0, 0, 2, 0)),
+                            _mm_shuffle_epi32(odd, _MM_SHUFFLE(0, 0, 2, 0)));
 }
 #endif
 

@@ -128,7 +128,8 @@ ts_status ts_render(const ts_blob* blob, const ts_params* params, void* tile_buf
   if (!blob || !sink) return ts_status(core::Status::null_argument);
   if (!convert(params, &p)) return ts_status(core::Status::bad_params);
   SinkAdapter adapter{sink, context};
-  return ts_status(core::render(*view(blob), p, tile_buffer, tile_buffer_size, workspace, workspace_size, forward, &adapter));
+  return ts_status(
+      core::render(*view(blob), p, tile_buffer, tile_buffer_size, workspace, workspace_size, forward, &adapter));
 }
 
 ts_status ts_render_frame(const ts_blob* blob, const ts_params* params, const ts_buffers* buffers, ts_frame_sink sink,

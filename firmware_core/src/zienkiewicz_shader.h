@@ -125,8 +125,9 @@ struct ZienkiewiczShader {
                                   __m128i e01 = pair(s[0].d2, s[1].d2), e2 = pair(s[2].d2, 0);
                                   const __m128i f01 = pair(s[0].d3, s[1].d3), f2 = pair(s[2].d3, 0);
                                   for (; n <= end; ++n) {
-                                    const __m128i q = _mm_unpacklo_epi64(_mm_shuffle_epi32(v01, _MM_SHUFFLE(3, 1, 3, 1)),
-                                                                         _mm_shuffle_epi32(v2, _MM_SHUFFLE(1, 1, 1, 1)));
+                                    const __m128i q =
+                                        _mm_unpacklo_epi64(_mm_shuffle_epi32(v01, _MM_SHUFFLE(3, 1, 3, 1)),
+                                                           _mm_shuffle_epi32(v2, _MM_SHUFFLE(1, 1, 1, 1)));
                                     writer.put_lanes(p, Writer::ordered(q), xs + n, y, n != last);
                                     p += step;
                                     v01 = _mm_add_epi64(v01, d01), v2 = _mm_add_epi64(v2, d2);

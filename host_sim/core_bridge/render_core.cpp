@@ -92,7 +92,8 @@ Image frame_to_image(const CoreFrame& f) {
       case PixelFormat::xrgb8888: q[0] = p[2], q[1] = p[1], q[2] = p[0]; break;
       case PixelFormat::rgb565_le:
       case PixelFormat::rgb565_be: {
-        const unsigned word = f.format == PixelFormat::rgb565_le ? unsigned(p[0] | p[1] << 8) : unsigned(p[1] | p[0] << 8);
+        const unsigned word =
+            f.format == PixelFormat::rgb565_le ? unsigned(p[0] | p[1] << 8) : unsigned(p[1] | p[0] << 8);
         const unsigned r = word >> 11, g = (word >> 5) & 63, b = word & 31;
         q[0] = std::uint8_t((r * 255 + 15) / 31);
         q[1] = std::uint8_t((g * 255 + 31) / 63);
@@ -125,7 +126,8 @@ core::PixelFormat parse_pixel_format(std::string_view name) {
   if (name == "rgb565le") return core::PixelFormat::rgb565_le;
   if (name == "rgb565be") return core::PixelFormat::rgb565_be;
   if (name == "xrgb8888") return core::PixelFormat::xrgb8888;
-  throw UsageError("pixel format must be l8, rgb888, rgb565le, rgb565be or xrgb8888, not \"" + std::string(name) + "\"");
+  throw UsageError("pixel format must be l8, rgb888, rgb565le, rgb565be or xrgb8888, not \"" + std::string(name) +
+                   "\"");
 }
 
 }  // namespace tristream

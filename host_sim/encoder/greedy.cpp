@@ -79,7 +79,8 @@ void GreedyInserter::scan(std::uint32_t slot) {
   double fa[max_channels], gx[max_channels], gy[max_channels];
   for (int c = 0; c < channels_; ++c) {
     fa[c] = values_[tv[0] * channels_ + c];
-    const Plane pl = plane_through(p[0], p[1], p[2], fa[c], values_[tv[1] * channels_ + c], values_[tv[2] * channels_ + c]);
+    const Plane pl =
+        plane_through(p[0], p[1], p[2], fa[c], values_[tv[1] * channels_ + c], values_[tv[2] * channels_ + c]);
     gx[c] = pl.gx;
     gy[c] = pl.gy;
   }
@@ -140,7 +141,8 @@ bool GreedyInserter::step() {
   here.resize(channels_);
   for (int c = 0; c < channels_; ++c) {
     const double fa = values_[tv[0] * channels_ + c];
-    const Plane pl = plane_through(p[0], p[1], p[2], fa, values_[tv[1] * channels_ + c], values_[tv[2] * channels_ + c]);
+    const Plane pl =
+        plane_through(p[0], p[1], p[2], fa, values_[tv[1] * channels_ + c], values_[tv[2] * channels_ + c]);
     here[c] = fa + pl.gx * (x - p[0].x) + pl.gy * (y - p[0].y);
   }
   const std::size_t before = delaunay_.vertex_count();

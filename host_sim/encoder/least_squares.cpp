@@ -74,7 +74,8 @@ LeastSquaresReport fit_least_squares(Mesh& mesh, const Planes& target, bool roun
   // lists v first, then its neighbours in increasing order.
   std::vector<std::vector<std::uint32_t>> adjacent(n);
   for (const Triangle& t : mesh.triangles)
-    for (int e = 0; e < 3; ++e) adjacent[t.v[e]].push_back(t.v[(e + 1) % 3]), adjacent[t.v[e]].push_back(t.v[(e + 2) % 3]);
+    for (int e = 0; e < 3; ++e)
+      adjacent[t.v[e]].push_back(t.v[(e + 1) % 3]), adjacent[t.v[e]].push_back(t.v[(e + 2) % 3]);
   std::vector<std::size_t> row(n + 1, 0);
   std::vector<std::uint32_t> col;
   for (std::size_t v = 0; v < n; ++v) {

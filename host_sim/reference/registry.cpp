@@ -21,8 +21,10 @@ constexpr std::array methods{
     MethodInfo{"bezier", "second-degree Bezier triangle patches over each triangle and its neighbours (thesis 3.3)",
                render_bezier},
     MethodInfo{"coons", "Coons patches over each triangle and its neighbours (thesis 3.4)", render_coons},
-    MethodInfo{"voronoi", "Meyer polygon coordinates in Voronoi cells, zienkiewicz cell-vertex values (thesis 3.5)", render_voronoi},
-    MethodInfo{"natural", "Sibson natural-neighbour coordinates on the Delaunay triangulation (thesis 3.6)", render_natural},
+    MethodInfo{"voronoi", "Meyer polygon coordinates in Voronoi cells, zienkiewicz cell-vertex values (thesis 3.5)",
+               render_voronoi},
+    MethodInfo{"natural", "Sibson natural-neighbour coordinates on the Delaunay triangulation (thesis 3.6)",
+               render_natural},
     MethodInfo{"clough-tocher", "C1 cubic over the Clough-Tocher split, zienkiewicz's gradients", render_clough_tocher},
 };
 

@@ -39,9 +39,11 @@ void BM_core(benchmark::State& state) {
     benchmark::DoNotOptimize(frame.bytes.data());
   }
   const double pixels = double(frame.width) * frame.height;
-  state.counters["Mpix/s"] = benchmark::Counter(pixels * 1e-6 * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["Mpix/s"] =
+      benchmark::Counter(pixels * 1e-6 * double(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["ram_bytes"] = double(renderer.tile_buffer_bytes() + renderer.workspace_bytes());
-  state.SetLabel(std::string(to_string(method)) + (state.range(2) ? " tiles " + std::to_string(state.range(2)) : " full") +
+  state.SetLabel(std::string(to_string(method)) +
+                 (state.range(2) ? " tiles " + std::to_string(state.range(2)) : " full") +
                  (o.format == core::PixelFormat::rgb888 ? " rgb888" : " rgb565le"));
 }
 
@@ -76,7 +78,8 @@ class SummaryReporter : public benchmark::ConsoleReporter {
 void print_summary(const SummaryReporter& r) {
   constexpr double pixels = 512.0 * 512.0;
   auto mpix = [&](double ms) { return ms > 0 ? pixels / (ms * 1e3) : 0.0; };
-  std::printf("\nSummary, 512x512, CPU ms per frame (less disturbed than real time on a shared machine) and Mpixel/s:\n");
+  std::printf(
+      "\nSummary, 512x512, CPU ms per frame (less disturbed than real time on a shared machine) and Mpixel/s:\n");
   std::printf("%9s %5s %-9s | %9s %8s | %9s %8s | %6s\n", "triangles", "tile", "format", "bilinear", "Mpix/s",
               "zienkiew.", "Mpix/s", "z / b");
   for (const auto& [key, t] : r.ms) {

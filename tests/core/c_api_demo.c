@@ -59,5 +59,8 @@ int main(void) {
   }
   printf("%ld tiles, %ld pixels, RAM %zu bytes\n", c.tiles, c.pixels,
          demo_blob.tile_buffer_bytes + demo_blob.workspace_bytes);
-  return (c.tiles == 24 * 16 && c.wrong_format == 0 && demo_blob.format == TS_RGB565_BE && c.pixels == (long)demo_blob.width * demo_blob.height) ? 0 : 1;
+  return (c.tiles == 24 * 16 && c.wrong_format == 0 && demo_blob.format == TS_RGB565_BE &&
+          c.pixels == (long)demo_blob.width * demo_blob.height)
+             ? 0
+             : 1;
 }

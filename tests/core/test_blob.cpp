@@ -37,7 +37,8 @@ unsigned get32(const std::vector<std::uint8_t>& b, std::size_t at) {
 }  // namespace
 
 TEST_CASE("a packed blob opens") {
-  for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) CHECK(open(sample_blob(m)) == core::Status::ok);
+  for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz})
+    CHECK(open(sample_blob(m)) == core::Status::ok);
 }
 
 TEST_CASE("damaged headers are named with their offset") {
@@ -180,7 +181,8 @@ TEST_CASE("render parameters and buffers are checked") {
   CHECK(tile == 8 * 8 * 3);
   std::vector<std::uint8_t> tb(tile), ws(work);
   auto sink = [](void*, const core::Tile*) {};
-  CHECK(core::render(blob, p, tb.data(), tile - 1, ws.data(), ws.size(), sink, nullptr) == core::Status::tile_buffer_too_small);
+  CHECK(core::render(blob, p, tb.data(), tile - 1, ws.data(), ws.size(), sink, nullptr) ==
+        core::Status::tile_buffer_too_small);
   CHECK(core::render(blob, p, tb.data(), tile, ws.data(), 8, sink, nullptr) == core::Status::workspace_too_small);
   CHECK(core::render(blob, p, tb.data(), tile, ws.data(), ws.size(), nullptr, nullptr) == core::Status::null_argument);
   core::RenderParams bad = p;
@@ -249,7 +251,8 @@ TEST_CASE("two tile buffers alternate, a sink can stop the frame, tiles can be p
     Copy* copy = static_cast<Copy*>(c);
     std::vector<std::uint8_t> px;
     const int row = t->rect.width() * core::bytes_per_pixel(t->format);
-    for (int y = 0; y < t->rect.height(); ++y) px.insert(px.end(), t->pixels + y * t->stride, t->pixels + y * t->stride + row);
+    for (int y = 0; y < t->rect.height(); ++y)
+      px.insert(px.end(), t->pixels + y * t->stride, t->pixels + y * t->stride + row);
     copy->tiles.push_back(px);
     copy->where.push_back(t->pixels);
     return copy->stop_after < 0 || int(copy->tiles.size()) < copy->stop_after;
@@ -306,9 +309,10 @@ TEST_CASE("each C format renders its C++ format, and a zeroed or unknown format 
     int c;
     core::PixelFormat cxx;
   };
-  for (const Pair& f : {Pair{TS_L8, core::PixelFormat::l8}, Pair{TS_RGB888, core::PixelFormat::rgb888},
-                        Pair{TS_RGB565_LE, core::PixelFormat::rgb565_le}, Pair{TS_RGB565_BE, core::PixelFormat::rgb565_be},
-                        Pair{TS_XRGB8888, core::PixelFormat::xrgb8888}}) {
+  for (const Pair& f :
+       {Pair{TS_L8, core::PixelFormat::l8}, Pair{TS_RGB888, core::PixelFormat::rgb888},
+        Pair{TS_RGB565_LE, core::PixelFormat::rgb565_le}, Pair{TS_RGB565_BE, core::PixelFormat::rgb565_be},
+        Pair{TS_XRGB8888, core::PixelFormat::xrgb8888}}) {
     ts_params p{};
     p.format = f.c;
     const int bpp = core::bytes_per_pixel(f.cxx);

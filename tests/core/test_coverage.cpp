@@ -79,8 +79,9 @@ TEST_CASE("lattice triangulations of the whole image: every pixel exactly once")
   std::uint32_t seed = 100;
   for (const Case& c : cases)
     for (int rep = 0; rep < 2; ++rep, ++seed)
-      check_exactly_once(random_lattice_mesh(c.w, c.h, c.points, seed, c.flips), c.w, c.h,
-                         "lattice " + std::to_string(c.w) + "x" + std::to_string(c.h) + " seed " + std::to_string(seed));
+      check_exactly_once(
+          random_lattice_mesh(c.w, c.h, c.points, seed, c.flips), c.w, c.h,
+          "lattice " + std::to_string(c.w) + "x" + std::to_string(c.h) + " seed " + std::to_string(seed));
 }
 
 TEST_CASE("sub-pixel vertices, with and without image corners (convex-hull domains)") {

@@ -35,8 +35,8 @@ CoreFrame render(const Triangulation& t, core::PixelFormat f, bool dither = fals
 
 TEST_CASE("byte layout of every format") {
   const Triangulation t = flat(9, 5, 200, 100, 50);
-  const unsigned word = (unsigned(std::lround(200 * 31 / 255.0)) << 11) | (unsigned(std::lround(100 * 63 / 255.0)) << 5) |
-                        unsigned(std::lround(50 * 31 / 255.0));
+  const unsigned word = (unsigned(std::lround(200 * 31 / 255.0)) << 11) |
+                        (unsigned(std::lround(100 * 63 / 255.0)) << 5) | unsigned(std::lround(50 * 31 / 255.0));
   CoreFrame f = render(t, core::PixelFormat::rgb888);
   CHECK((f.bytes[0] == 200 && f.bytes[1] == 100 && f.bytes[2] == 50));
   f = render(t, core::PixelFormat::rgb565_le);
@@ -174,8 +174,10 @@ TEST_CASE("RGB565 without dithering by multiply-adds equals the division by 255 
   for (unsigned r = 0; r < 256; ++r)
     for (unsigned g = 0; g < 256; ++g)
       for (unsigned b = 0; b < 256; b += 17)
-        wrong += core::detail::pack565_nearest(r, g, b) != core::detail::pack565(std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), 127) ||
-                 core::detail::pack565_nearest(b, r, g) != core::detail::pack565(std::uint8_t(b), std::uint8_t(r), std::uint8_t(g), 127);
+        wrong += core::detail::pack565_nearest(r, g, b) !=
+                     core::detail::pack565(std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), 127) ||
+                 core::detail::pack565_nearest(b, r, g) !=
+                     core::detail::pack565(std::uint8_t(b), std::uint8_t(r), std::uint8_t(g), 127);
   CHECK(wrong == 0);
 }
 
@@ -183,9 +185,12 @@ TEST_CASE("RGB565 by table equals the division by 255 for every value") {
   int wrong = 0;
   for (unsigned v = 0; v < 256; ++v)
     for (unsigned w : {0u, 1u, 127u, 128u, 254u, 255u}) {
-      wrong += core::detail::pack565_by_table(v, w, w) != core::detail::pack565(std::uint8_t(v), std::uint8_t(w), std::uint8_t(w), 127);
-      wrong += core::detail::pack565_by_table(w, v, w) != core::detail::pack565(std::uint8_t(w), std::uint8_t(v), std::uint8_t(w), 127);
-      wrong += core::detail::pack565_by_table(w, w, v) != core::detail::pack565(std::uint8_t(w), std::uint8_t(w), std::uint8_t(v), 127);
+      wrong += core::detail::pack565_by_table(v, w, w) !=
+               core::detail::pack565(std::uint8_t(v), std::uint8_t(w), std::uint8_t(w), 127);
+      wrong += core::detail::pack565_by_table(w, v, w) !=
+               core::detail::pack565(std::uint8_t(w), std::uint8_t(v), std::uint8_t(w), 127);
+      wrong += core::detail::pack565_by_table(w, w, v) !=
+               core::detail::pack565(std::uint8_t(w), std::uint8_t(w), std::uint8_t(v), 127);
     }
   CHECK(wrong == 0);
 }

@@ -43,7 +43,8 @@ TEST_CASE("one byte less workspace than reported is refused, never overrun") {
     // Aligned start: the alignment slack is then unused, so the last 8 bytes are spare; beyond
     // them the bitmap no longer fits.
     CHECK(core::render(b, p, tiles.data(), tb, work.data(), ws, sink, nullptr) == core::Status::ok);
-    CHECK(core::render(b, p, tiles.data(), tb, work.data(), ws - 12, sink, nullptr) == core::Status::workspace_too_small);
+    CHECK(core::render(b, p, tiles.data(), tb, work.data(), ws - 12, sink, nullptr) ==
+          core::Status::workspace_too_small);
   }
 }
 

@@ -72,7 +72,8 @@ TEST_CASE("triencode writes a readable triangulation and a summary", "[triencode
 }
 
 TEST_CASE("triencode output is byte-identical across runs", "[triencode]") {
-  for (const std::string mode : {"--color co", "--color separate --space ycbcr", "--grey --fit lsq", "--cotri thesis"}) {
+  for (const std::string mode :
+       {"--color co", "--color separate --space ycbcr", "--grey --fit lsq", "--cotri thesis"}) {
     const std::string a = (dir() / "d1.tri").string(), b = (dir() / "d2.tri").string();
     REQUIRE(run(in() + " -n 300 " + mode + " -o " + a).code == 0);
     REQUIRE(run(in() + " -n 300 " + mode + " -o " + b).code == 0);
@@ -105,7 +106,8 @@ TEST_CASE("triencode --relocate: 0 keeps the inserted positions, the default low
   REQUIRE(t4.layers.at(0).vertex_count() == 200);
   std::size_t moved = 0;
   for (std::size_t v = 0; v < 200; ++v)
-    moved += t0.layers[0].points[v].x != t4.layers[0].points[v].x || t0.layers[0].points[v].y != t4.layers[0].points[v].y;
+    moved +=
+        t0.layers[0].points[v].x != t4.layers[0].points[v].x || t0.layers[0].points[v].y != t4.layers[0].points[v].y;
   REQUIRE(moved > 0);
   REQUIRE(run(in() + " -n 200 --relocate -1 -o " + a).code == 64);
 }

@@ -50,7 +50,8 @@ TEST_CASE("golden renders are unchanged") {
     REQUIRE(!blob.empty());
     golden::Pixels got;
     const bool bilinear = std::string(c.method) == "bilinear";
-    const bool compiled = (core::config::pixel_formats >> int(c.format) & 1) && (core::config::methods >> (bilinear ? 0 : 1) & 1);
+    const bool compiled =
+        (core::config::pixel_formats >> int(c.format) & 1) && (core::config::methods >> (bilinear ? 0 : 1) & 1);
     if (!compiled) {
       CHECK(golden::render(c, blob, &got) == core::Status::not_compiled);
       continue;

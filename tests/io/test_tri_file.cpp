@@ -107,7 +107,8 @@ TEST_CASE("layered files round-trip and need rgb or ycbcr") {
 TEST_CASE("no triangles section means Delaunay") {
   std::string text = header(9);
   for (int y = 0; y < 3; ++y)
-    for (int x = 0; x < 3; ++x) text += std::to_string(x * 4) + " " + std::to_string(y * 4) + " 1\n";  // cocircular lattice
+    for (int x = 0; x < 3; ++x)
+      text += std::to_string(x * 4) + " " + std::to_string(y * 4) + " 1\n";  // cocircular lattice
   const Triangulation a = parse_tri(text, "a.tri");
   const Triangulation b = parse_tri(text + "triangles 0\n", "b.tri");
   CHECK(a.layers[0].triangles.size() == 8);
@@ -119,38 +120,52 @@ TEST_CASE("errors name the line, what was expected and what was found") {
   CHECK_THAT(error_of(""), Catch::Contains("in.tri:1: expected 'tri 1', found end of file"));
   CHECK_THAT(error_of("tri 2\n"), Catch::Contains("in.tri:1: expected format version 1"));
   CHECK_THAT(error_of("tri 1\nsize 0 10\n"), Catch::Contains("in.tri:2: expected an image width"));
-  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels cmyk\n"), Catch::Contains("in.tri:3: expected 'grey', 'rgb' or 'ycbcr', found 'cmyk'"));
+  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels cmyk\n"),
+             Catch::Contains("in.tri:3: expected 'grey', 'rgb' or 'ycbcr', found 'cmyk'"));
   CHECK_THAT(error_of(header(2)), Catch::Contains("in.tri:4: expected a vertex count"));
   CHECK_THAT(error_of(header(3) + "0 0 1\n"), Catch::Contains("in.tri:6: expected vertex line 2 of 3"));
-  CHECK_THAT(error_of(header(3) + "0 0 1\n9 0 256\n"), Catch::Contains("in.tri:6: expected a value (a number in 0..255), found '256'"));
-  CHECK_THAT(error_of(header(3) + "0 0 1\n10 0 2\n"), Catch::Contains("in.tri:6: expected an x coordinate inside the image"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n9 0 256\n"),
+             Catch::Contains("in.tri:6: expected a value (a number in 0..255), found '256'"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n10 0 2\n"),
+             Catch::Contains("in.tri:6: expected an x coordinate inside the image"));
   CHECK_THAT(error_of(header(3) + "0 0 1\n9 nan 2\n"), Catch::Contains("in.tri:6: expected a y coordinate"));
-  CHECK_THAT(error_of(header(3) + "0 0 1\n9 0 2 3\n"), Catch::Contains("in.tri:6: expected a vertex line '<x> <y> <value>'"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n9 0 2 3\n"),
+             Catch::Contains("in.tri:6: expected a vertex line '<x> <y> <value>'"));
   CHECK_THAT(error_of(header(3, "rgb") + "0 0 1\n"), Catch::Contains("'<x> <y> <v0> <v1> <v2>'"));
-  CHECK_THAT(error_of(header(3) + "0 0 1\n9 0 2\n0 0 5\n"), Catch::Contains("in.tri:7: expected distinct vertex positions, found a duplicate of the vertex on line 5"));
+  CHECK_THAT(
+      error_of(header(3) + "0 0 1\n9 0 2\n0 0 5\n"),
+      Catch::Contains("in.tri:7: expected distinct vertex positions, found a duplicate of the vertex on line 5"));
   const std::string three = header(3) + "0 0 1\n9 0 2\n0 9 3\n";
-  CHECK_THAT(error_of(three + "triangles 1\n0 1 3\n"), Catch::Contains("in.tri:9: expected a vertex index (an integer in 0..2), found '3'"));
-  CHECK_THAT(error_of(three + "triangles 1\n0 1 1\n"), Catch::Contains("in.tri:9: expected three distinct vertex indices"));
+  CHECK_THAT(error_of(three + "triangles 1\n0 1 3\n"),
+             Catch::Contains("in.tri:9: expected a vertex index (an integer in 0..2), found '3'"));
+  CHECK_THAT(error_of(three + "triangles 1\n0 1 1\n"),
+             Catch::Contains("in.tri:9: expected three distinct vertex indices"));
   CHECK_THAT(error_of(three + "triangles 2\n0 1 2\n"), Catch::Contains("in.tri:10: expected triangle line 2 of 2"));
-  CHECK_THAT(error_of(three + "triangles 1\n0 1 2\nextra\n"), Catch::Contains("in.tri:10: expected end of file, found 'extra'"));
-  CHECK_THAT(error_of(header(3) + "0 0 1\n4 4 2\n9 9 3\ntriangles 1\n0 1 2\n"), Catch::Contains("in.tri:9: expected a triangle of non-zero area"));
+  CHECK_THAT(error_of(three + "triangles 1\n0 1 2\nextra\n"),
+             Catch::Contains("in.tri:10: expected end of file, found 'extra'"));
+  CHECK_THAT(error_of(header(3) + "0 0 1\n4 4 2\n9 9 3\ntriangles 1\n0 1 2\n"),
+             Catch::Contains("in.tri:9: expected a triangle of non-zero area"));
   // Two triangles that overlap: (0,0) (9,0) (0,9) and (9,9) (0,9)... shifted so they cross.
   const std::string four = header(4) + "0 0 1\n9 0 2\n0 9 3\n9 9 4\n";
   CHECK(error_of(four + "triangles 2\n0 1 2\n1 3 2\n").empty());
   CHECK_THAT(error_of(four + "triangles 2\n0 1 2\n0 1 3\n"),
-             Catch::Contains("in.tri:11: expected triangles whose interiors do not overlap, found a triangle overlapping the one on line 10"));
+             Catch::Contains("in.tri:11: expected triangles whose interiors do not overlap, found a triangle "
+                             "overlapping the one on line 10"));
   CHECK_THAT(error_of(four + "triangles 2\n0 1 2\n2 1 0\n"), Catch::Contains("overlapping"));
   // Not edge to edge (issue 17): (10,10) lies inside the edge (0,0)-(20,20) of the first triangle.
-  const std::string t_junction = "tri 1\nsize 21 21\nchannels grey\nvertices 5\n0 0 0\n20 0 0\n0 20 0\n20 20 0\n10 10 0\n"
-                                 "triangles 3\n0 1 3\n0 4 2\n4 3 2\n";
+  const std::string t_junction =
+      "tri 1\nsize 21 21\nchannels grey\nvertices 5\n0 0 0\n20 0 0\n0 20 0\n20 20 0\n10 10 0\n"
+      "triangles 3\n0 1 3\n0 4 2\n4 3 2\n";
   CHECK_THAT(error_of(t_junction),
              Catch::Contains("in.tri:11: expected triangles that meet edge to edge (no vertex inside another "
                              "triangle's edge), found the vertex on line 9 inside an edge of this triangle"));
   // Crossing edges, and a triangle inside another.
   CHECK(error_of(four + "triangles 2\n0 1 3\n0 3 2\n").empty());
-  CHECK_THAT(error_of(four + "triangles 2\n0 1 3\n1 3 2\n"), Catch::Contains("in.tri:11: expected triangles whose interiors do not overlap"));
+  CHECK_THAT(error_of(four + "triangles 2\n0 1 3\n1 3 2\n"),
+             Catch::Contains("in.tri:11: expected triangles whose interiors do not overlap"));
   CHECK_THAT(error_of(header(6) + "0 0 1\n9 0 2\n0 9 3\n1 1 4\n3 1 5\n1 3 6\ntriangles 2\n0 1 2\n3 4 5\n"),
-             Catch::Contains("in.tri:13: expected triangles whose interiors do not overlap, found a triangle overlapping the one on line 12"));
+             Catch::Contains("in.tri:13: expected triangles whose interiors do not overlap, found a triangle "
+                             "overlapping the one on line 12"));
 }
 
 TEST_CASE("small things of issue 17: a BOM, leading zeros, underflow") {
@@ -158,14 +173,17 @@ TEST_CASE("small things of issue 17: a BOM, leading zeros, underflow") {
   CHECK_NOTHROW(parse_tri("\xEF\xBB\xBFtri 1\n" + body, "bom.tri"));
   CHECK_THAT(error_of("tri 01\n" + body), Catch::Contains("in.tri:1: expected format version 1"));
   CHECK_THAT(error_of("tri 1\nsize 010 10\n"), Catch::Contains("in.tri:2: expected an image width"));
-  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels grey\nvertices +3\n"), Catch::Contains("in.tri:4: expected a vertex count"));
+  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels grey\nvertices +3\n"),
+             Catch::Contains("in.tri:4: expected a vertex count"));
   // Too small for a double is zero (as a denormal is nearly zero); too large is out of range.
-  const Triangulation t = parse_tri("tri 1\nsize 10 10\nchannels grey\nvertices 3\n1e-400 0 1e-400\n9 0 2\n0 9 -1e-999\n", "u.tri");
+  const Triangulation t =
+      parse_tri("tri 1\nsize 10 10\nchannels grey\nvertices 3\n1e-400 0 1e-400\n9 0 2\n0 9 -1e-999\n", "u.tri");
   CHECK(t.layers[0].points[0].x == 0);
   CHECK(t.layers[0].value(0, 0) == 0);
   CHECK(t.layers[0].value(2, 0) == 0);
   CHECK_NOTHROW(parse_tri("tri 1\nsize 10 10\nchannels grey\nvertices 3\n1e-320 0 1\n9 0 2\n0 9 3\n", "d.tri"));
-  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels grey\nvertices 3\n1e400 0 1\n"), Catch::Contains("in.tri:5: expected an x coordinate"));
+  CHECK_THAT(error_of("tri 1\nsize 10 10\nchannels grey\nvertices 3\n1e400 0 1\n"),
+             Catch::Contains("in.tri:5: expected an x coordinate"));
 }
 
 TEST_CASE("files that are missing give InputError") {

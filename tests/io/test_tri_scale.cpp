@@ -32,7 +32,8 @@ double seconds_to_parse(const std::string& text, Triangulation& out) {
 std::string fan(long n) {
   const double side = 65534;
   const double perimeter = 4 * side, step = perimeter / double(n);
-  std::string text = "tri 1\nsize 65535 65535\nchannels grey\nvertices " + std::to_string(n + 1) + "\n32767 32767 128\n";
+  std::string text =
+      "tri 1\nsize 65535 65535\nchannels grey\nvertices " + std::to_string(n + 1) + "\n32767 32767 128\n";
   char line[96];
   for (long i = 0; i < n; ++i) {
     const double d = double(i) * step;

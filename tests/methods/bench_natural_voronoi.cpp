@@ -46,8 +46,8 @@ Triangulation random_512(ColorSpace space) {
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
-  static std::vector<std::pair<std::string, Triangulation>> cases = {{"random13k_512_grey", random_512(ColorSpace::grey)},
-                                                                     {"random13k_512_rgb", random_512(ColorSpace::rgb)}};
+  static std::vector<std::pair<std::string, Triangulation>> cases = {
+      {"random13k_512_grey", random_512(ColorSpace::grey)}, {"random13k_512_rgb", random_512(ColorSpace::rgb)}};
   for (int i = 1; i < argc; ++i) cases.push_back({argv[i], read_tri_file(argv[i])});
   for (const auto& [label, tri] : cases)
     for (const char* method : {"natural", "voronoi", "bilinear"})

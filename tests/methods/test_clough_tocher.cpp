@@ -161,7 +161,8 @@ TEST_CASE("clough-tocher does not reproduce cubics (the space is only C1 cubic s
   const std::array<Point, 3> p{Point{0, 0}, Point{10, 0}, Point{3, 8}};
   auto cubic = [](const Point& r) { return r.x * r.x * r.x / 100; };
   auto grad = [](const Point& r) { return Gradient{3 * r.x * r.x / 100, 0}; };
-  const auto ct = clough_tocher_triangle(p, {cubic(p[0]), cubic(p[1]), cubic(p[2])}, {grad(p[0]), grad(p[1]), grad(p[2])});
+  const auto ct =
+      clough_tocher_triangle(p, {cubic(p[0]), cubic(p[1]), cubic(p[2])}, {grad(p[0]), grad(p[1]), grad(p[2])});
   const Point centroid{13.0 / 3, 8.0 / 3};
   CHECK(std::fabs(clough_tocher_value(ct, 1.0 / 3, 1.0 / 3, 1.0 / 3) - cubic(centroid)) > 1e-3);
 }
@@ -189,8 +190,9 @@ TEST_CASE("clough-tocher is C1 across the inner edges of the split", "[clough-to
                                  Point{coord(rng), coord(rng)}};
     const double area = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x);
     if (std::fabs(area) < 40) continue;
-    const auto ct = clough_tocher_triangle(p, {val(rng), val(rng), val(rng)},
-                                           {Gradient{g(rng), g(rng)}, Gradient{g(rng), g(rng)}, Gradient{g(rng), g(rng)}});
+    const auto ct =
+        clough_tocher_triangle(p, {val(rng), val(rng), val(rng)},
+                               {Gradient{g(rng), g(rng)}, Gradient{g(rng), g(rng)}, Gradient{g(rng), g(rng)}});
     auto f = [&](const Point& r) {
       const auto l = barycentric(p[0], p[1], p[2], r);
       return clough_tocher_value(ct, l[0], l[1], l[2]);

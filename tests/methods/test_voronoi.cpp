@@ -224,7 +224,8 @@ TEST_CASE("voronoi: the renderer equals an independent recomputation of the thes
 TEST_CASE("voronoi: linear data is reproduced in every cell whose vertices are all inside") {
   const int W = 64, H = 48;
   Mesh mesh = tristream::testing::random_lattice_mesh(W, H, 200, 4, 0, 1);
-  for (std::size_t v = 0; v < mesh.points.size(); ++v) mesh.values[v] = 20 + 2 * mesh.points[v].x + 1.5 * mesh.points[v].y;
+  for (std::size_t v = 0; v < mesh.points.size(); ++v)
+    mesh.values[v] = 20 + 2 * mesh.points[v].x + 1.5 * mesh.points[v].y;
   Field out(W, H, 1);
   render_voronoi(mesh, W, H, {}, out);
   const VoronoiDiagram voronoi(mesh.points);
@@ -238,7 +239,8 @@ TEST_CASE("voronoi: linear data is reproduced in every cell whose vertices are a
       for (std::uint32_t v = 1; v < mesh.points.size(); ++v)
         if (dist(mesh.points[v], p) < dist(mesh.points[site], p)) site = v;
       bool unclipped = true;
-      for (const Point& q : voronoi.cell(site)) unclipped = unclipped && q.x > 0 && q.x < W - 1 && q.y > 0 && q.y < H - 1;
+      for (const Point& q : voronoi.cell(site))
+        unclipped = unclipped && q.x > 0 && q.x < W - 1 && q.y > 0 && q.y < H - 1;
       if (unclipped) {
         CHECK(std::abs(out.at(i, j, 0) - truth) < 1e-9);
         ++checked;
@@ -255,7 +257,8 @@ TEST_CASE("voronoi: only pixels of the mesh's domain are written") {
   Mesh mesh;
   mesh.points = {{0, 0}, {10, 0}, {10, 5}, {5, 5}, {5, 10}, {0, 10}, {2, 2}, {7, 2}};
   mesh.values = {0, 10, 20, 30, 40, 50, 60, 70};
-  mesh.triangles = {{{0, 1, 7}}, {{1, 2, 7}}, {{7, 2, 3}}, {{0, 7, 6}}, {{6, 7, 3}}, {{0, 6, 5}}, {{6, 3, 5}}, {{3, 4, 5}}};
+  mesh.triangles = {{{0, 1, 7}}, {{1, 2, 7}}, {{7, 2, 3}}, {{0, 7, 6}},
+                    {{6, 7, 3}}, {{0, 6, 5}}, {{6, 3, 5}}, {{3, 4, 5}}};
   mesh.normalize_winding();
   Field out(11, 11, 1);
   render_voronoi(mesh, 11, 11, {}, out);

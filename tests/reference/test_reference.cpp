@@ -46,7 +46,8 @@ TEST_CASE("every pixel is owned by exactly one triangle") {
       const PixelMapping map(c.w, c.h, c.out_w, c.out_h);
       std::vector<int> count(std::size_t(c.out_w) * c.out_h, 0);
       for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
-        for_each_owned_pixel(mesh, topo, t, map, [&](int i, int j, double, double, double) { ++count[j * c.out_w + i]; });
+        for_each_owned_pixel(mesh, topo, t, map,
+                             [&](int i, int j, double, double, double) { ++count[j * c.out_w + i]; });
       int wrong = 0;
       for (int v : count) wrong += v != 1;
       INFO("case " << c.w << "x" << c.h << " points " << c.points << " flips " << c.flips << " out " << c.out_w
@@ -112,8 +113,12 @@ TEST_CASE("zienkiewicz with exact gradients reproduces quadratic data") {
   std::uniform_real_distribution<double> coord(0, 100), coef(-1, 1), bary(0, 1);
   for (int rep = 0; rep < 50; ++rep) {
     const double q[6] = {coef(rng), coef(rng), coef(rng), coef(rng) * 10, coef(rng) * 10, coef(rng) * 100};
-    auto f = [&](const Point& p) { return q[0] * p.x * p.x + q[1] * p.x * p.y + q[2] * p.y * p.y + q[3] * p.x + q[4] * p.y + q[5]; };
-    auto g = [&](const Point& p) { return Gradient{2 * q[0] * p.x + q[1] * p.y + q[3], q[1] * p.x + 2 * q[2] * p.y + q[4]}; };
+    auto f = [&](const Point& p) {
+      return q[0] * p.x * p.x + q[1] * p.x * p.y + q[2] * p.y * p.y + q[3] * p.x + q[4] * p.y + q[5];
+    };
+    auto g = [&](const Point& p) {
+      return Gradient{2 * q[0] * p.x + q[1] * p.y + q[3], q[1] * p.x + 2 * q[2] * p.y + q[4]};
+    };
     const Point a{coord(rng), coord(rng)}, b{coord(rng), coord(rng)}, c{coord(rng), coord(rng)};
     const auto k = zienkiewicz_coefficients(a, b, c, f(a), f(b), f(c), g(a), g(b), g(c));
     for (int s = 0; s < 20; ++s) {

@@ -147,7 +147,8 @@ DecodedInsn cost(csh h, const cs_insn& insn, const Context& prev, Context* next,
       refill = pipeline_refill;
     }
     for (int i = 0; i < nwrite && next->written_count < 4; ++i)
-      if (write_regs[i] != ARM_REG_PC && write_regs[i] != ARM_REG_CPSR) next->written[next->written_count++] = write_regs[i];
+      if (write_regs[i] != ARM_REG_PC && write_regs[i] != ARM_REG_CPSR)
+        next->written[next->written_count++] = write_regs[i];
   }
   if (refill && conditional) {
     d.conditional_branch = true;  // P only when taken (decided while running)

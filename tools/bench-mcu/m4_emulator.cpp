@@ -33,7 +33,8 @@ M4Emulator::M4Emulator(const ElfImage& elf, bool per_instruction) : elf_(elf), p
   check(uc_mem_map(uc_, ram_base, ram_size, UC_PROT_READ | UC_PROT_WRITE), "map RAM");
   check(uc_mem_map(uc_, rom_base, rom_size, UC_PROT_READ), "map the blob region");
   for (const ElfSegment& s : elf.segments) {
-    const bool in_flash = s.address >= flash_base && std::uint64_t(s.address) + s.memory_size <= flash_base + flash_size;
+    const bool in_flash =
+        s.address >= flash_base && std::uint64_t(s.address) + s.memory_size <= flash_base + flash_size;
     const bool in_ram = s.address >= ram_base && std::uint64_t(s.address) + s.memory_size <= ram_base + ram_size;
     if (!in_flash && !in_ram) throw std::runtime_error(elf.path + ": a segment lies outside the board's flash and RAM");
     if (s.executable && !in_flash) throw std::runtime_error(elf.path + ": code outside flash");
@@ -198,7 +199,8 @@ void M4Emulator::on_insn(std::uint32_t address, std::uint32_t size) {
   if (address == halt_) return;
   skip_to(address);
   if (!current_ || current_insn_ >= current_->decoded.insns.size() ||
-      current_->decoded.insns[current_insn_].address != address || current_->decoded.insns[current_insn_].size != size) {
+      current_->decoded.insns[current_insn_].address != address ||
+      current_->decoded.insns[current_insn_].size != size) {
     fail("instruction at " + std::to_string(address) + " is not the next one of its translation block");
     return;
   }

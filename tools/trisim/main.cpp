@@ -230,7 +230,8 @@ CLI::App* add_compare_command(CLI::App& app, CompareCommand& c) {
 
 CLI::App* add_bench_command(CLI::App& app, BenchCommand& c) {
   auto* cmd = app.add_subcommand(
-      "bench", "Render repeatedly after a warm-up; print the median ms per frame (wall and CPU), the fastest, and Mpixel/s");
+      "bench",
+      "Render repeatedly after a warm-up; print the median ms per frame (wall and CPU), the fastest, and Mpixel/s");
   add_render_options(cmd, c.req);
   cmd->add_option("--runs", c.runs, "Timed renders (default: as many as fit in about 2 s, 5 to 200)")
       ->check(CLI::Range(1, 100000));

@@ -54,8 +54,9 @@ int main(int argc, char** argv) {
   memset(&params, 0, sizeof params);
   params.format = TS_RGB565_BE;
   params.tile_height = 16;
-  if (ts_tile_buffer_size(&blob, &params, &tile_bytes) != TS_OK || ts_workspace_size(&blob, &params, &work_bytes) != TS_OK ||
-      tile_bytes > sizeof tile_buffer || work_bytes > sizeof workspace)
+  if (ts_tile_buffer_size(&blob, &params, &tile_bytes) != TS_OK ||
+      ts_workspace_size(&blob, &params, &work_bytes) != TS_OK || tile_bytes > sizeof tile_buffer ||
+      work_bytes > sizeof workspace)
     return 1;
   /* The band width is the blob's: the tile buffer's size over 16 rows of 2 bytes. */
   p.width = (int)(tile_bytes / (16 * 2));

@@ -39,7 +39,9 @@ struct BilinearChannel {
     return uint32_t(v_ref) + uint32_t(dvdx) * uint32_t(x - xr) + uint32_t(dvdy) * uint32_t(y - yr);
   }
   // The same at offsets (dx, dy) = (x - xr, y - yr) from the reference pixel.
-  uint32_t at_offset(uint32_t dx, uint32_t dy) const { return uint32_t(v_ref) + uint32_t(dvdx) * dx + uint32_t(dvdy) * dy; }
+  uint32_t at_offset(uint32_t dx, uint32_t dy) const {
+    return uint32_t(v_ref) + uint32_t(dvdx) * dx + uint32_t(dvdy) * dy;
+  }
   uint32_t step() const { return uint32_t(dvdx); }
 };
 
@@ -95,7 +97,8 @@ struct ZienkiewiczChannel {
     constexpr int shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
     static_assert(shift >= 1, "edge derivative needs at least one bit to round away");
     auto dot = [&](int edge, int vertex) {
-      const int64_t d = int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
+      const int64_t d =
+          int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
       return (d + (int64_t(1) << (shift - 1))) >> shift;
     };
     const int64_t u1 = values[0], u4 = values[1], u7 = values[2];
