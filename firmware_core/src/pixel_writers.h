@@ -72,6 +72,19 @@ struct DirectWriter {
         }
         return;
       }
+      // Dithered: the row's four Bayer offsets once per span, then one per pixel by column.
+      uint32_t offset[4];
+      for (int32_t i = 0; i < 4; ++i) offset[i] = bayer_offset(i, y);
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0, v1 += d1, v2 += d2) {
+        const uint32_t o = offset[x & 3];
+        if constexpr (Channels == 1) {
+          const uint8_t u = uint8_t(v0 >> s);
+          store565<F>(p, pack565(u, u, u, o));
+        } else {
+          store565<F>(p, pack565(uint8_t(v0 >> s), uint8_t(v1 >> s), uint8_t(v2 >> s), o));
+        }
+      }
+      return;
     }
     if constexpr (Channels == 1) {
       for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0) store_grey<F>(p, uint8_t(v0 >> s), x, y, dither);
