@@ -5,29 +5,7 @@
 # Usage: test_bad_input_cli.sh BIN_DIR
 set -uo pipefail
 bin=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-passes=0
-
-# expect <code> <stderr-substring or ''> <command...>
-expect() {
-  local code=$1 needle=$2
-  shift 2
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" -ne "$code" ] || { [ -n "$needle" ] && ! grep -qF -- "$needle" "$tmp/err"; }; then
-    echo "FAIL: $* -> exit $got (expected $code), stderr: $(head -c 300 "$tmp/err")"
-    failures=$((failures + 1))
-  else
-    passes=$((passes + 1))
-  fi
-}
-check() {  # check <description> <command...>: passes when the command succeeds
-  local what=$1
-  shift
-  if "$@"; then passes=$((passes + 1)); else echo "FAIL: $what"; failures=$((failures + 1)); fi
-}
+source "$(dirname "$0")/cli_checks.sh"
 
 cat >"$tmp/huge.tri" <<'TRI'
 tri 1
@@ -177,5 +155,4 @@ for y in range(h):
 assert not_grey > 0, "the RGB565 render is grey"
 PY
 
-echo "$passes passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish

@@ -5,24 +5,7 @@
 set -uo pipefail
 bin=$1
 src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-passes=0
-
-# expect <code> <stderr-substring or ''> <command...>
-expect() {
-  local code=$1 needle=$2
-  shift 2
-  "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" -ne "$code" ] || { [ -n "$needle" ] && ! grep -qF -- "$needle" "$tmp/err"; }; then
-    echo "FAIL: $* -> exit $got (expected $code), stderr: $(head -c 300 "$tmp/err")"
-    failures=$((failures + 1))
-  else
-    passes=$((passes + 1))
-  fi
-}
+source "$(dirname "$0")/cli_checks.sh"
 
 tri=$tmp/rgb.tri
 cat >"$tri" <<'TRI'
@@ -100,5 +83,4 @@ done
 grep -q '"ram_bytes":' "$tmp/out" && passes=$((passes + 1)) || { echo "FAIL: bench --engine core --json lacks 'ram_bytes'"; failures=$((failures + 1)); }
 expect 64 "" "$bin/trisim" bench "$tri" --method coons --engine core
 
-echo "$passes passed, $failures failed"
-[ "$failures" -eq 0 ]
+finish
