@@ -5,6 +5,7 @@
 #include <random>
 
 #include "bench_support.h"
+#include "core_support.h"
 #include "common/errors.h"
 #include "geometry/delaunay.h"
 #include "io/image_io.h"
@@ -39,12 +40,7 @@ Triangulation jittered_grid(int n, unsigned seed) {
         mesh.values.push_back(photo.at(int(std::lround(x)) + 100, int(std::lround(y)), c % photo.channels));
     }
   mesh.triangles = delaunay_triangulation(mesh.points);
-  Triangulation tri;
-  tri.width = w;
-  tri.height = h;
-  tri.space = ColorSpace::rgb;
-  tri.layers = {mesh};
-  return tri;
+  return testing::single_mesh(mesh, w, h, ColorSpace::rgb);
 }
 
 Triangulation make_mesh(const std::string& name) {
