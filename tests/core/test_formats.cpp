@@ -167,6 +167,20 @@ TEST_CASE("every 8-bit value packs the same in RGB565, XRGB8888 and L8 as the RG
   CHECK(wrong == 0);
 }
 
+TEST_CASE("RGB565 without dithering by multiply-adds equals the division by 255 for every value") {
+  // The fields are independent: every value of each channel, against every value of the others
+  // in steps that cover all their low bits.
+  int wrong = 0;
+  for (unsigned r = 0; r < 256; ++r)
+    for (unsigned g = 0; g < 256; ++g)
+      for (unsigned b = 0; b < 256; b += 17)
+        wrong += core::detail::pack565_nearest(r, g, b) !=
+                     core::detail::pack565(std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), 127) ||
+                 core::detail::pack565_nearest(b, r, g) !=
+                     core::detail::pack565(std::uint8_t(b), std::uint8_t(r), std::uint8_t(g), 127);
+  CHECK(wrong == 0);
+}
+
 TEST_CASE("RGB565 by table equals the division by 255 for every value") {
   int wrong = 0;
   for (unsigned v = 0; v < 256; ++v)

@@ -50,6 +50,13 @@ inline uint16_t pack565(uint8_t r, uint8_t g, uint8_t b, uint32_t offset) {
   return uint16_t((reduce(r, 31, offset) << 11) | (reduce(g, 63, offset) << 5) | reduce(b, 31, offset));
 }
 
+// pack565 without dithering (offset 127) by multiply-adds: (v 31 + 127) / 255 = (v 249 + 1014) >> 11
+// and (v 63 + 127) / 255 = (v 253 + 505) >> 10 for every 8-bit v (test_formats checks all of them),
+// and the fields placed by masks: no division and no shift back.
+inline uint16_t pack565_nearest(uint32_t r, uint32_t g, uint32_t b) {
+  return uint16_t(((r * 249 + 1014) & 0xF800u) | (((g * 253 + 505) >> 5) & 0x07E0u) | ((b * 249 + 1014) >> 11));
+}
+
 // The 5- and 6-bit values of every 8-bit value without dithering, reduce(v, 31, 127) and
 // reduce(v, 63, 127), for the pixel loops: one byte load per channel instead of a multiply-add and
 // masks (512 bytes of constant data; the same values by construction).
@@ -67,7 +74,7 @@ constexpr Rgb565Tables make_rgb565_tables() {
 }
 inline constexpr Rgb565Tables rgb565_tables = make_rgb565_tables();
 
-// pack565 without dithering (offset 127) by the tables.
+// pack565_nearest by the tables, for values already known to be in [0, 255].
 inline uint16_t pack565_by_table(uint32_t r, uint32_t g, uint32_t b) {
   const Rgb565Tables& t = rgb565_tables;
   return uint16_t((uint32_t(t.r5[r]) << 11) | (uint32_t(t.g6[g]) << 5) | t.r5[b]);
@@ -98,7 +105,7 @@ inline void store_rgb(uint8_t* p, uint8_t r, uint8_t g, uint8_t b, int32_t x, in
     p[1] = g;
     p[2] = b;
   } else if constexpr (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be) {
-    store565<F>(p, dither ? pack565(r, g, b, bayer_offset(x, y)) : pack565_by_table(r, g, b));
+    store565<F>(p, dither ? pack565(r, g, b, bayer_offset(x, y)) : pack565_nearest(r, g, b));
   } else if constexpr (F == PixelFormat::xrgb8888) {
     p[0] = b;
     p[1] = g;
