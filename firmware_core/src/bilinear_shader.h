@@ -36,14 +36,19 @@ constexpr bool chunked_division_fits(int m, int s) {
   return 2 * scan_area2_bound(m, s) <= ChunkedRoundingDivider::max_divisor &&
          scan_numerator_bound(m, s) < (uint64_t(1) << ChunkedRoundingDivider::numerator_bits);
 }
-// Where the high multiply is one instruction (a 128-bit type) the short division, else (Cortex-M)
-// the chunked one where the budget allows; RoundingDivider for the span path and otherwise.
+// Where the high multiply is one instruction (a 128-bit type) the short division for the scan
+// path and RoundingDivider for the span path. Else (Cortex-M) the chunked division for the scan
+// path where the budget allows (three hardware divides of small quotients: fewer cycles than a
+// reciprocal per triangle), and PreinvRoundingDivider for the span path (RoundingDivider for
+// doubled areas of 2^31 or more, none in the default configuration).
 #if TS_USE_INT128
 constexpr bool bilinear_short_division = short_division_fits(scan_max_extent, config::subpixel_bits);
 constexpr bool bilinear_chunked_division = false;
+constexpr bool bilinear_preinv_division = false;
 #else
 constexpr bool bilinear_short_division = false;
 constexpr bool bilinear_chunked_division = chunked_division_fits(scan_max_extent, config::subpixel_bits);
+constexpr bool bilinear_preinv_division = true;
 #endif
 static_assert(short_division_fits(16, 4), "the default configuration divides scan-path numerators without correction");
 static_assert(chunked_division_fits(12, 4), "the default configuration divides scan-path numerators in chunks");
@@ -91,6 +96,8 @@ struct BilinearShader {
       setup(ShortRoundingDivider(s.area2));
     } else if (bilinear_chunked_division && s.scan_path) {
       setup(ChunkedRoundingDivider(s.area2));
+    } else if (bilinear_preinv_division && PreinvRoundingDivider::fits(s.area2)) {
+      setup(PreinvRoundingDivider(s.area2));
     } else {
       setup(RoundingDivider(s.area2));
     }

@@ -138,3 +138,51 @@ TEST_CASE("ChunkedRoundingDivider equals round_div wherever 2d <= 2^17 and |2n +
     }
   }
 }
+
+TEST_CASE("PreinvRoundingDivider equals round_div wherever 0 < 2d < 2^32 and |2n + d| < 2^62") {
+  std::mt19937_64 rng(19);
+  constexpr std::int64_t d_max = (std::int64_t(1) << 31) - 1;
+  constexpr std::int64_t x_max = (std::int64_t(1) << 62) - 1;
+  std::vector<std::int64_t> divisors = {1, 2, 3, 255, 256, 257, 65535, 65536, 65537, (1ll << 30) - 1, 1ll << 30,
+                                        (1ll << 30) + 1, d_max - 1, d_max};
+  for (int i = 0; i < 3000; ++i) divisors.push_back(1 + std::int64_t((rng() >> (rng() % 33)) % std::uint64_t(d_max)));
+  REQUIRE(PreinvRoundingDivider::fits(d_max));
+  REQUIRE(!PreinvRoundingDivider::fits(d_max + 1));
+  REQUIRE(!PreinvRoundingDivider::fits(0));
+  for (std::int64_t d : divisors) {
+    const PreinvRoundingDivider round(d);
+    // Around 0, the ties, and on both sides of a quotient of 2^32 (x = +-D 2^32, where the divider
+    // changes method), and the ends of the range.
+    const std::int64_t big = 2 * d * (std::int64_t(1) << 32);
+    const std::int64_t specials[] = {0, 1, -1, d, -d, d - 1, -d + 1, d / 2, -d / 2, (big - d) / 2, (big - d) / 2 - 1,
+                                     (big - d) / 2 + 1, (-big - d) / 2, (-big - d) / 2 + 1, (-big - d) / 2 - 1,
+                                     (x_max - d) / 2, (-x_max - d) / 2 + 1};
+    for (std::int64_t n : specials) {
+      INFO("n " << n << " d " << d);
+      REQUIRE(round(n) == round_div(n, d));
+    }
+    for (int i = 0; i < 400; ++i) {
+      const std::int64_t x = std::int64_t(rng() >> (2 + rng() % 62)) % x_max;
+      const std::int64_t n = (((rng() & 1) ? x : -x) - d) / 2;
+      INFO("n " << n << " d " << d);
+      REQUIRE(round(n) == round_div(n, d));
+    }
+    for (std::int64_t k = -3; k <= 3; ++k) {  // exact halves: 2n + d = k 2d
+      const std::int64_t n = (k * 2 * d - d) / 2;
+      if ((k * 2 * d - d) % 2 == 0) REQUIRE(round(n) == round_div(n, d));
+    }
+    // The corrections: x = q D + r with r at the ends of [0, D) for quotients across [0, 2^32),
+    // where an estimate one off is caught by the remainder tests (2n + d = x needs x - d even).
+    for (int i = 0; i < 200; ++i) {
+      const std::int64_t q = std::int64_t(rng() >> (32 + rng() % 32));
+      for (std::int64_t r : {std::int64_t(0), std::int64_t(1), 2 * d - 2, 2 * d - 1}) {
+        for (std::int64_t x : {q * 2 * d + r, -(q * 2 * d + r)}) {
+          if ((x - d) % 2 != 0) continue;
+          const std::int64_t n = (x - d) / 2;
+          INFO("n " << n << " d " << d);
+          REQUIRE(round(n) == round_div(n, d));
+        }
+      }
+    }
+  }
+}

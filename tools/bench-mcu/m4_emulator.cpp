@@ -150,6 +150,15 @@ void M4Emulator::resolve_pending(std::uint32_t next_address) {
   if (pending_counts_ == &run_.counted) run_.function_cycles[pending_function_] += pipeline_refill;
 }
 
+void M4Emulator::block_cost(std::uint32_t address, std::uint32_t* size, std::uint32_t* cycles) const {
+  *size = *cycles = 0;
+  if (address < flash_base || address - flash_base >= flash_size) return;
+  const std::int32_t index = block_index_[(address - flash_base) / 2];
+  if (index < 0) return;
+  *size = blocks_[index].decoded.size;
+  *cycles = blocks_[index].decoded.cycles;
+}
+
 void M4Emulator::on_block(std::uint32_t address, std::uint32_t size) {
   if (address == halt_) return;
   if (size == 0 || address < flash_base || address - flash_base >= flash_size) {
@@ -169,6 +178,7 @@ void M4Emulator::on_block(std::uint32_t address, std::uint32_t size) {
   c.cycles += b.decoded.cycles;
   for (int k = 0; k < class_count; ++k) c.by_class[k] += b.decoded.by_class[k];
   if (!b.excluded) run_.function_cycles[b.function] += b.decoded.cycles;
+  if (address_profile_ && !b.excluded) run_.block_runs[(address - flash_base) / 2] += 1;
   if (b.decoded.ends_with_conditional_branch()) {
     pending_ = true;
     pending_fallthrough_ = address + size;
@@ -243,6 +253,7 @@ RunCounts M4Emulator::call(std::uint32_t function, std::uint32_t stack_top, cons
   if (args.size() > 4) throw std::runtime_error("call: at most 4 register arguments");
   run_ = RunCounts{};
   run_.function_cycles.assign(functions_.size(), 0);
+  if (address_profile_) run_.block_runs.assign(flash_size / 2, 0);
   error_.clear();
   pending_ = false;
   current_ = nullptr;

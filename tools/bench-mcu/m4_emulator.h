@@ -36,6 +36,10 @@ struct RunCounts {
   Counts counted;   // everything but the excluded range
   Counts excluded;  // the excluded range (the benchmark's sink)
   std::vector<std::uint64_t> function_cycles;  // counted cycles per function of functions()
+  // With set_address_profile(true): how many times a counted block started at each halfword of
+  // flash, by (address - flash_base) / 2 (see M4Emulator::block_cost for its size and static cost;
+  // branch refills and division extras are in the totals only).
+  std::vector<std::uint64_t> block_runs;
 };
 
 class M4Emulator {
@@ -59,6 +63,10 @@ class M4Emulator {
   RunCounts call(std::uint32_t function, std::uint32_t stack_top, const std::vector<std::uint32_t>& args = {});
 
   const std::vector<ElfFunction>& functions() const { return functions_; }
+  // Whether call() fills RunCounts::block_runs (block counting only).
+  void set_address_profile(bool on) { address_profile_ = on; }
+  // Size in bytes and static cycles of the last block decoded at `address` (0, 0 for none).
+  void block_cost(std::uint32_t address, std::uint32_t* size, std::uint32_t* cycles) const;
 
   // Hook entry points (public for the C callbacks).
   void on_block(std::uint32_t address, std::uint32_t size);
@@ -83,6 +91,7 @@ class M4Emulator {
   uc_struct* uc_ = nullptr;
   CycleModel model_;
   bool per_instruction_;
+  bool address_profile_ = false;
   std::uint32_t halt_ = 0;
   std::uint32_t exclude_begin_ = 0, exclude_end_ = 0;
   std::vector<ElfFunction> functions_;  // the image's, then one for code outside them

@@ -26,6 +26,7 @@
 #include "common/tool_main.h"
 #include "core_bridge/core_stack.h"
 #include "core_bridge/pack.h"
+#include "io/atomic_file.h"
 #include "m4_emulator.h"
 #include "tile_hash.h"
 #include "tristream/render.h"
@@ -247,7 +248,8 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
 int run(const std::string& elf_dir, const std::vector<std::string>& meshes, const std::vector<std::string>& methods,
         const std::vector<std::string>& opts, const std::vector<std::string>& dithers,
         const std::vector<std::string>& outputs, const std::vector<std::string>& tiling_names, bool check_counts,
-        bool check_stack, int profile) {
+        bool check_stack, int profile, const std::string& address_profile) {
+  std::string address_lines;  // --profile-addresses: "configuration address cycles" per block
   std::vector<Tiling> tilings;
   for (const std::string& t : tiling_names) tilings.push_back(parse_tiling(t));
   std::vector<Size> sizes;
@@ -265,6 +267,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
     Program& p = programs[key];
     p.elf = read_elf(elf_dir + "/bench_" + key + ".elf");
     p.emu = std::make_unique<M4Emulator>(p.elf);
+    p.emu->set_address_profile(!address_profile.empty());
     if (check_counts) p.checker = std::make_unique<M4Emulator>(p.elf, true);
     p.core = read_size(elf_dir + "/ts_core_" + key + ".size");
     p.full = read_size(elf_dir + "/ts_core_" + opt + "_full.size");
@@ -368,6 +371,21 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
                                  {"cycles_share", round2(100.0 * double(f[i].first) / double(c.cycles))}});
                 j["profile_percent"] = top;
               }
+              if (!address_profile.empty()) {
+                const std::string name = mesh_name + " " + out_name + " " + t.name + " " + method + " " + opt +
+                                         (p.dither ? " dither" : " plain");
+                const std::vector<std::uint64_t>& b = o.counts.block_runs;
+                char line[96];
+                for (std::size_t i = 0; i < b.size(); ++i) {
+                  if (!b[i]) continue;
+                  const std::uint32_t address = flash_base + 2 * std::uint32_t(i);
+                  std::uint32_t size = 0, cost = 0;
+                  prog.emu->block_cost(address, &size, &cost);
+                  std::snprintf(line, sizeof line, "\t0x%08x\t%u\t%llu\t%llu\n", unsigned(address), unsigned(size),
+                                static_cast<unsigned long long>(b[i]), static_cast<unsigned long long>(b[i] * cost));
+                  address_lines += name + line;
+                }
+              }
               std::printf("%s\n", j.dump().c_str());
               std::fflush(stdout);
               rows.push_back({mesh_name, out_name, t.name, method, opt, p.dither != 0, per(c.cycles, pixels),
@@ -389,6 +407,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
   if (!all_equal) std::fprintf(stderr, "bench_mcu: the emulated M4 differs from the host (pixels or counts)\n");
   if (!stacks_within)
     std::fprintf(stderr, "bench_mcu: a stack high-water mark exceeds core_stack_bytes (core_bridge/core_stack.h)\n");
+  if (!address_profile.empty()) write_file_atomically(address_profile, address_lines);
   return all_equal && stacks_within ? 0 : 1;
 }
 
@@ -441,6 +460,7 @@ int main(int argc, char** argv) {
                            tilings = {"tiles32", "bands16", "frame"};
   bool check_counts = false, check_stack = false;
   int profile = 0;
+  std::string address_profile;
   run_cmd->add_option("--elf-dir", elf_dir, "Build directory of tools/bench-mcu/m4 (build-m4.sh)")->required();
   run_cmd->add_option("--meshes", meshes, "kodim23, scene4k, grid40k")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--methods", methods, "bilinear, zienkiewicz")->delimiter(',')->capture_default_str();
@@ -454,11 +474,14 @@ int main(int argc, char** argv) {
                     "Run each configuration again counting per instruction; the counts must be equal");
   run_cmd->add_flag("--check-stack", check_stack, "Fail when a stack high-water mark exceeds core_stack_bytes");
   run_cmd->add_option("--profile", profile, "Add the N functions with the most cycles to each line");
+  run_cmd->add_option("--profile-addresses", address_profile,
+                      "Write every block run (configuration, start address, bytes, runs, static cycles; tab-separated) to "
+                      "this file, for addr2line on a build with -g");
   CLI::App* cal_cmd = app.add_subcommand("calibrate", "Count the calibration loops and compare with their table");
   std::string cal_elf;
   cal_cmd->add_option("elf", cal_elf, "calibrate.elf")->required();
   return run_tool("bench_mcu", app, argc, argv, [&]() -> int {
     if (*cal_cmd) return calibrate(cal_elf);
-    return run(elf_dir, meshes, methods, opts, dithers, outputs, tilings, check_counts, check_stack, profile);
+    return run(elf_dir, meshes, methods, opts, dithers, outputs, tilings, check_counts, check_stack, profile, address_profile);
   });
 }
