@@ -60,15 +60,17 @@ struct DirectWriter {
     constexpr int bpp = bytes_per_pixel(F);
     if constexpr (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be) {
       // Without dithering the loop neither reads the flag nor the position.
+      // The pixel pointer is the loop counter (no column count kept beside it).
       if (!dither) {
+        uint8_t* const end = p + (x1 - x0 + 1) * bpp;
         if constexpr (Channels == 1) {
-          for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0) {
+          for (; p != end; p += bpp, v0 += d0) {
             const uint32_t u = v0 >> s;
-            store565<F>(p, pack565_by_table(u, u, u));
+            store565_bytes(p, pack565_bytes_by_table<F>(u, u, u));
           }
         } else {
-          for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0, v1 += d1, v2 += d2)
-            store565<F>(p, pack565_by_table(v0 >> s, v1 >> s, v2 >> s));
+          for (; p != end; p += bpp, v0 += d0, v1 += d1, v2 += d2)
+            store565_bytes(p, pack565_bytes_by_table<F>(v0 >> s, v1 >> s, v2 >> s));
         }
         return;
       }

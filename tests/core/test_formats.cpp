@@ -3,6 +3,8 @@
 // against independent expectations.
 #include <catch2/catch.hpp>
 
+#include <array>
+
 #include "core_support.h"
 #include "tristream/detail/pixel_writer.h"
 
@@ -181,16 +183,27 @@ TEST_CASE("RGB565 without dithering by multiply-adds equals the division by 255 
   CHECK(wrong == 0);
 }
 
-TEST_CASE("RGB565 by table equals the division by 255 for every value") {
+TEST_CASE("RGB565 by table equals the division by 255 for every value, in both byte orders") {
+  // The bytes the table form stores against pack565's value in the format's order.
+  auto bytes_of = [](std::uint16_t h) { return std::array<std::uint8_t, 2>{std::uint8_t(h), std::uint8_t(h >> 8)}; };
+  auto expected = [](std::uint16_t w, bool be) {
+    return be ? std::array<std::uint8_t, 2>{std::uint8_t(w >> 8), std::uint8_t(w)}
+              : std::array<std::uint8_t, 2>{std::uint8_t(w), std::uint8_t(w >> 8)};
+  };
   int wrong = 0;
   for (unsigned v = 0; v < 256; ++v)
     for (unsigned w : {0u, 1u, 127u, 128u, 254u, 255u}) {
-      wrong += core::detail::pack565_by_table(v, w, w) !=
-               core::detail::pack565(std::uint8_t(v), std::uint8_t(w), std::uint8_t(w), 127);
-      wrong += core::detail::pack565_by_table(w, v, w) !=
-               core::detail::pack565(std::uint8_t(w), std::uint8_t(v), std::uint8_t(w), 127);
-      wrong += core::detail::pack565_by_table(w, w, v) !=
-               core::detail::pack565(std::uint8_t(w), std::uint8_t(w), std::uint8_t(v), 127);
+      const unsigned rgb[3][3] = {{v, w, w}, {w, v, w}, {w, w, v}};
+      for (const auto& c : rgb) {
+        const std::uint16_t ref = core::detail::pack565(std::uint8_t(c[0]), std::uint8_t(c[1]), std::uint8_t(c[2]), 127);
+        wrong += bytes_of(core::detail::pack565_bytes_by_table<core::PixelFormat::rgb565_le>(c[0], c[1], c[2])) !=
+                 expected(ref, false);
+        wrong += bytes_of(core::detail::pack565_bytes_by_table<core::PixelFormat::rgb565_be>(c[0], c[1], c[2])) !=
+                 expected(ref, true);
+        std::uint8_t px[2] = {0, 0};
+        core::detail::store565_bytes(px, core::detail::pack565_bytes_by_table<core::PixelFormat::rgb565_be>(c[0], c[1], c[2]));
+        wrong += px[0] != std::uint8_t(ref >> 8) || px[1] != std::uint8_t(ref);
+      }
     }
   CHECK(wrong == 0);
 }

@@ -37,8 +37,10 @@ inline uint8_t luma(uint8_t r, uint8_t g, uint8_t b) {
   return uint8_t((19595u * r + 38470u * g + 7471u * b + 32768u) >> 16);
 }
 
+// The per-pixel helpers below are always inlined: at -Os GCC otherwise calls them once per pixel.
+
 // 4x4 Bayer thresholds scaled to [8, 248]: the rounding offset of an 8-bit to n-bit conversion.
-inline uint32_t bayer_offset(int32_t x, int32_t y) {
+__attribute__((always_inline)) inline uint32_t bayer_offset(int32_t x, int32_t y) {
   static const uint8_t matrix[4][4] = {{0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
   return uint32_t(matrix[y & 3][x & 3]) * 16u + 8u;
 }
@@ -46,44 +48,72 @@ inline uint32_t bayer_offset(int32_t x, int32_t y) {
 // n-bit value of an 8-bit one: round(v * max / 255) without dithering (offset 127).
 constexpr uint32_t reduce(uint32_t v, uint32_t max, uint32_t offset) { return (v * max + offset) / 255u; }
 
-inline uint16_t pack565(uint8_t r, uint8_t g, uint8_t b, uint32_t offset) {
+__attribute__((always_inline)) inline uint16_t pack565(uint8_t r, uint8_t g, uint8_t b, uint32_t offset) {
   return uint16_t((reduce(r, 31, offset) << 11) | (reduce(g, 63, offset) << 5) | reduce(b, 31, offset));
 }
 
 // pack565 without dithering (offset 127) by multiply-adds: (v 31 + 127) / 255 = (v 249 + 1014) >> 11
 // and (v 63 + 127) / 255 = (v 253 + 505) >> 10 for every 8-bit v (test_formats checks all of them),
 // and the fields placed by masks: no division and no shift back.
-inline uint16_t pack565_nearest(uint32_t r, uint32_t g, uint32_t b) {
+__attribute__((always_inline)) inline uint16_t pack565_nearest(uint32_t r, uint32_t g, uint32_t b) {
   return uint16_t(((r * 249 + 1014) & 0xF800u) | (((g * 253 + 505) >> 5) & 0x07E0u) | ((b * 249 + 1014) >> 11));
 }
 
-// The 5- and 6-bit values of every 8-bit value without dithering, reduce(v, 31, 127) and
-// reduce(v, 63, 127), for the pixel loops: one byte load per channel instead of a multiply-add and
-// masks (512 bytes of constant data; the same values by construction).
-struct Rgb565Tables {
-  uint8_t r5[256];
-  uint8_t g6[256];
+// The two bytes of an RGB565 pixel in the format's byte order as one halfword of a little-endian
+// host (the value that store565_bytes stores): for BE the bytes of w = R 2^11 + G 2^5 + B are
+// swapped, so R lands at bit 3, B at bit 8 and G split around them.
+template <PixelFormat F>
+constexpr uint16_t rgb565_bytes(uint32_t w) {
+  return F == PixelFormat::rgb565_be ? uint16_t((w >> 8 | w << 8) & 0xFFFFu) : uint16_t(w);
+}
+
+// The R and G fields of every 8-bit value without dithering, reduce(v, 31, 127) << 11 and
+// reduce(v, 63, 127) << 5, already in the format's byte order (rgb565_bytes): a pixel is three
+// halfword loads and two ORs, with no shift, mask or byte swap. B is R's field moved: in LE order
+// the R field shifted right by 11, in BE order shifted left by 5 (R at bit 3, B at bit 8), so one
+// table serves both (1 KB of constant data per format; the same values by construction, and
+// test_formats checks every one).
+// Two arrays rather than one struct: each gets its own base register, so the G lookup needs no
+// offset added per pixel.
+struct Rgb565Table {
+  uint16_t v[256];
 };
-constexpr Rgb565Tables make_rgb565_tables() {
-  Rgb565Tables t{};
-  for (uint32_t v = 0; v < 256; ++v) {
-    t.r5[v] = uint8_t(reduce(v, 31, 127));
-    t.g6[v] = uint8_t(reduce(v, 63, 127));
-  }
+template <PixelFormat F>
+constexpr Rgb565Table make_rgb565_table(uint32_t max, int shift) {
+  Rgb565Table t{};
+  for (uint32_t v = 0; v < 256; ++v) t.v[v] = rgb565_bytes<F>(reduce(v, max, 127) << shift);
   return t;
 }
-inline constexpr Rgb565Tables rgb565_tables = make_rgb565_tables();
+template <PixelFormat F>
+inline constexpr Rgb565Table rgb565_r_table = make_rgb565_table<F>(31, 11);
+template <PixelFormat F>
+inline constexpr Rgb565Table rgb565_g_table = make_rgb565_table<F>(63, 5);
 
-// pack565_nearest by the tables, for values already known to be in [0, 255].
-inline uint16_t pack565_by_table(uint32_t r, uint32_t g, uint32_t b) {
-  const Rgb565Tables& t = rgb565_tables;
-  return uint16_t((uint32_t(t.r5[r]) << 11) | (uint32_t(t.g6[g]) << 5) | t.r5[b]);
+// pack565_nearest by the tables, in the format's byte order (rgb565_bytes), for values already
+// known to be in [0, 255].
+template <PixelFormat F>
+__attribute__((always_inline)) inline uint16_t pack565_bytes_by_table(uint32_t r, uint32_t g, uint32_t b) {
+  const uint16_t* const rt = rgb565_r_table<F>.v;
+  const uint16_t* const gt = rgb565_g_table<F>.v;
+  const uint32_t blue = F == PixelFormat::rgb565_be ? uint32_t(rt[b]) << 5 : uint32_t(rt[b]) >> 11;
+  return uint16_t(rt[r] | gt[g] | blue);
+}
+
+// Stores a halfword made by rgb565_bytes or pack565_bytes_by_table: its two bytes in the
+// little-endian order of their bits, whatever the host's order.
+__attribute__((always_inline)) inline void store565_bytes(uint8_t* p, uint16_t h) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  memcpy(p, &h, 2);  // one halfword store
+#else
+  p[0] = uint8_t(h & 0xFF);
+  p[1] = uint8_t(h >> 8);
+#endif
 }
 
 // The two bytes of an RGB565 pixel in the format's byte order, as one store where the host is
 // little-endian (a halfword store on Cortex-M4; the byte order is that of the format, not the host's).
 template <PixelFormat F>
-inline void store565(uint8_t* p, uint16_t w) {
+__attribute__((always_inline)) inline void store565(uint8_t* p, uint16_t w) {
   static_assert(F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be, "an RGB565 format");
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
   const uint16_t bytes = F == PixelFormat::rgb565_be ? uint16_t(w >> 8 | w << 8) : w;
@@ -97,7 +127,7 @@ inline void store565(uint8_t* p, uint16_t w) {
 
 // Writes one pixel of 8-bit R, G, B at screen position (x, y) (used for dithering).
 template <PixelFormat F>
-inline void store_rgb(uint8_t* p, uint8_t r, uint8_t g, uint8_t b, int32_t x, int32_t y, bool dither) {
+__attribute__((always_inline)) inline void store_rgb(uint8_t* p, uint8_t r, uint8_t g, uint8_t b, int32_t x, int32_t y, bool dither) {
   if constexpr (F == PixelFormat::l8) {
     p[0] = luma(r, g, b);
   } else if constexpr (F == PixelFormat::rgb888) {
@@ -118,7 +148,7 @@ inline void store_rgb(uint8_t* p, uint8_t r, uint8_t g, uint8_t b, int32_t x, in
 
 // Writes one grey pixel; grey is replicated to R, G and B.
 template <PixelFormat F>
-inline void store_grey(uint8_t* p, uint8_t v, int32_t x, int32_t y, bool dither) {
+__attribute__((always_inline)) inline void store_grey(uint8_t* p, uint8_t v, int32_t x, int32_t y, bool dither) {
   if constexpr (F == PixelFormat::l8) {
     p[0] = v;
   } else {
