@@ -74,16 +74,19 @@ struct DirectWriter {
         }
         return;
       }
-      // Dithered: the row's four Bayer offsets once per span, then one per pixel by column.
+      // Dithered: the row's four Bayer offsets (scaled for pack565_dithered) once per span, then
+      // one per pixel by column.
       uint32_t offset[4];
-      for (int32_t i = 0; i < 4; ++i) offset[i] = bayer_offset(i, y);
-      for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0, v1 += d1, v2 += d2) {
-        const uint32_t o = offset[x & 3];
+      for (int32_t i = 0; i < 4; ++i) offset[i] = bayer_offset(i, y) * dither_scale;
+      const uint32_t k31 = in_register(dither_k31), k63 = in_register(dither_k63);
+      uint8_t* const end = p + (x1 - x0 + 1) * bpp;
+      for (uint32_t column = uint32_t(x0); p != end; p += bpp, ++column, v0 += d0, v1 += d1, v2 += d2) {
+        const uint32_t o = offset[column & 3];
         if constexpr (Channels == 1) {
-          const uint8_t u = uint8_t(v0 >> s);
-          store565<F>(p, pack565(u, u, u, o));
+          const uint32_t u = v0 >> s;
+          store565_bytes(p, rgb565_bytes<F>(pack565_dithered(u, u, u, o, k31, k63)));
         } else {
-          store565<F>(p, pack565(uint8_t(v0 >> s), uint8_t(v1 >> s), uint8_t(v2 >> s), o));
+          store565_bytes(p, rgb565_bytes<F>(pack565_dithered(v0 >> s, v1 >> s, v2 >> s, o, k31, k63)));
         }
       }
       return;

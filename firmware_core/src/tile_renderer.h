@@ -63,16 +63,22 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& 
 
 template <PixelFormat F>
 void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const RenderParams& p, bool grey) {
-  // Without dithering every row is the same: write the first, copy it to the others.
-  const bool same_rows = !(p.dither && (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be));
+  // Without dithering every row is the same: write the first, copy it to the others. With it the
+  // pixels repeat every 4 columns and every 4 rows (the Bayer matrix): 4 pixels of each of the
+  // first 4 rows, copied along the row, then whole rows copied from 4 rows above.
+  constexpr int bpp = bytes_per_pixel(F);
+  const bool dithered = p.dither && (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be);
+  const int32_t period = dithered ? 4 : 1;
+  const size_t row_bytes = size_t(rect.width()) * bpp;
   for (int32_t y = rect.y0; y < rect.y1; ++y) {
     uint8_t* row = base + (y - rect.y0) * stride;
-    if (same_rows && y > rect.y0) {
-      memcpy(row, base, size_t(rect.width()) * bytes_per_pixel(F));
+    if (y - rect.y0 >= period) {
+      memcpy(row, row - period * stride, row_bytes);
       continue;
     }
-    for (int32_t x = rect.x0; x < rect.x1; ++x) {
-      uint8_t* px = row + (x - rect.x0) * bytes_per_pixel(F);
+    const int32_t first = rect.width() < period ? rect.width() : period;
+    for (int32_t x = rect.x0; x < rect.x0 + first; ++x) {
+      uint8_t* px = row + (x - rect.x0) * bpp;
       if constexpr (F == PixelFormat::coverage8) {
         px[0] = 0;
       } else if (grey) {
@@ -80,6 +86,12 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
       } else {
         store_rgb<F>(px, p.background[0], p.background[1], p.background[2], x, y, p.dither);
       }
+    }
+    // Doubling copies: [0, n) to [n, 2n) (never overlapping), then the rest.
+    for (size_t done = size_t(first) * bpp; done < row_bytes;) {
+      const size_t n = done < row_bytes - done ? done : row_bytes - done;
+      memcpy(row + done, row, n);
+      done += n;
     }
   }
 }

@@ -183,6 +183,22 @@ TEST_CASE("RGB565 without dithering by multiply-adds equals the division by 255 
   CHECK(wrong == 0);
 }
 
+TEST_CASE("Dithered RGB565 by multiply-adds equals the division by 255 for every value and offset") {
+  int wrong = 0;
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column) {
+      const std::uint32_t o = core::detail::bayer_offset(column, row);
+      for (unsigned v = 0; v < 256; ++v)
+        for (unsigned w : {0u, 1u, 127u, 128u, 254u, 255u}) {
+          const unsigned rgb[3][3] = {{v, w, w}, {w, v, w}, {w, w, v}};
+          for (const auto& c : rgb)
+            wrong += core::detail::pack565_dithered(c[0], c[1], c[2], o * core::detail::dither_scale) !=
+                     core::detail::pack565(std::uint8_t(c[0]), std::uint8_t(c[1]), std::uint8_t(c[2]), o);
+        }
+    }
+  CHECK(wrong == 0);
+}
+
 TEST_CASE("RGB565 by table equals the division by 255 for every value, in both byte orders") {
   // The bytes the table form stores against pack565's value in the format's order.
   auto bytes_of = [](std::uint16_t h) { return std::array<std::uint8_t, 2>{std::uint8_t(h), std::uint8_t(h >> 8)}; };

@@ -52,10 +52,33 @@ __attribute__((always_inline)) inline uint16_t pack565(uint8_t r, uint8_t g, uin
   return uint16_t((reduce(r, 31, offset) << 11) | (reduce(g, 63, offset) << 5) | reduce(b, 31, offset));
 }
 
+// pack565 with a dithering offset o by multiply-adds: t / 255 = (t 0x8081) >> 23 for t <= 16313
+// (t = v 63 + o is at most 16313), so reduce(v, max, o) = (v (max 0x8081) + o 0x8081) >> 23, one
+// multiply-add per channel with o_scaled = o 0x8081 computed once per offset (test_formats checks
+// every value and offset against pack565).
+inline constexpr uint32_t dither_scale = 0x8081u;
+inline constexpr uint32_t dither_k31 = 31u * dither_scale, dither_k63 = 63u * dither_scale;
+// k31 and k63: dither_k31 and dither_k63, passed in by loops that keep them in registers (see
+// in_register). The fields are masked in place: t < 2^28 for 31 and 2^29 for 63, so t >> 23 fits
+// the field and (t >> 12) & 0xF800 is (t >> 23) << 11.
+__attribute__((always_inline)) inline uint16_t pack565_dithered(uint32_t r, uint32_t g, uint32_t b, uint32_t o_scaled,
+                                                                uint32_t k31 = dither_k31, uint32_t k63 = dither_k63) {
+  const uint32_t tr = r * k31 + o_scaled, tg = g * k63 + o_scaled, tb = b * k31 + o_scaled;
+  return uint16_t(((tr >> 12) & 0xF800u) | ((tg >> 18) & 0x07E0u) | (tb >> 23));
+}
+
+// v unchanged, but opaque to the optimizer: a constant multiplier kept in a register for a
+// multiply-add (GCC expands a multiplication by a constant into shifts and adds: four instructions
+// where the Cortex-M4's MLA is one).
+__attribute__((always_inline)) inline uint32_t in_register(uint32_t v) {
+  __asm__("" : "+r"(v));
+  return v;
+}
+
 // pack565 without dithering (offset 127) by multiply-adds: (v 31 + 127) / 255 = (v 249 + 1014) >> 11
 // and (v 63 + 127) / 255 = (v 253 + 505) >> 10 for every 8-bit v (test_formats checks all of them),
 // and the fields placed by masks: no division and no shift back.
-__attribute__((always_inline)) inline uint16_t pack565_nearest(uint32_t r, uint32_t g, uint32_t b) {
+inline uint16_t pack565_nearest(uint32_t r, uint32_t g, uint32_t b) {
   return uint16_t(((r * 249 + 1014) & 0xF800u) | (((g * 253 + 505) >> 5) & 0x07E0u) | ((b * 249 + 1014) >> 11));
 }
 
@@ -113,7 +136,7 @@ __attribute__((always_inline)) inline void store565_bytes(uint8_t* p, uint16_t h
 // The two bytes of an RGB565 pixel in the format's byte order, as one store where the host is
 // little-endian (a halfword store on Cortex-M4; the byte order is that of the format, not the host's).
 template <PixelFormat F>
-__attribute__((always_inline)) inline void store565(uint8_t* p, uint16_t w) {
+inline void store565(uint8_t* p, uint16_t w) {
   static_assert(F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be, "an RGB565 format");
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
   const uint16_t bytes = F == PixelFormat::rgb565_be ? uint16_t(w >> 8 | w << 8) : w;
@@ -127,7 +150,7 @@ __attribute__((always_inline)) inline void store565(uint8_t* p, uint16_t w) {
 
 // Writes one pixel of 8-bit R, G, B at screen position (x, y) (used for dithering).
 template <PixelFormat F>
-__attribute__((always_inline)) inline void store_rgb(uint8_t* p, uint8_t r, uint8_t g, uint8_t b, int32_t x, int32_t y, bool dither) {
+inline void store_rgb(uint8_t* p, uint8_t r, uint8_t g, uint8_t b, int32_t x, int32_t y, bool dither) {
   if constexpr (F == PixelFormat::l8) {
     p[0] = luma(r, g, b);
   } else if constexpr (F == PixelFormat::rgb888) {
@@ -135,7 +158,7 @@ __attribute__((always_inline)) inline void store_rgb(uint8_t* p, uint8_t r, uint
     p[1] = g;
     p[2] = b;
   } else if constexpr (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be) {
-    store565<F>(p, dither ? pack565(r, g, b, bayer_offset(x, y)) : pack565_nearest(r, g, b));
+    store565<F>(p, dither ? pack565_dithered(r, g, b, bayer_offset(x, y) * dither_scale) : pack565_nearest(r, g, b));
   } else if constexpr (F == PixelFormat::xrgb8888) {
     p[0] = b;
     p[1] = g;
@@ -148,7 +171,7 @@ __attribute__((always_inline)) inline void store_rgb(uint8_t* p, uint8_t r, uint
 
 // Writes one grey pixel; grey is replicated to R, G and B.
 template <PixelFormat F>
-__attribute__((always_inline)) inline void store_grey(uint8_t* p, uint8_t v, int32_t x, int32_t y, bool dither) {
+inline void store_grey(uint8_t* p, uint8_t v, int32_t x, int32_t y, bool dither) {
   if constexpr (F == PixelFormat::l8) {
     p[0] = v;
   } else {
