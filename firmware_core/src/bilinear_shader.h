@@ -125,39 +125,25 @@ struct BilinearShader {
     auto* p = writer.at(x0, y);
     if constexpr (Writer::takes_rounded) {
       // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded into
-      // the start value (covered pixels hold values far from the int32 limits). Values are linear
-      // along the span, so when both ends round into [0, 255] (int32(v) >> 16 in [0, 255], i.e.
-      // v < 2^24 unsigned) every pixel does: no clamping.
+      // the start value. No clamping is needed: a covered pixel is in the closed triangle, so its
+      // exact value is a convex combination of vertex values in [0, 255 * 2^8] (open_blob checks
+      // them), i.e. in [0, 255 * 2^16] in q16_16, and the stepped value is within (1 + |x - xr| +
+      // |y - yr|) / 2 < 2^12 units of it (docs/FIXED_POINT.md, max_dimension <= 4096): v + 2^15
+      // stays in [0, 2^24), so (v + 2^15) >> 16 is in [0, 255].
+      static_assert(config::max_dimension <= 4096, "the stepped values' error bound needs boxes below 4096 pixels");
       constexpr uint32_t half = 1u << (q16_16::frac_bits - 1);
-      constexpr uint32_t in_range = 1u << (q16_16::frac_bits + 8);
-      const uint32_t dx = uint32_t(x0 - xr), dy = uint32_t(y - yr), n = uint32_t(x1 - x0);
+      const uint32_t dx = uint32_t(x0 - xr), dy = uint32_t(y - yr);
       const BilinearChannel &c0 = ch[0], &c1 = ch[Channels > 1 ? 1 : 0], &c2 = ch[Channels - 1];
       const uint32_t v0 = c0.at_offset(dx, dy) + half, d0 = c0.step();
       const uint32_t v1 = Channels == 3 ? c1.at_offset(dx, dy) + half : 0, d1 = Channels == 3 ? c1.step() : 0;
       const uint32_t v2 = Channels == 3 ? c2.at_offset(dx, dy) + half : 0, d2 = Channels == 3 ? c2.step() : 0;
-      if ((v0 | (v0 + d0 * n) | v1 | (v1 + d1 * n) | v2 | (v2 + d2 * n)) < in_range) {
-        writer.put_span_in_range(p, x0, x1, y, v0, v1, v2, d0, d1, d2);
-        return;
-      }
+      writer.put_span_in_range(p, x0, x1, y, v0, v1, v2, d0, d1, d2);
+      return;
     }
     uint32_t v[Channels], dv[Channels];
     for (int c = 0; c < Channels; ++c) {
       v[c] = ch[c].at(x0, y, xr, yr);
       dv[c] = ch[c].step();
-    }
-    if constexpr (Writer::takes_rounded) {
-      // Some pixel out of [0, 255]: rounded and clamped one by one (rare).
-      for (int c = 0; c < Channels; ++c) v[c] += 1u << (q16_16::frac_bits - 1);
-      for (int32_t x = x0; x <= x1; ++x) {
-        int32_t r[Channels];
-        for (int c = 0; c < Channels; ++c) {
-          r[c] = int32_t(v[c]) >> q16_16::frac_bits;
-          v[c] += dv[c];
-        }
-        writer.put_rounded(p, x, y, r);
-        p += bpp;
-      }
-      return;
     }
     for (int32_t x = x0; x <= x1; ++x) {
       int32_t q8[Channels];

@@ -85,6 +85,28 @@ TEST_CASE("sub-pixel vertices and sparse meshes (large triangles, steep gradient
     }
 }
 
+TEST_CASE("saturated values: every vertex at 0 or 255 (rounding must never step out of [0, 255])") {
+  // Neighbouring vertices at the two ends of the range give the steepest gradients the values
+  // allow; the core renders these pixels without clamping (bilinear_shader.h), so a value stepped
+  // past 255 or below 0 would wrap and differ from the reference by up to 255.
+  auto saturate = [](Mesh m) {
+    for (double& v : m.values) v = v >= 128 ? 255.0 : 0.0;
+    return m;
+  };
+  for (std::uint32_t seed = 1; seed <= 4; ++seed)
+    for (std::string_view method : {"bilinear", "zienkiewicz"}) {
+      const std::string tag = "seed " + std::to_string(seed);
+      check_against_reference(single_mesh(saturate(random_subpixel_mesh(90, 70, 300, seed, true, 3)), 90, 70,
+                                          ColorSpace::rgb),
+                              method, "saturated sub-pixel rgb " + tag);
+      check_against_reference(single_mesh(saturate(random_lattice_mesh(64, 48, 150, seed, 100)), 64, 48), method,
+                              "saturated grey " + tag);
+      check_against_reference(single_mesh(saturate(random_lattice_mesh(33, 25, 60, seed, 0, 3)), 33, 25,
+                                          ColorSpace::rgb),
+                              method, "saturated 2x " + tag, 65, 49);
+    }
+}
+
 TEST_CASE("up-scaled output (corner to corner)") {
   // Integer scale factors keep the mapped vertices on the 1/16 grid, so the reference
   // tolerance applies unchanged.
