@@ -114,7 +114,8 @@ TEST_CASE("ChunkedRoundingDivider equals round_div wherever 2d <= 2^17 and |2n +
   std::mt19937_64 rng(17);
   constexpr std::int64_t d_max = std::int64_t(ChunkedRoundingDivider::max_divisor / 2);
   constexpr std::int64_t x_max = (std::int64_t(1) << ChunkedRoundingDivider::numerator_bits) - 1;
-  std::vector<std::int64_t> divisors = {1, 2, 3, 255, 256, 257, d_max - 1, d_max};
+  // Both methods: D = 2d up to two_chunk_divisor (two divisions) and above it (three).
+  std::vector<std::int64_t> divisors = {1, 2, 3, 255, 256, 257, 32767, 32768, 32769, d_max - 1, d_max};
   for (int i = 0; i < 3000; ++i) divisors.push_back(1 + std::int64_t(rng() % std::uint64_t(d_max)));
   for (std::int64_t d : divisors) {
     const ChunkedRoundingDivider round(d);

@@ -151,22 +151,31 @@ class ShortRoundingDivider {
 
 // n / d rounded to nearest (halves up) like RoundingDivider, for small divisors: 2d <= 2^17 and
 // |2n + d| < 2^47 (the caller proves both from its bit budget). x = 2n + d is divided by D = 2d in
-// three 15-bit chunks by 32-bit divisions: each remainder is below D <= 2^17, so remainder * 2^15
-// + chunk < 2^32. No reciprocal and no 64-bit product: on Cortex-M4 three hardware divides of a few
-// cycles against a library division for the reciprocal and four-multiply high products. Negative
-// x: floor(x / D) = ~floor(~x / D), both as s ^ q(x ^ s) with s = x >> 63 (as ShortRoundingDivider).
+// 32-bit divisions of chunks: each remainder is below D, so remainder * 2^k + chunk < 2^32 for
+// chunks of k bits with D <= 2^(32 - k). D <= 2^16 (most triangles of the scan path): two
+// divisions, of x >> 16 (below 2^31) and of 16 bits; else three of 15 bits. No reciprocal and no
+// 64-bit product: on Cortex-M4 two or three hardware divides of a few cycles against a library
+// division for the reciprocal and four-multiply high products. Negative x: floor(x / D) =
+// ~floor(~x / D), both as s ^ q(x ^ s) with s = x >> 63 (as ShortRoundingDivider).
 class ChunkedRoundingDivider {
  public:
   static constexpr int chunk_bits = 15;
   static constexpr uint64_t max_divisor = uint64_t(1) << (32 - chunk_bits);  // D = 2d at most this
   static constexpr int numerator_bits = 3 * chunk_bits + 2;                  // |2n + d| < 2^47
+  static constexpr uint32_t two_chunk_divisor = uint32_t(1) << 16;           // D at most this: two divisions
 
   explicit ChunkedRoundingDivider(int64_t d) : half_(d), den_(uint32_t(2 * d)) {}
   int64_t operator()(int64_t n) const {
-    constexpr uint32_t mask = (uint32_t(1) << chunk_bits) - 1;
     const int64_t x = 2 * n + half_;
     const int64_t s = x >> 63;
     const uint64_t u = uint64_t(x ^ s);
+    if (den_ <= two_chunk_divisor) {
+      const uint32_t top = uint32_t(u >> 16);  // u < 2^47: below 2^31
+      const uint32_t q1 = top / den_;
+      const uint32_t t0 = ((top - q1 * den_) << 16) | (uint32_t(u) & 0xFFFFu);
+      return int64_t((uint64_t(q1) << 16) | (t0 / den_)) ^ s;
+    }
+    constexpr uint32_t mask = (uint32_t(1) << chunk_bits) - 1;
     const uint32_t top = uint32_t(u >> (2 * chunk_bits));
     const uint32_t q2 = top / den_;
     const uint32_t t1 = ((top - q2 * den_) << chunk_bits) | (uint32_t(u >> chunk_bits) & mask);
