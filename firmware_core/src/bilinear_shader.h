@@ -85,21 +85,22 @@ struct BilinearShader {
     yr = s.yr;
     int32_t vals[3][Channels];
     for (int k = 0; k < 3; ++k) vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
-    auto setup = [&](const auto& by_area2) {
+    auto setup = [&](const auto& by_area2, const auto* e_ref) {
       for (int c = 0; c < Channels; ++c) {
         const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
-        ch[c].setup(s.a, s.b, s.e_ref, by_area2, v3);
+        ch[c].setup(s.a, s.b, e_ref, by_area2, v3);
       }
     };
-    // The scan path's numerators are small enough for the division without correction.
+    // The scan path's numerators are small enough for the division without correction, and its
+    // edge values fit int32 (e_ref32).
     if (bilinear_short_division && s.scan_path) {
-      setup(ShortRoundingDivider(s.area2));
+      setup(ShortRoundingDivider(s.area2), s.e_ref32);
     } else if (bilinear_chunked_division && s.scan_path) {
-      setup(ChunkedRoundingDivider(s.area2));
+      setup(ChunkedRoundingDivider(s.area2), s.e_ref32);
     } else if (bilinear_preinv_division && PreinvRoundingDivider::fits(s.area2)) {
-      setup(PreinvRoundingDivider(s.area2));
+      setup(PreinvRoundingDivider(s.area2), s.e_ref);
     } else {
-      setup(RoundingDivider(s.area2));
+      setup(RoundingDivider(s.area2), s.e_ref);
     }
 #if TS_USE_SSE2
     if constexpr (in_lanes) {

@@ -22,8 +22,11 @@ struct BilinearChannel {
   // values: q8_8 of vertices 0, 1, 2. a[k], b[k]: edge k's coefficients; e_ref[k]: edge k's exact
   // value at a reference pixel (xr, yr) near the triangle. by_area2: division by the doubled area,
   // rounded to nearest (RoundingDivider, or ShortRoundingDivider where the numerators allow).
-  template <typename Divider>
-  void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const Divider& by_area2, const int32_t* values) {
+  // EdgeValue: int64_t, or int32_t where the edge values fit (the scan path), which makes the
+  // products 32 x 32 -> 64 (one multiply-accumulate each on Cortex-M4).
+  template <typename Divider, typename EdgeValue>
+  void setup(const int32_t* a, const int32_t* b, const EdgeValue* e_ref, const Divider& by_area2,
+             const int32_t* values) {
     // E_k / area2 weighs vertex k + 2: written out, no index arithmetic per term.
     const int64_t v2 = values[2], v0 = values[0], v1 = values[1];
     const int64_t nx = v2 * a[0] + v0 * a[1] + v1 * a[2];
