@@ -16,7 +16,7 @@ class RowMasks {
   }
   // The uncovered columns before the covered ones are skipped, then the covered ones counted: the
   // mask is the bits from the first covered column to the one before the next uncovered one.
-  uint32_t covered() const {
+  __attribute__((always_inline)) uint32_t covered() const {
     int32_t e0 = row_[0], e1 = row_[1], e2 = row_[2];
     const int32_t a0 = a_[0], a1 = a_[1], a2 = a_[2];
     uint32_t bit = 1;
@@ -25,7 +25,7 @@ class RowMasks {
     for (; bit != end_ && (e0 | e1 | e2) >= 0; bit <<= 1) e0 += a0, e1 += a1, e2 += a2;
     return bit - first;
   }
-  void next_row() {
+  __attribute__((always_inline)) void next_row() {
     for (int k = 0; k < 3; ++k) row_[k] += b_[k];
   }
 

@@ -165,7 +165,7 @@ class ChunkedRoundingDivider {
   static constexpr uint32_t two_chunk_divisor = uint32_t(1) << 16;           // D at most this: two divisions
 
   explicit ChunkedRoundingDivider(int64_t d) : half_(d), den_(uint32_t(2 * d)) {}
-  int64_t operator()(int64_t n) const {
+  __attribute__((always_inline)) int64_t operator()(int64_t n) const {
     const int64_t x = 2 * n + half_;
     const int64_t s = x >> 63;
     const uint64_t u = uint64_t(x ^ s);
@@ -210,7 +210,7 @@ class PreinvRoundingDivider {
         norm_(uint32_t(2 * d) << shift_),
         inv_(div_64_32(~norm_, 0xFFFFFFFFu, norm_)) {}  // floor((2^64 - 1) / norm) - 2^32
 
-  int64_t operator()(int64_t n) const {
+  __attribute__((always_inline)) int64_t operator()(int64_t n) const {
     const int64_t x = 2 * n + half_;
     const int64_t s = x >> 63;
     const uint64_t u = uint64_t(x ^ s);

@@ -78,7 +78,7 @@ struct FloorStepper {
   }
   // Without a branch: whether the remainder wraps follows the slope's fraction, which a branch
   // predictor guesses badly.
-  void next_row() {
+  __attribute__((always_inline)) void next_row() {
     r += r_step;
     const int32_t wrap = r >= den;
     q += q_step + wrap;
@@ -133,7 +133,7 @@ struct SpanStepper {
 #endif
   }
   // Columns [*x0, *x1] (inclusive; empty when *x0 > *x1) of the current row.
-  void span(int32_t* x0, int32_t* x1) const {
+  __attribute__((always_inline)) void span(int32_t* x0, int32_t* x1) const {
 #if TS_USE_SSE2
     const int32_t q0 = _mm_cvtsi128_si32(q_), q1 = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 1));
     const int32_t v = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 2));
@@ -149,7 +149,7 @@ struct SpanStepper {
     *x0 = max2(-q0, third_lo);
     *x1 = min2(q1, third_hi);
   }
-  void next_row() {
+  __attribute__((always_inline)) void next_row() {
 #if TS_USE_SSE2
     // FloorStepper::next_row in lanes 0..2 (lane 3 idle): r < 2 den < 2^31, so the signed compare
     // r > den - 1 is r >= den; a wrap is -1 in its lane.
