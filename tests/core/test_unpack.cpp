@@ -142,3 +142,24 @@ TEST_CASE("blobs are told from .tri text by their bytes") {
   CHECK_FALSE(is_blob(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size())));
   CHECK_FALSE(is_blob({}));
 }
+
+TEST_CASE("every damaged byte is read back or refused with a DataError, never out of bounds") {
+  const std::vector<std::uint8_t> good =
+      pack_blob(single_mesh(random_lattice_mesh(30, 20, 25, 8, 0, 3), 30, 20, ColorSpace::rgb), core::Method::zienkiewicz);
+  int refused = 0, read = 0;
+  for (std::size_t at = 0; at < good.size(); ++at)
+    for (std::uint8_t x : {std::uint8_t(0x01), std::uint8_t(0x80), std::uint8_t(0xFF)}) {
+      std::vector<std::uint8_t> b(good);  // exactly sized: ASan sees overreads
+      b[at] ^= x;
+      try {
+        const UnpackedBlob u = unpack_blob(b, "b.bin");
+        CHECK(u.tri.layers.size() == 1);
+        ++read;
+      } catch (const DataError& e) {
+        CHECK(std::string(e.what()).rfind("b.bin: byte ", 0) == 0);
+        ++refused;
+      }
+    }
+  CHECK(refused > 0);
+  CHECK(read > 0);  // values, gradients and padding may change without making the blob invalid
+}
