@@ -65,7 +65,7 @@ void check_drawable(const Mesh& mesh, const core::BlobLayer& layer, const core::
 }  // namespace
 
 bool is_blob(std::span<const std::uint8_t> bytes) {
-  if (bytes.size() >= 4 && std::memcmp(bytes.data(), "TSTB", 4) == 0) return true;
+  if (bytes.size() >= 3 && std::memcmp(bytes.data(), "TST", 3) == 0) return true;  // TSTB, TSTC: never .tri text
   core::Blob blob;
   core::BlobError error;
   const core::Status s = core::open_blob(bytes.data(), bytes.size(), &blob, &error);

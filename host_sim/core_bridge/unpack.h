@@ -13,8 +13,9 @@
 namespace tristream {
 
 // Whether `bytes` are meant as a blob rather than a .tri text: open_blob recognizes their magic
-// (it reports anything but bad_magic), or they start with "TSTB". Decided by the content, never by
-// the file name, so any variant open_blob accepts is taken.
+// (it reports anything but bad_magic), or they start with "TST" (the blobs' magics "TSTB" and
+// "TSTC"; a .tri starts with "tri", a comment or a BOM). Decided by the content, never by the
+// file name, so any variant open_blob accepts is taken, and one it does not is refused as a blob.
 bool is_blob(std::span<const std::uint8_t> bytes);
 
 // The mesh a blob draws. Positions are the blob's fixed-point positions in pixels, values its

@@ -138,6 +138,8 @@ TEST_CASE("blobs are told from .tri text by their bytes") {
       pack_blob(single_mesh(random_lattice_mesh(20, 20, 10, 1, 0, 1), 20, 20), core::Method::bilinear);
   CHECK(is_blob(blob));
   CHECK(is_blob(std::vector<std::uint8_t>(blob.begin(), blob.begin() + 4)));  // truncated: still a blob
+  const std::string compressed = "TSTC and more";  // a variant this core may not open: refused as a blob
+  CHECK(is_blob(std::span(reinterpret_cast<const std::uint8_t*>(compressed.data()), compressed.size())));
   const std::string text = "tri 1\nsize 2 2\nchannels grey\nvertices 3\n0 0 1\n1 0 2\n0 1 3\n";
   CHECK_FALSE(is_blob(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size())));
   CHECK_FALSE(is_blob({}));

@@ -40,7 +40,7 @@ CODEC_LABEL = {"jpeg": "JPEG (baseline, optimize, 4:2:0)", "webp": "WebP (lossy,
                "jp2": "JPEG 2000 (9/7, codestream)"}
 BLOBS = ("v1", "compressed")
 COLUMNS = ["image", "group", "width", "height", "density_pct", "vertices", "triangles", "psnr_blob",
-           "raw_bytes", "v1_bytes", "compressed_bytes"]
+           "raw_bytes", "v1_bytes", "compressed_bytes", "compressed_render"]
 for _c in CODECS:
     COLUMNS += [f"{_c}_param", f"{_c}_bytes", f"{_c}_psnr"]
 for _b in BLOBS:
@@ -241,12 +241,19 @@ def measure(case):
             j = json.loads(run([b / "trisim", "compare", v1, "--json"], "trisim compare").splitlines()[0])
             row["vertices"], row["triangles"] = j["vertices"], j["triangles"]
             if compress:
+                # The same mesh as the v1 blob: its render must be the v1 blob's, pixel for pixel.
+                # A trisim that cannot open it yet leaves that unchecked (compressed_render says so).
                 run([b / "tripack", tri, "-o", packed, "-m", "bilinear", "--compress"], "tripack --compress")
                 row["compressed_bytes"] = packed.stat().st_size
-                run([b / "trisim", "render", packed, "-o", render], "trisim render (compressed)")
-                with Image.open(render) as r:
-                    if psnr(as_array(r, grey), original) != psnr(rendered, original):
-                        raise RuntimeError("the compressed blob renders differently from the v1 blob")
+                p = subprocess.run([str(b / "trisim"), "render", str(packed), "-o", str(render)], capture_output=True,
+                                   text=True)
+                if p.returncode != 0:
+                    row["compressed_render"] = "not checked: " + (p.stderr.strip().splitlines() or ["?"])[-1][:200]
+                else:
+                    with Image.open(render) as r:
+                        if not (as_array(r, grey) == rendered).all():
+                            raise RuntimeError("the compressed blob renders differently from the v1 blob")
+                    row["compressed_render"] = "identical"
         target = row["psnr_blob"]
         for codec in CODECS:
             found = codec_at_psnr(codec, image, original, grey, target)
