@@ -230,7 +230,7 @@ def measure(case):
     b = Path(bin_dir)
     try:
         with tempfile.TemporaryDirectory(prefix="rd-") as tmp:
-            tri, v1, packed, render = (Path(tmp) / f for f in ("x.tri", "x.bin", "x.tsc", "x.png"))
+            tri, v1, packed, render = (Path(tmp) / f for f in ("x.tri", "x.bin", "x-compressed.bin", "x.png"))
             run([b / "triencode", path, "-n", vertices, "-o", tri] + (["--grey"] if grey else []), "triencode")
             run([b / "tripack", tri, "-o", v1, "-m", "bilinear"], "tripack")
             row["v1_bytes"] = v1.stat().st_size
@@ -403,11 +403,11 @@ def main(argv):
             write_chart(out / "rd.png", rows, table)
     except OSError as e:
         fail(EXIT_CANTCREAT, f"{out}: cannot write: {e}")
+    print(f"wrote {out / 'rd.csv'}" + (f" and {out / 'rd.png'}" if table else " (no case succeeded: no chart)"))
     failed = sum(r["status"] != "ok" for r in rows)
     for r in rows:
         if r["status"] != "ok":
             note(f"{r['image']} at {r['density_pct']:g} %: {r['error']}")
-    print(f"wrote {out / 'rd.csv'} and {out / 'rd.png'}")
     print(summary(table, failed))
     return EXIT_SOFTWARE if failed else 0
 
