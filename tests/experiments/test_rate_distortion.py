@@ -79,6 +79,41 @@ class PsnrTest(unittest.TestCase):
                 self.assertGreater(hi, lo, f"{codec} {mode}")
 
 
+class MediansTest(unittest.TestCase):
+    def row(self, group, density, v1, jpeg, param=40):
+        r = dict.fromkeys(rd.COLUMNS, "")
+        r.update(group=group, density_pct=density, v1_bytes=v1, status="ok", jpeg_param=param)
+        if jpeg:
+            r.update(jpeg_bytes=jpeg, v1_over_jpeg=v1 / jpeg)
+        return r
+
+    def test_medians_per_group_and_density(self):
+        rows = [self.row("grey", 1.0, 100, 10), self.row("grey", 1.0, 300, 10), self.row("grey", 2.0, 50, 10),
+                self.row("colour", 1.0, 80, 10), self.row("colour", 1.0, 80, None, "unreached")]
+        t = rd.medians(rows)
+        self.assertEqual(t[("grey", 1.0, "v1", "jpeg")], (20.0, 10.0, 30.0, 2, 0))
+        self.assertEqual(t[("grey", "all", "v1", "jpeg")], (10.0, 5.0, 30.0, 3, 0))
+        self.assertEqual(t[("colour", 1.0, "v1", "jpeg")], (8.0, 8.0, 8.0, 1, 1))  # unreached: counted, not ranked
+        self.assertNotIn(("grey", 1.0, "compressed", "jpeg"), t)
+        self.assertIn("1 unreached", rd.summary(t, 0))
+
+    def test_report_only_reads_an_earlier_run(self):
+        rows = [self.row("grey", 0.5, 120, 10), self.row("colour", 0.5, 60, 20)]
+        with tempfile.TemporaryDirectory() as out:
+            rd.write_csv(Path(out) / "rd.csv", rows)
+            p = subprocess.run(["/usr/bin/python3", str(REPO / "tools/experiments/rate_distortion.py"), "unused", out,
+                                "--report-only"], capture_output=True, text=True)
+            self.assertEqual(p.returncode, 0, p.stderr)
+            self.assertRegex(p.stdout, r"grey\s+0\.5 %\s+v1\s+/ jpeg\s+12\.00x")
+            self.assertRegex(p.stdout, r"colour\s+0\.5 %\s+v1\s+/ jpeg\s+3\.00x")
+            self.assertTrue((Path(out) / "rd.png").is_file())
+            (Path(out) / "rd.csv").write_text("image,group\nx,grey\n")
+            p = subprocess.run(["/usr/bin/python3", str(REPO / "tools/experiments/rate_distortion.py"), "unused", out,
+                                "--report-only"], capture_output=True, text=True)
+            self.assertEqual(p.returncode, 65)
+            self.assertIn("rd.csv: expected the columns", p.stderr)
+
+
 @unittest.skipUnless(TOOLS, f"triencode, tripack and trisim not found in {BIN} (set TRISTREAM_BIN)")
 class QuickRunTest(unittest.TestCase):
     def test_quick_mode(self):

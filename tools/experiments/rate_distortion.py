@@ -73,6 +73,8 @@ def parse_args(argv):
                                        "(default 0.5,1,2,5; --quick: 0.5,1)")
     p.add_argument("--quick", action="store_true", help="the demo image alone at two densities (for ctest)")
     p.add_argument("--jobs", type=int, default=1, help="cases measured at once (default 1)")
+    p.add_argument("--report-only", action="store_true",
+                   help="measure nothing: the chart and the medians from OUT_DIR/rd.csv of an earlier run")
     args = p.parse_args(argv)
     if args.jobs < 1:
         p.error("--jobs: expected a positive number")
@@ -308,7 +310,9 @@ def write_csv(path, rows):
 
 
 def medians(rows):
-    """{(group, density or 'all', blob, codec): (median, min, max, count)} of the ratios."""
+    """{(group, density or 'all', blob, codec): (median, min, max, count, unreached)} of the ratios;
+    a case where the codec never reaches the blob's PSNR (even at its best quality) is left out
+    of that codec's median and counted as unreached."""
     out = {}
     groups = sorted({r["group"] for r in rows})
     densities = sorted({r["density_pct"] for r in rows})
@@ -319,8 +323,10 @@ def medians(rows):
                     v = [r[f"{blob}_over_{codec}"] for r in rows
                          if r["group"] == g and (d == "all" or r["density_pct"] == d)
                          and r[f"{blob}_over_{codec}"] != ""]
+                    unreached = sum(1 for r in rows if r["group"] == g and (d == "all" or r["density_pct"] == d)
+                                    and r[f"{blob}_bytes"] != "" and r[f"{codec}_param"] == "unreached")
                     if v:
-                        out[(g, d, blob, codec)] = (statistics.median(v), min(v), max(v), len(v))
+                        out[(g, d, blob, codec)] = (statistics.median(v), min(v), max(v), len(v), unreached)
     return out
 
 
@@ -361,19 +367,61 @@ def write_chart(path, rows, table):
 
 
 def summary(table, failed):
-    lines = ["median blob bytes / codec bytes at equal PSNR (range; cases), bilinear core render"]
-    for (g, d, blob, codec), (med, lo, hi, n) in sorted(table.items(), key=lambda kv: (
+    lines = ["median blob bytes / codec bytes at equal PSNR (range; cases; cases where the codec never reaches "
+             "the blob's PSNR), bilinear core render"]
+    for (g, d, blob, codec), (med, lo, hi, n, unreached) in sorted(table.items(), key=lambda kv: (
             kv[0][0], kv[0][1] == "all", kv[0][1] if kv[0][1] != "all" else 0, kv[0][2], kv[0][3])):
         density = "all" if d == "all" else f"{d:g} %"
-        lines.append(f"  {g:6} {density:>6}  {blob:10} / {codec:4}  {med:7.2f}x  ({lo:.2f} to {hi:.2f}; {n})")
+        more = f"; {unreached} unreached" if unreached else ""
+        lines.append(f"  {g:6} {density:>6}  {blob:10} / {codec:4}  {med:7.2f}x  ({lo:.2f} to {hi:.2f}; {n}{more})")
     if failed:
         lines.append(f"  {failed} case(s) failed: see the status and error columns of rd.csv")
     return "\n".join(lines)
 
 
+def read_csv(path):
+    """Rows of an earlier run, numbers as numbers (as measure() makes them)."""
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError as e:
+        fail(EXIT_NOINPUT, f"{path}: cannot read: {e.strerror}")
+    if not rows or set(COLUMNS) - set(rows[0]):
+        fail(EXIT_DATA, f"{path}: expected the columns {', '.join(COLUMNS)}")
+    for i, r in enumerate(rows, start=2):
+        try:
+            r["density_pct"] = float(r["density_pct"])
+            for k in COLUMNS:
+                if (k.endswith("_bytes") or "_over_" in k) and r[k] != "":
+                    r[k] = float(r[k])
+        except ValueError:
+            fail(EXIT_DATA, f"{path}:{i}: expected numbers in the density, bytes and ratio columns")
+    return rows
+
+
+def report(out, rows):
+    """Writes the chart, prints the medians; returns the exit code."""
+    table = medians([r for r in rows if r["status"] == "ok"])
+    try:
+        if table:
+            write_chart(out / "rd.png", rows, table)
+    except OSError as e:
+        fail(EXIT_CANTCREAT, f"{out}: cannot write: {e}")
+    print(f"wrote {out / 'rd.csv'}" + (f" and {out / 'rd.png'}" if table else " (no case succeeded: no chart)"))
+    failed = sum(r["status"] != "ok" for r in rows)
+    for r in rows:
+        if r["status"] != "ok":
+            note(f"{r['image']} at {r['density_pct']:g} %: {r['error']}")
+    print(summary(table, failed))
+    return EXIT_SOFTWARE if failed else 0
+
+
 def main(argv):
     args = parse_args(argv)
     load_dependencies()
+    if args.report_only:
+        out = Path(args.out_dir)
+        return report(out, read_csv(out / "rd.csv"))
     bin_dir = Path(args.bin_dir)
     for tool in ("triencode", "tripack", "trisim"):
         t = bin_dir / tool
@@ -398,18 +446,9 @@ def main(argv):
                 note(f"{len(rows)}/{len(cases)}: {row['image']} at {row['density_pct']:g} %: {row['status']}")
     try:
         write_csv(out / "rd.csv", rows)
-        table = medians([r for r in rows if r["status"] == "ok"])
-        if table:
-            write_chart(out / "rd.png", rows, table)
     except OSError as e:
         fail(EXIT_CANTCREAT, f"{out}: cannot write: {e}")
-    print(f"wrote {out / 'rd.csv'}" + (f" and {out / 'rd.png'}" if table else " (no case succeeded: no chart)"))
-    failed = sum(r["status"] != "ok" for r in rows)
-    for r in rows:
-        if r["status"] != "ok":
-            note(f"{r['image']} at {r['density_pct']:g} %: {r['error']}")
-    print(summary(table, failed))
-    return EXIT_SOFTWARE if failed else 0
+    return report(out, rows)
 
 
 if __name__ == "__main__":

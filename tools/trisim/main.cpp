@@ -150,10 +150,9 @@ void resolve_blob_request(const Input& in, RenderRequest& req, bool method_given
                      ", which the core renders with that method only (--engine reference renders its mesh with any)");
 }
 
-// The reference engine and compare need the mesh; the core draws a blob from its bytes.
-bool needs_mesh(const RenderRequest& req) {
-  return req.command->count("--engine") ? req.engine == "reference" : false;
-}
+// Whether render or bench needs a blob's mesh: with --engine reference (a blob's default engine is
+// the core, which draws the blob from its bytes).
+bool needs_mesh(const RenderRequest& req) { return req.command->count("--engine") && req.engine == "reference"; }
 
 struct Rendered {
   Image image;
