@@ -3,6 +3,7 @@
 """Rate-distortion of the project's blobs against JPEG, WebP and JPEG 2000 at equal PSNR.
 
 Usage: rate_distortion.py BIN_DIR OUT_DIR [--images DIR] [--densities 0.5,1,2,5] [--quick] [--jobs N]
+                          [--report-only]
 
 For each image and vertex density (a share of the pixels): triencode, tripack (blob v1, and
 tripack --compress when this tripack has it), trisim render of the blob (the core, bilinear),
