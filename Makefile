@@ -2,14 +2,14 @@
 # tristream: every target installs what it needs first (tools/install-deps.sh), then builds.
 #   make run     build the tools only, then render the demo data with every method into out/ and print a table
 #   make test    build, then run every test through ctest
-# More: make build | tools | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | clean
+# More: make build | tools | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | rd | clean
 
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
 FUZZ_TIME  ?= 60
 BENCH_MCU_ARGS ?=
 
-.PHONY: all deps build tools run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick
+.PHONY: all deps build tools run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick rd
 
 all: build
 
@@ -83,3 +83,9 @@ experiments-quick: build
 	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set quick --jobs 2
 	/usr/bin/python3 tools/experiments/check_page.py out/report/index.html \
 	  --figures out/report/charts out/report/pictures --screenshot out/report/screenshot.png
+
+# Rate-distortion of the blobs against JPEG, WebP and JPEG 2000 at equal PSNR (tools/experiments/README.md):
+# the shipped images and every PNG under $TRISTREAM_IMAGES, into out/rd/ (rd.csv, rd.png).
+rd: tools
+	@bash tools/install-deps.sh experiments
+	/usr/bin/python3 tools/experiments/rate_distortion.py $(BUILD)/bin out/rd --jobs 2

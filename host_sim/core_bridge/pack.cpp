@@ -54,9 +54,11 @@ struct LayerData {
   std::vector<std::array<std::uint16_t, 4>> triangles;  // v0, v1, v2, flags (sorted)
 };
 
-LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const std::string& where);
+LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const std::vector<std::int32_t>* gradients,
+                       const std::string& where);
 
-LayerData build_layer(const Mesh& input, int width, int height, core::Method method, const std::string& where) {
+LayerData build_layer(const Mesh& input, int width, int height, core::Method method,
+                      const std::vector<std::int32_t>* gradients, const std::string& where) {
   const Mesh& mesh = input;
   if (mesh.vertex_count() > core::blob_max_vertices)
     throw DataError(where + ": " + std::to_string(mesh.vertex_count()) + " vertices, the core takes at most " +
@@ -83,12 +85,24 @@ LayerData build_layer(const Mesh& input, int width, int height, core::Method met
     const QPoint &a = d.pos[v[0]], &b = d.pos[v[1]], &c = d.pos[v[2]];
     if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) < 0) std::swap(v[1], v[2]);
   }
-  return finish_layer(std::move(d), oriented, method, where);
+  return finish_layer(std::move(d), oriented, method, gradients, where);
 }
 
-LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const std::string& where) {
+LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const std::vector<std::int32_t>* gradients,
+                       const std::string& where) {
   const Topology topo = build_topology(mesh);
-  if (method == core::Method::zienkiewicz) {
+  if (method == core::Method::zienkiewicz && gradients) {
+    if (gradients->size() != 2 * mesh.vertex_count() * std::size_t(mesh.value_count))
+      throw DataError(where + ": " + std::to_string(gradients->size()) + " gradient components given, expected " +
+                      std::to_string(2 * mesh.vertex_count() * std::size_t(mesh.value_count)));
+    const std::int32_t limit = core::config::max_gradient << core::config::gradient_frac_bits;
+    for (std::size_t k = 0; k < gradients->size(); ++k)
+      if ((*gradients)[k] > limit || (*gradients)[k] < -limit)
+        throw DataError(where + ": vertex " + std::to_string(k / (2 * mesh.value_count)) +
+                        ": gradient beyond the core's limit of " + std::to_string(core::config::max_gradient) +
+                        " per pixel");
+    d.gradients = *gradients;
+  } else if (method == core::Method::zienkiewicz) {
     std::vector<std::vector<Gradient>> g;
     for (int c = 0; c < mesh.value_count; ++c) g.push_back(vertex_gradients(mesh, topo, c));
     const double gscale = double(1 << core::config::gradient_frac_bits);
@@ -119,10 +133,26 @@ LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const
         boundary_vertex[v[e]] = boundary_vertex[v[(e + 1) % 3]] = 1;
       }
   }
+  std::vector<std::uint32_t> order(nt);
+  std::iota(order.begin(), order.end(), 0u);
+  auto top = [&](std::uint32_t t) {
+    const auto& v = mesh.triangles[t].v;
+    return std::min({d.pos[v[0]].y, d.pos[v[1]].y, d.pos[v[2]].y});
+  };
+  auto key = [&](std::uint32_t t) {
+    const auto& v = mesh.triangles[t].v;
+    return std::array<std::int64_t, 4>{top(t), std::min({d.pos[v[0]].x, d.pos[v[1]].x, d.pos[v[2]].x}),
+                                       std::max({d.pos[v[0]].y, d.pos[v[1]].y, d.pos[v[2]].y}),
+                                       std::max({d.pos[v[0]].x, d.pos[v[1]].x, d.pos[v[2]].x})};
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+  std::vector<std::uint32_t> rank(nt);
+  for (std::uint32_t k = 0; k < nt; ++k) rank[order[k]] = k;
   // Each boundary vertex's pixel goes to one triangle of its fan: the one containing the vertex
   // moved by the reference renderer's direction w = (sx eps, sy eps^2) (sx = +1 in column 0, else
   // -1; sy = +1 in row 0, else -1: into the image rectangle), else by the first of the four
-  // directions (+-eps, +-eps^2) that enters the domain, else the fan's first triangle.
+  // directions (+-eps, +-eps^2) that enters the domain, else the fan's triangle that comes first in
+  // the blob (so that a blob read back and packed again keeps its owners).
   const std::int64_t one = std::int64_t(1) << S;
   for (std::size_t vtx = 0; vtx < mesh.vertex_count(); ++vtx) {
     if (!boundary_vertex[vtx]) continue;
@@ -140,7 +170,9 @@ LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const
       }
       if (owner >= 0) break;
     }
-    if (owner < 0) owner = topo.vertex_triangles[topo.vertex_start[vtx]];
+    if (owner < 0)
+      for (std::uint32_t k = topo.vertex_start[vtx]; k < topo.vertex_start[vtx + 1]; ++k)
+        if (owner < 0 || rank[topo.vertex_triangles[k]] < rank[std::uint32_t(owner)]) owner = topo.vertex_triangles[k];
     for (std::uint32_t k = topo.vertex_start[vtx]; k < topo.vertex_start[vtx + 1]; ++k) {
       const std::uint32_t t = topo.vertex_triangles[k];
       const auto& v = mesh.triangles[t].v;
@@ -149,19 +181,6 @@ LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const
       if (std::int64_t(t) == owner) flags[t] |= std::uint16_t(core::corner_owned0 << corner);
     }
   }
-  std::vector<std::uint32_t> order(nt);
-  std::iota(order.begin(), order.end(), 0u);
-  auto top = [&](std::uint32_t t) {
-    const auto& v = mesh.triangles[t].v;
-    return std::min({d.pos[v[0]].y, d.pos[v[1]].y, d.pos[v[2]].y});
-  };
-  auto key = [&](std::uint32_t t) {
-    const auto& v = mesh.triangles[t].v;
-    return std::array<std::int64_t, 4>{top(t), std::min({d.pos[v[0]].x, d.pos[v[1]].x, d.pos[v[2]].x}),
-                                       std::max({d.pos[v[0]].y, d.pos[v[1]].y, d.pos[v[2]].y}),
-                                       std::max({d.pos[v[0]].x, d.pos[v[1]].x, d.pos[v[2]].x})};
-  };
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
   // Canonical rotation: the topmost (then leftmost) vertex first, so that the blob, and the
   // rounding of the interpolants, do not depend on the order the input lists vertices in.
   auto rotate_flags = [](std::uint16_t f, int r) {
@@ -198,16 +217,20 @@ std::string_view to_string(core::Method method) {
   return method == core::Method::zienkiewicz ? "zienkiewicz" : "bilinear";
 }
 
-std::vector<std::uint8_t> pack_blob(const Triangulation& tri, core::Method method, std::string_view name) {
+std::vector<std::uint8_t> pack_blob(const Triangulation& tri, core::Method method, std::string_view name,
+                                    const BlobGradients* gradients) {
   const std::string where(name);
   if (tri.width < 2 || tri.height < 2 || tri.width > core::config::max_dimension ||
       tri.height > core::config::max_dimension)
     throw DataError(where + ": image size " + std::to_string(tri.width) + " x " + std::to_string(tri.height) +
                     ", the core takes 2 to " + std::to_string(core::config::max_dimension) + " per side");
   if (tri.layers.empty()) throw DataError(where + ": no mesh");
+  if (gradients && gradients->size() != tri.layers.size())
+    throw DataError(where + ": gradients for " + std::to_string(gradients->size()) + " layers given, expected " +
+                    std::to_string(tri.layers.size()));
   std::vector<LayerData> layers;
   for (std::size_t l = 0; l < tri.layers.size(); ++l)
-    layers.push_back(build_layer(tri.layers[l], tri.width, tri.height, method,
+    layers.push_back(build_layer(tri.layers[l], tri.width, tri.height, method, gradients ? &(*gradients)[l] : nullptr,
                                  tri.layered() ? where + ": layer " + std::to_string(l) : where));
   const int per_vertex = tri.layers[0].value_count;
 

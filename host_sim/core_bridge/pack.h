@@ -19,6 +19,11 @@ std::string_view to_string(core::Method method);
 // q19_12; boundary edges flagged inclusive and every boundary vertex given exactly one owner
 // triangle; triangles sorted by top row. Throws DataError ("<name>: triangle N: ...") when the
 // triangulation exceeds the core's limits or a triangle collapses when rounded.
-std::vector<std::uint8_t> pack_blob(const Triangulation& tri, core::Method method, std::string_view name = "input");
+// `gradients`, when given (zienkiewicz only), replaces the estimate: per layer, per vertex and
+// value gx, gy in q19_12, the layout of the blob's section (unpack_blob returns it, so that a blob
+// read back packs to the same bytes); a count that does not match the mesh throws DataError.
+using BlobGradients = std::vector<std::vector<std::int32_t>>;
+std::vector<std::uint8_t> pack_blob(const Triangulation& tri, core::Method method, std::string_view name = "input",
+                                    const BlobGradients* gradients = nullptr);
 
 }  // namespace tristream

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// trisim: render triangulation files, compare renders with originals, measure images.
+// trisim: render triangulation files and blobs, compare renders with originals, measure images.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -9,6 +9,7 @@
 #include <ctime>
 #include <functional>
 #include <optional>
+#include <span>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "common/tool_main.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/render_core.h"
+#include "core_bridge/unpack.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "io/limits.h"
@@ -50,7 +52,10 @@ std::vector<std::string> method_names() {
 
 void add_render_options(CLI::App* cmd, RenderRequest& req) {
   req.command = cmd;
-  cmd->add_option("input", req.input, "Triangulation file (.tri)")->required();
+  cmd->add_option("input", req.input,
+                  "Triangulation file (.tri) or blob (tripack -o x.bin; told apart by its first bytes): a blob "
+                  "is rendered by the core with its own method unless --engine reference is given")
+      ->required();
   cmd->add_option("-m,--method", req.method, "Interpolation method")
       ->check(CLI::IsMember(method_names()))
       ->capture_default_str();
@@ -99,6 +104,56 @@ void check_engine_options(const RenderRequest& req) {
     throw UsageError("--dither: applies to --format rgb565le and rgb565be only");
 }
 
+// What the input file holds: a .tri, or a blob whose bytes the core renders as they are.
+struct Input {
+  Triangulation tri;  // for a blob: its size and colour space, and with the mesh read back (unpack_blob) when needed
+  std::vector<std::uint8_t> blob;  // the file's bytes when it is a blob, else empty
+  core::Method blob_method = core::Method::bilinear;
+  bool is_blob() const { return !blob.empty(); }
+};
+
+// Reads a .tri or a blob (by its content). A blob's mesh is read back only when `need_mesh`
+// (the reference engine, compare): the core draws blobs whose mesh the reference could not.
+Input read_input(const std::string& path, bool need_mesh) {
+  const std::string text = read_file(path);
+  const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
+  Input in;
+  if (!tristream::is_blob(bytes)) {
+    in.tri = parse_tri(text, path);
+    return in;
+  }
+  in.blob.assign(bytes.begin(), bytes.end());
+  const core::Blob blob = open_blob_or_throw(in.blob, path);
+  in.blob_method = blob.method;
+  if (need_mesh) {
+    in.tri = unpack_blob(blob, path).tri;
+  } else {
+    in.tri.width = blob.width;
+    in.tri.height = blob.height;
+    in.tri.space = blob.space == core::ColorSpace::grey  ? ColorSpace::grey
+                   : blob.space == core::ColorSpace::rgb ? ColorSpace::rgb
+                                                         : ColorSpace::ycbcr;
+  }
+  return in;
+}
+
+// A blob goes to the core unless --engine says otherwise, with its own method unless --method
+// says otherwise: another method with the core is a usage error (the blob holds what its method
+// needs, gradients or not).
+void resolve_blob_request(const Input& in, RenderRequest& req, bool method_given) {
+  if (!in.is_blob()) return;
+  if (!req.command->count("--engine")) req.engine = "core";
+  const std::string packed(to_string(in.blob_method));
+  if (!method_given) req.method = packed;
+  if (req.engine == "core" && req.method != packed)
+    throw UsageError("--method " + req.method + ": " + req.input + " is a blob packed for " + packed +
+                     ", which the core renders with that method only (--engine reference renders its mesh with any)");
+}
+
+// Whether render or bench needs a blob's mesh: with --engine reference (a blob's default engine is
+// the core, which draws the blob from its bytes).
+bool needs_mesh(const RenderRequest& req) { return req.command->count("--engine") && req.engine == "reference"; }
+
 struct Rendered {
   Image image;
   double ms = 0;
@@ -115,12 +170,22 @@ CoreOptions core_options(const Triangulation& tri, const RenderRequest& req) {
   return o;
 }
 
+// The core's frame of the input: a blob's own bytes, a .tri packed for the method.
+CoreFrame core_frame(const Input& in, const RenderRequest& req) {
+  if (!in.is_blob()) return render_core_frame(in.tri, req.method, core_options(in.tri, req), req.input);
+  CoreRenderer renderer(in.blob, core_options(in.tri, req), req.input);
+  CoreFrame frame;
+  renderer.render(frame);
+  return frame;
+}
+
 // The picture a render is measured by: for a grey triangulation rendered by the core in a colour
 // format, the luma of the decoded frame (what an original grey image is compared with).
-Rendered render(const Triangulation& tri, const RenderRequest& req) {
+Rendered render(const Input& in, const RenderRequest& req) {
+  const Triangulation& tri = in.tri;
   if (req.engine == "core") {
     const auto t0 = std::chrono::steady_clock::now();
-    Image image = render_core(tri, req.method, core_options(tri, req), req.input);
+    Image image = frame_to_image(core_frame(in, req));
     if (tri.channels() == 1 && image.channels == 3) image = to_grey(image);
     Rendered out{std::move(image), 0};
     out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -220,7 +285,9 @@ CLI::App* add_compare_command(CLI::App& app, CompareCommand& c) {
   cmd->add_option("-m,--method", c.methods, "Interpolation methods, or 'all' (default: bilinear)")
       ->check(CLI::IsMember(method_choices));
   cmd->add_option("--save", c.save, "Also write each render as <dir>/<method>.png")->check(CLI::ExistingDirectory);
-  cmd->add_option("--original", c.original, "Original image")->required();
+  cmd->add_option("--original", c.original,
+                  "Original image (optional with --engine core: the core's render is then measured against the "
+                  "reference's alone)");
   cmd->add_option("--ssim-window", c.window, "SSIM window: 'gaussian' (11x11, sigma 1.5) or '8x8'")
       ->check(CLI::IsMember({"gaussian", "8x8"}))
       ->capture_default_str();
@@ -252,15 +319,16 @@ CLI::App* add_metrics_command(CLI::App& app, MetricsCommand& c) {
 
 // Writes what the render produces: with the core, the frame in its pixel format (a PNG of the
 // decoded values, RGB for every format but l8, or with --raw the bytes themselves).
-int run_render(const RenderCommand& c) {
+int run_render(RenderCommand& c) {
+  const Input in = read_input(c.req.input, needs_mesh(c.req));
+  resolve_blob_request(in, c.req, c.req.command->count("--method") > 0);
   check_engine_options(c.req);
-  const Triangulation tri = read_tri_file(c.req.input);
-  check_render_size(tri, c.req);
+  check_render_size(in.tri, c.req);
   int width = 0, height = 0;
   double ms = 0;
   if (c.req.engine == "core") {
     const auto t0 = std::chrono::steady_clock::now();
-    const CoreFrame frame = render_core_frame(tri, c.req.method, core_options(tri, c.req), c.req.input);
+    const CoreFrame frame = core_frame(in, c.req);
     ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (c.raw)
       write_file_atomically(c.output,
@@ -269,7 +337,7 @@ int run_render(const RenderCommand& c) {
       write_png(c.output, frame_to_image(frame));
     width = frame.width, height = frame.height;
   } else {
-    const Rendered r = render(tri, c.req);
+    const Rendered r = render(in, c.req);
     write_png(c.output, r.image);
     width = r.image.width, height = r.image.height, ms = r.ms;
   }
@@ -284,19 +352,24 @@ struct Comparison {
   Metrics metrics;
   int max_diff_ref = -1;  // -1: not rendered by the core
   double psnr_ref = 0;
+  bool has_metrics = false;  // measured against an original
 };
 
-Comparison compare_method(const Triangulation& tri, const RenderRequest& req, const CompareCommand& c,
+// Without an original (--engine core only) the metrics are left out (has_metrics false).
+Comparison compare_method(const Input& in, const RenderRequest& req, const CompareCommand& c,
                           const SsimOptions& so, Image& original) {
   Comparison out;
-  out.render = render(tri, req);
+  out.render = render(in, req);
   const Image& image = out.render.image;
-  if (original.pixels.empty()) original = load_original(c.original, tri, image.width, image.height);
-  out.metrics = compare_images(image, original, so);
+  if (!c.original.empty()) {
+    if (original.pixels.empty()) original = load_original(c.original, in.tri, image.width, image.height);
+    out.metrics = compare_images(image, original, so);
+    out.has_metrics = true;
+  }
   if (req.engine == "core") {
     RenderRequest ref = req;
     ref.engine = "reference";
-    const Image reference = render(tri, ref).image;
+    const Image reference = render(in, ref).image;
     out.max_diff_ref = 0;
     for (std::size_t i = 0; i < reference.pixels.size(); ++i)
       out.max_diff_ref = std::max(out.max_diff_ref, std::abs(int(reference.pixels[i]) - int(image.pixels[i])));
@@ -311,6 +384,7 @@ void print_comparison(const Comparison& cmp, const RenderRequest& req, const Ssi
   const Metrics& m = cmp.metrics;
   if (json) {
     nlohmann::json j = metrics_json(m, so);
+    if (!cmp.has_metrics) j["mse"] = j["psnr"] = j["ssim"] = nullptr;
     j["method"] = req.method;
     j["engine"] = req.engine;
     j["variant"] = req.variant;
@@ -325,8 +399,12 @@ void print_comparison(const Comparison& cmp, const RenderRequest& req, const Ssi
     }
     std::printf("%s\n", j.dump().c_str());
   } else {
-    std::printf("%-14s %-10s %10.4f %10.4f %9.6f %10.3f\n", req.method.c_str(), req.engine.c_str(), m.mse,
-                is_identical_psnr(m.psnr) ? INFINITY : m.psnr, m.ssim, cmp.render.ms);
+    if (cmp.has_metrics)
+      std::printf("%-14s %-10s %10.4f %10.4f %9.6f %10.3f\n", req.method.c_str(), req.engine.c_str(), m.mse,
+                  is_identical_psnr(m.psnr) ? INFINITY : m.psnr, m.ssim, cmp.render.ms);
+    else
+      std::printf("%-14s %-10s %10s %10s %9s %10.3f\n", req.method.c_str(), req.engine.c_str(), "-", "-", "-",
+                  cmp.render.ms);
     if (cmp.max_diff_ref >= 0)
       std::printf("%-14s %-10s max |core - reference| %d, PSNR vs reference %.2f dB\n", "", "", cmp.max_diff_ref,
                   is_identical_psnr(cmp.psnr_ref) ? INFINITY : cmp.psnr_ref);
@@ -335,11 +413,19 @@ void print_comparison(const Comparison& cmp, const RenderRequest& req, const Ssi
 }
 
 int run_compare(CompareCommand& c) {
-  check_engine_options(c.req);
-  const Triangulation tri = read_tri_file(c.req.input);
-  check_render_size(tri, c.req);
-  if (c.methods.empty()) c.methods = {"bilinear"};
+  const Input in = read_input(c.req.input, true);
+  const bool methods_given = !c.methods.empty();
+  if (c.methods.empty()) c.methods = {in.is_blob() ? std::string(to_string(in.blob_method)) : "bilinear"};
   if (std::find(c.methods.begin(), c.methods.end(), "all") != c.methods.end()) c.methods = method_names();
+  for (const std::string& method : c.methods) {
+    c.req.method = method;
+    resolve_blob_request(in, c.req, methods_given);
+  }
+  check_engine_options(c.req);
+  if (c.original.empty() && c.req.engine != "core")
+    throw UsageError("--original: required unless --engine core (which is measured against the reference)");
+  const Triangulation& tri = in.tri;
+  check_render_size(tri, c.req);
   const SsimOptions so = ssim_options(c.window);
   std::size_t vertices = 0, triangles = 0;
   for (const Mesh& mesh : tri.layers) vertices += mesh.vertex_count(), triangles += mesh.triangles.size();
@@ -348,7 +434,7 @@ int run_compare(CompareCommand& c) {
   for (const std::string& method : c.methods) {
     RenderRequest req = c.req;
     req.method = method;
-    const Comparison cmp = compare_method(tri, req, c, so, original);
+    const Comparison cmp = compare_method(in, req, c, so, original);
     if (!c.save.empty()) write_png(c.save + "/" + method + ".png", cmp.render.image);
     print_comparison(cmp, req, so, c.json, vertices, triangles);
   }
@@ -395,16 +481,18 @@ Timings time_frames(const std::function<int()>& once, int runs) {
   return t;
 }
 
-int run_bench(const BenchCommand& c) {
+int run_bench(BenchCommand& c) {
+  const Input in = read_input(c.req.input, needs_mesh(c.req));
+  resolve_blob_request(in, c.req, c.req.command->count("--method") > 0);
   check_engine_options(c.req);
-  const Triangulation tri = read_tri_file(c.req.input);
+  const Triangulation& tri = in.tri;
   check_render_size(tri, c.req);
   std::function<int()> once;  // renders one frame, returns its pixel count
   std::optional<CoreRenderer> core_renderer;
   CoreFrame frame;
   std::vector<std::uint8_t> blob;  // read in place by the core: outlives core_renderer
   if (c.req.engine == "core") {
-    blob = pack_blob(tri, parse_core_method(c.req.method), c.req.input);
+    blob = in.is_blob() ? in.blob : pack_blob(tri, parse_core_method(c.req.method), c.req.input);
     core_renderer.emplace(blob, core_options(tri, c.req), c.req.input);
     once = [&] {
       core_renderer->render(frame);  // tiles delivered through the sink into a frame
@@ -412,7 +500,7 @@ int run_bench(const BenchCommand& c) {
     };
   } else {
     once = [&] {
-      const Image image = render(tri, c.req).image;
+      const Image image = render(in, c.req).image;
       return image.width * image.height;
     };
   }

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+#include "core_bridge/unpack.h"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "common/errors.h"
+#include "geometry/mesh_check.h"
+#include "tristream/detail/bytes.h"
+
+namespace tristream {
+
+namespace {
+
+constexpr double position_scale = 1.0 / double(1 << core::config::subpixel_bits);
+
+ColorSpace host_space(core::ColorSpace s) {
+  return s == core::ColorSpace::grey ? ColorSpace::grey : s == core::ColorSpace::rgb ? ColorSpace::rgb : ColorSpace::ycbcr;
+}
+
+const char* layer_name(ColorSpace space, std::size_t layer) {
+  static const char* const rgb[] = {"r", "g", "b"};
+  static const char* const ycbcr[] = {"y", "cb", "cr"};
+  return space == ColorSpace::rgb ? rgb[layer] : ycbcr[layer];
+}
+
+std::string at_byte(std::string_view name, const core::Blob& blob, const std::uint8_t* p) {
+  return std::string(name) + ": byte " + std::to_string(p - blob.bytes);
+}
+
+// The checks of the .tri reader that open_blob leaves out: distinct positions among the vertices
+// triangles use, interiors that do not overlap, edge to edge.
+void check_drawable(const Mesh& mesh, const core::BlobLayer& layer, const core::Blob& blob, std::string_view name) {
+  std::vector<char> used(mesh.vertex_count(), 0);
+  for (const Triangle& t : mesh.triangles)
+    for (std::uint32_t v : t.v) used[v] = 1;
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
+    if (used[v]) order.push_back(v);
+  auto less = [&](std::uint32_t a, std::uint32_t b) {
+    const Point &p = mesh.points[a], &q = mesh.points[b];
+    return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && a < b)));
+  };
+  std::sort(order.begin(), order.end(), less);
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const Point &p = mesh.points[order[k - 1]], &q = mesh.points[order[k]];
+    if (p.x == q.x && p.y == q.y)
+      throw DataError(at_byte(name, blob, layer.positions + 4 * order[k]) + ": expected distinct vertex positions, found vertex " +
+                      std::to_string(order[k]) + " at the position of vertex " + std::to_string(order[k - 1]));
+  }
+  const auto defect = find_mesh_defect(mesh.points, mesh.triangles);
+  if (!defect) return;
+  const std::uint8_t* second = layer.triangles + core::blob_triangle_size * std::max(defect->a, defect->b);
+  if (defect->kind == MeshDefect::Kind::overlap)
+    throw DataError(at_byte(name, blob, second) + ": expected triangles whose interiors do not overlap, found triangle " +
+                    std::to_string(std::max(defect->a, defect->b)) + " overlapping triangle " +
+                    std::to_string(std::min(defect->a, defect->b)));
+  throw DataError(at_byte(name, blob, layer.triangles + core::blob_triangle_size * defect->a) +
+                  ": expected triangles that meet edge to edge, found vertex " + std::to_string(defect->vertex) +
+                  " inside an edge of triangle " + std::to_string(defect->a));
+}
+
+}  // namespace
+
+bool is_blob(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() >= 3 && std::memcmp(bytes.data(), "TST", 3) == 0) return true;  // TSTB, TSTC: never .tri text
+  core::Blob blob;
+  core::BlobError error;
+  const core::Status s = core::open_blob(bytes.data(), bytes.size(), &blob, &error);
+  return s != core::Status::bad_magic && s != core::Status::truncated && s != core::Status::null_argument;
+}
+
+core::Blob open_blob_or_throw(std::span<const std::uint8_t> bytes, std::string_view name) {
+  core::Blob blob;
+  core::BlobError error;
+  const core::Status s = core::open_blob(bytes.data(), bytes.size(), &blob, &error);
+  if (s != core::Status::ok)
+    throw DataError(std::string(name) + ": byte " + std::to_string(error.offset) + ": " + core::status_text(s));
+  return blob;
+}
+
+UnpackedBlob unpack_blob(const core::Blob& blob, std::string_view name) {
+  using core::detail::load_i32;
+  using core::detail::load_u16;
+  UnpackedBlob out;
+  out.method = blob.method;
+  out.tri.width = blob.width;
+  out.tri.height = blob.height;
+  out.tri.space = host_space(blob.space);
+  for (std::size_t l = 0; l < blob.layer_count; ++l) {
+    const core::BlobLayer& layer = blob.layers[l];
+    if (!layer.positions || !layer.values || !layer.triangles ||
+        (blob.method == core::Method::zienkiewicz && !layer.gradients))
+      throw DataError(std::string(name) + ": byte 0: expected a blob whose sections are stored in place (v1), found "
+                      "a variant this reader cannot read back");
+    Mesh mesh;
+    mesh.value_count = blob.values_per_vertex;
+    if (blob.layer_count > 1) mesh.name = layer_name(out.tri.space, l);
+    const std::size_t nv = layer.vertex_count, nval = nv * blob.values_per_vertex;
+    mesh.points.resize(nv);
+    for (std::size_t v = 0; v < nv; ++v)
+      mesh.points[v] = {load_u16(layer.positions + 4 * v) * position_scale,
+                        load_u16(layer.positions + 4 * v + 2) * position_scale};
+    mesh.values.resize(nval);
+    for (std::size_t k = 0; k < nval; ++k) mesh.values[k] = load_u16(layer.values + 2 * k) / 256.0;
+    mesh.triangles.resize(layer.triangle_count);
+    for (std::size_t t = 0; t < layer.triangle_count; ++t) {
+      const std::uint8_t* p = layer.triangles + core::blob_triangle_size * t;
+      mesh.triangles[t].v = {load_u16(p), load_u16(p + 2), load_u16(p + 4)};
+    }
+    check_drawable(mesh, layer, blob, name);
+    if (blob.method == core::Method::zienkiewicz) {
+      std::vector<std::int32_t> g(2 * nval);
+      for (std::size_t k = 0; k < g.size(); ++k) g[k] = load_i32(layer.gradients + 4 * k);
+      out.gradients.push_back(std::move(g));
+    }
+    out.tri.layers.push_back(std::move(mesh));
+  }
+  return out;
+}
+
+UnpackedBlob unpack_blob(std::span<const std::uint8_t> bytes, std::string_view name) {
+  return unpack_blob(open_blob_or_throw(bytes, name), name);
+}
+
+}  // namespace tristream
