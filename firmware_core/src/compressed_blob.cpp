@@ -1,0 +1,436 @@
+// SPDX-License-Identifier: MIT
+// The compressed blob: header checks, the layer decoder and the expansion to a v1 blob
+// (docs/COMPRESSED_BLOB.md is the format; this file is its only reader).
+#include "tristream/compressed_blob.h"
+
+#include "range_decoder.h"
+#include "tristream/detail/bytes.h"
+
+namespace tristream::core {
+
+using detail::load_u16;
+using detail::load_u32;
+
+namespace {
+
+void store_u16(uint8_t* p, uint32_t v) {
+  p[0] = uint8_t(v & 0xFFu);
+  p[1] = uint8_t((v >> 8) & 0xFFu);
+}
+void store_u32(uint8_t* p, uint32_t v) {
+  store_u16(p, v & 0xFFFFu);
+  store_u16(p + 2, v >> 16);
+}
+
+constexpr uint32_t align4(uint32_t n) { return (n + 3u) & ~3u; }
+
+// Sizes of the coded integers (bits of |s| - 1 or of u + 1 below its leading one).
+constexpr int gap_bits = 24;        // a raster pixel index of at most 4096 x 4096
+constexpr int index_bits = 16;      // vertex indices below 65535
+constexpr int value_bits = 9;       // residuals of at most 510
+constexpr int gradient_bits = 31;   // wrapped 32-bit differences
+
+// The class of an index difference, the context of the next one.
+uint8_t index_class(uint32_t d) { return d == 0 ? 0 : (d < 8 ? 1 : 2); }
+
+struct Fail {
+  BlobError* error;
+  Status operator()(Status s, uint32_t offset) const {
+    if (error) error->offset = offset;
+    return s;
+  }
+};
+
+}  // namespace
+
+bool is_compressed_blob(const void* bytes, size_t size) {
+  const uint8_t* b = static_cast<const uint8_t*>(bytes);
+  return b && size >= 4 && b[0] == 'T' && b[1] == 'S' && b[2] == 'T' && b[3] == 'C';
+}
+
+Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out, BlobError* error) {
+  if (!bytes || !out) return Status::null_argument;
+  const uint8_t* b = static_cast<const uint8_t*>(bytes);
+  const Fail fail{error};
+  if (size < compressed_header_size) return fail(Status::truncated, uint32_t(size));
+  if (!is_compressed_blob(b, size)) return fail(Status::bad_magic, 0);
+  if (load_u16(b + 4) != compressed_version) return fail(Status::bad_version, 4);
+  if (load_u16(b + 6) != compressed_header_size) return fail(Status::bad_header, 6);
+  const uint32_t total = load_u32(b + 8);
+  if (total < compressed_header_size || total > size) return fail(Status::truncated, 8);
+  if (b[20] != config::subpixel_bits) return fail(Status::config_mismatch, 20);
+  if (b[21] != config::gradient_frac_bits) return fail(Status::config_mismatch, 21);
+  if (load_u32(b + 24) != blob_config_hash()) return fail(Status::config_mismatch, 24);
+  CompressedBlob blob;
+  blob.bytes = b;
+  blob.size = total;
+  blob.width = load_u16(b + 12);
+  blob.height = load_u16(b + 14);
+  if (blob.width < 2 || blob.width > config::max_dimension) return fail(Status::too_large, 12);
+  if (blob.height < 2 || blob.height > config::max_dimension) return fail(Status::too_large, 14);
+  if (b[16] > 2) return fail(Status::bad_header, 16);
+  blob.space = ColorSpace(b[16]);
+  if (b[17] > 1) return fail(Status::bad_header, 17);
+  blob.method = Method(b[17]);
+  blob.layer_count = b[18];
+  blob.values_per_vertex = b[19];
+  const int channels = blob.space == ColorSpace::grey ? 1 : 3;
+  const bool single = blob.layer_count == 1 && blob.values_per_vertex == channels;
+  const bool layered = channels == 3 && blob.layer_count == 3 && blob.values_per_vertex == 1;
+  if (!single && !layered) return fail(Status::bad_header, blob.layer_count == 1 || blob.layer_count == 3 ? 19 : 18);
+  if (load_u16(b + 22) != 0) return fail(Status::bad_header, 22);
+  if (load_u32(b + 28) != compressed_header_size) return fail(Status::bad_section, 28);
+  blob.max_triangle_height = load_u32(b + 32);
+  for (uint32_t k = 36; k < compressed_header_size; ++k)
+    if (b[k] != 0) return fail(Status::bad_header, k);
+  uint32_t next_stream = compressed_header_size + blob.layer_count * compressed_layer_entry_size;
+  if (next_stream > total) return fail(Status::truncated, 28);
+  for (uint32_t l = 0; l < blob.layer_count; ++l) {
+    const uint32_t e = compressed_header_size + l * compressed_layer_entry_size;
+    CompressedLayer& layer = blob.layers[l];
+    layer.vertex_count = load_u32(b + e);
+    layer.triangle_count = load_u32(b + e + 4);
+    layer.stream_offset = load_u32(b + e + 8);
+    layer.stream_bytes = load_u32(b + e + 12);
+    layer.window = load_u32(b + e + 16);
+    for (uint32_t k = 20; k < compressed_layer_entry_size; ++k)
+      if (b[e + k] != 0) return fail(Status::bad_header, e + k);
+    if (layer.vertex_count < 3 || layer.vertex_count > blob_max_vertices) return fail(Status::too_large, e);
+    if (layer.triangle_count < 1 || layer.triangle_count > blob_max_triangles) return fail(Status::too_large, e + 4);
+    // Streams in layer order, each of at least the 4 bytes the decoder starts with.
+    if (layer.stream_offset < next_stream || layer.stream_bytes < 4 ||
+        uint64_t(layer.stream_offset) + layer.stream_bytes > total)
+      return fail(Status::bad_section, e + 8);
+    if (layer.window < 3 || layer.window > layer.vertex_count) return fail(Status::bad_header, e + 16);
+    layer.stream = b + layer.stream_offset;
+    next_stream = layer.stream_offset + layer.stream_bytes;
+  }
+  *out = blob;
+  return Status::ok;
+}
+
+uint32_t compressed_vertex_record_bytes(const CompressedBlob& blob) {
+  const uint32_t nv = blob.values_per_vertex;
+  return align4(4 + 2 * nv) + (blob.method == Method::zienkiewicz ? 8 * nv : 0);
+}
+
+size_t compressed_ring_bytes(const CompressedBlob& blob, int layer) {
+  if (layer < 0 || layer >= blob.layer_count) return 0;
+  return size_t(blob.layers[layer].window) * compressed_vertex_record_bytes(blob);
+}
+
+// A failure after the decoder ran past the stream's end is its truncation.
+Status LayerDecoder::fail(Status s) {
+  if (rc_.overrun) s = Status::truncated;
+  failed_ = s;
+  return s;
+}
+
+uint32_t LayerDecoder::offset() const {
+  if (!layer_) return 0;
+  return layer_->stream_offset + uint32_t(rc_.p - layer_->stream);
+}
+
+Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, size_t ring_bytes, VertexSink sink,
+                           void* sink_context) {
+  if (layer < 0 || layer >= blob.layer_count) return Status::bad_params;
+  if (!ring) return Status::null_argument;
+  if (ring_bytes < compressed_ring_bytes(blob, layer)) return Status::workspace_too_small;
+  blob_ = &blob;
+  layer_ = &blob.layers[layer];
+  ring_ = static_cast<uint8_t*>(ring);
+  record_ = compressed_vertex_record_bytes(blob);
+  sink_ = sink;
+  sink_context_ = sink_context;
+  detail::start(rc_, layer_->stream, layer_->stream + layer_->stream_bytes);
+  detail::reset(m_.gap);
+  m_.subpixel = m_.fraction = m_.flags_nonzero = detail::prob_half;
+  for (auto& v : m_.value) detail::reset(v);
+  for (auto& g : m_.gradient) detail::reset(g);
+  detail::reset(m_.top);
+  for (auto& s : m_.second) detail::reset(s);
+  for (auto& t : m_.third) detail::reset(t);
+  detail::reset(m_.rotation, 2);
+  detail::reset(m_.flag_bit, 9);
+  decoded_ = slot_ = triangles_ = pixel_ = previous_top_ = 0;
+  previous_row_ = 0;
+  previous_class_ = 0;
+  for (int c = 0; c < 3; ++c) {
+    last_values_[c] = 0;
+    last_gradients_[c][0] = last_gradients_[c][1] = 0;
+  }
+  failed_ = Status::ok;
+  return Status::ok;
+}
+
+Status LayerDecoder::decode_vertex() {
+  using namespace detail;
+  const CompressedBlob& blob = *blob_;
+  const int S = config::subpixel_bits;
+  uint32_t gap;
+  if (!decode_uint(rc_, m_.gap, gap_bits, &gap)) return fail(Status::coordinate_out_of_range);
+  const uint64_t pixel = uint64_t(pixel_) + gap;
+  if (pixel >= uint64_t(blob.width) * blob.height) return fail(Status::coordinate_out_of_range);
+  const uint32_t py = uint32_t(pixel) / blob.width, px = uint32_t(pixel) - py * blob.width;
+  uint32_t sx = 0, sy = 0;
+  if (decode_bit(rc_, m_.subpixel)) {
+    sx = decode_direct(rc_, S);
+    sy = decode_direct(rc_, S);
+  }
+  const uint32_t x = (px << S) | sx, y = (py << S) | sy;
+  if (x > (uint32_t(blob.width - 1) << S) || y > (uint32_t(blob.height - 1) << S))
+    return fail(Status::coordinate_out_of_range);
+
+  // Integer parts against the previous vertex's; in RGB, R and B also follow G's change.
+  const int nv = blob.values_per_vertex;
+  const bool rgb = blob.space == ColorSpace::rgb && nv == 3;
+  int32_t high[3] = {0, 0, 0};
+  int32_t shared = 0;
+  for (int k = 0; k < nv; ++k) {
+    const int c = rgb ? (k == 0 ? 1 : (k == 1 ? 0 : 2)) : k;
+    int64_t r;
+    if (!decode_int(rc_, m_.value[k], value_bits, &r)) return fail(Status::value_out_of_range);
+    const int64_t h = int64_t(last_values_[c] >> 8) + r + (rgb && k > 0 ? shared : 0);
+    if (h < 0 || h > 255) return fail(Status::value_out_of_range);
+    if (rgb && k == 0) shared = int32_t(r);
+    high[c] = int32_t(h);
+  }
+  uint16_t values[3] = {0, 0, 0};
+  const bool fraction = decode_bit(rc_, m_.fraction);
+  for (int c = 0; c < nv; ++c) {
+    const uint32_t low = fraction ? decode_direct(rc_, 8) : 0;
+    const uint32_t v = (uint32_t(high[c]) << 8) | low;
+    if (v > 255u * 256u) return fail(Status::value_out_of_range);
+    values[c] = uint16_t(v);
+  }
+  int32_t gradients[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  if (blob.method == Method::zienkiewicz) {
+    const int64_t limit = int64_t(config::max_gradient) << config::gradient_frac_bits;
+    for (int c = 0; c < nv; ++c)
+      for (int a = 0; a < 2; ++a) {
+        int64_t r;
+        if (!decode_int(rc_, m_.gradient[a], gradient_bits, &r)) return fail(Status::value_out_of_range);
+        const int32_t g = int32_t(uint32_t(last_gradients_[c][a]) + uint32_t(r));
+        if (g > limit || g < -limit) return fail(Status::value_out_of_range);
+        gradients[c][a] = g;
+      }
+  }
+  if (rc_.overrun) return fail(Status::truncated);
+
+  uint8_t* rec = ring_ + size_t(slot_) * record_;
+  store_u16(rec, x);
+  store_u16(rec + 2, y);
+  for (int c = 0; c < nv; ++c) store_u16(rec + 4 + 2 * c, values[c]);
+  if (blob.method == Method::zienkiewicz) {
+    uint8_t* g = rec + align4(4 + 2 * uint32_t(nv));
+    for (int c = 0; c < nv; ++c) {
+      store_u32(g + 8 * c, uint32_t(gradients[c][0]));
+      store_u32(g + 8 * c + 4, uint32_t(gradients[c][1]));
+    }
+  }
+  if (sink_) sink_(sink_context_, decoded_, uint16_t(x), uint16_t(y), values, &gradients[0][0]);
+  for (int c = 0; c < 3; ++c) {
+    last_values_[c] = values[c];
+    last_gradients_[c][0] = gradients[c][0];
+    last_gradients_[c][1] = gradients[c][1];
+  }
+  pixel_ = uint32_t(pixel);
+  ++decoded_;
+  slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
+  return Status::ok;
+}
+
+Status LayerDecoder::next(DecodedTriangle* out) {
+  using namespace detail;
+  if (!layer_ || !out) return Status::null_argument;
+  if (failed_ != Status::ok) return failed_;
+  if (triangles_ >= layer_->triangle_count) return Status::bad_params;
+  const uint32_t V = layer_->vertex_count;
+  int64_t s;
+  uint32_t d1, d2;
+  if (!decode_int(rc_, m_.top, index_bits, &s)) return fail(Status::bad_index);
+  const int64_t a = int64_t(previous_top_) + s;
+  if (a < 0 || a >= V) return fail(Status::bad_index);
+  if (!decode_uint(rc_, m_.second[previous_class_], index_bits, &d1)) return fail(Status::bad_index);
+  const uint8_t cls = index_class(d1);
+  if (!decode_uint(rc_, m_.third[cls], index_bits, &d2)) return fail(Status::bad_index);
+  const uint64_t b = uint64_t(a) + 1 + d1, c = b + 1 + d2;
+  if (c >= V) return fail(Status::bad_index);
+  if (rc_.overrun) return fail(Status::truncated);
+  while (decoded_ <= c) {
+    const Status st = decode_vertex();
+    if (st != Status::ok) return st;
+  }
+  // Every corner must still be in the ring (the window the header promised).
+  if (uint64_t(a) + layer_->window < decoded_) return fail(Status::bad_index);
+  const uint32_t index[3] = {uint32_t(a), uint32_t(b), uint32_t(c)};
+  const uint8_t* rec[3];
+  for (int k = 0; k < 3; ++k) {
+    const uint32_t back = decoded_ - index[k];  // 1 .. window
+    const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
+    rec[k] = ring_ + size_t(slot) * record_;
+  }
+  const int64_t xa = load_u16(rec[0]), ya = load_u16(rec[0] + 2);
+  const int64_t area = (int64_t(load_u16(rec[1])) - xa) * (int64_t(load_u16(rec[2] + 2)) - ya) -
+                       (int64_t(load_u16(rec[1] + 2)) - ya) * (int64_t(load_u16(rec[2])) - xa);
+  if (area == 0) return fail(Status::bad_triangle);
+  // The cyclic order with positive area, then the rotation the v1 blob stored.
+  const int cyc[3] = {0, area > 0 ? 1 : 2, area > 0 ? 2 : 1};
+  uint32_t r = 0;
+  if (decode_bit(rc_, m_.rotation[0])) r = 1 + decode_bit(rc_, m_.rotation[1]);
+  uint16_t flags = 0;
+  if (decode_bit(rc_, m_.flags_nonzero))
+    for (int i = 0; i < 9; ++i) flags = uint16_t(flags | (decode_bit(rc_, m_.flag_bit[i]) << i));
+  if (rc_.overrun) return fail(Status::truncated);
+  const int nv = blob_->values_per_vertex;
+  const bool z = blob_->method == Method::zienkiewicz;
+  int32_t top = 0x7FFFFFFF;
+  for (int k = 0; k < 3; ++k) {
+    const int corner = cyc[(r + uint32_t(k)) % 3];
+    const uint8_t* p = rec[corner];
+    out->v[k] = index[corner];
+    out->x[k] = load_u16(p);
+    out->y[k] = load_u16(p + 2);
+    top = out->y[k] < top ? out->y[k] : top;
+    for (int ch = 0; ch < 3; ++ch) {
+      out->values[k][ch] = ch < nv ? load_u16(p + 4 + 2 * ch) : 0;
+      const uint8_t* g = p + align4(4 + 2 * uint32_t(nv)) + 8 * ch;
+      out->gradients[k][ch][0] = z && ch < nv ? int32_t(load_u32(g)) : 0;
+      out->gradients[k][ch][1] = z && ch < nv ? int32_t(load_u32(g + 4)) : 0;
+    }
+  }
+  out->flags = flags;
+  if (top < previous_row_) return fail(Status::unsorted);
+  previous_row_ = top;
+  previous_top_ = uint32_t(a);
+  previous_class_ = cls;
+  ++triangles_;
+  return Status::ok;
+}
+
+Status LayerDecoder::finish() {
+  if (!layer_) return Status::null_argument;
+  if (failed_ != Status::ok) return failed_;
+  if (triangles_ != layer_->triangle_count) return Status::bad_params;
+  while (decoded_ < layer_->vertex_count) {
+    const Status st = decode_vertex();
+    if (st != Status::ok) return st;
+  }
+  if (rc_.overrun) return fail(Status::truncated);
+  if (rc_.p != rc_.end) return fail(Status::bad_section);  // bytes after the stream's end
+  return Status::ok;
+}
+
+namespace {
+
+// v1 section offsets of one layer (the packer's layout: each section 4-aligned, in this order).
+struct V1Layer {
+  uint32_t positions, values, gradients, triangles, end;
+};
+
+V1Layer v1_layer(const CompressedBlob& blob, const CompressedLayer& l, uint32_t at) {
+  V1Layer o;
+  const uint32_t nv = blob.values_per_vertex;
+  o.positions = at;
+  o.values = align4(o.positions + 4 * l.vertex_count);
+  o.gradients = align4(o.values + 2 * l.vertex_count * nv);
+  o.triangles = blob.method == Method::zienkiewicz ? o.gradients + 8 * l.vertex_count * nv : o.gradients;
+  o.end = o.triangles + blob_triangle_size * l.triangle_count;
+  if (blob.method != Method::zienkiewicz) o.gradients = 0;
+  return o;
+}
+
+struct ExpandSink {
+  uint8_t* out;
+  V1Layer layer;
+  int per_vertex;
+  bool gradients;
+};
+
+void expand_vertex(void* context, uint32_t index, uint16_t x, uint16_t y, const uint16_t* values,
+                   const int32_t* gradients) {
+  const ExpandSink* s = static_cast<const ExpandSink*>(context);
+  store_u16(s->out + s->layer.positions + 4 * index, x);
+  store_u16(s->out + s->layer.positions + 4 * index + 2, y);
+  for (int c = 0; c < s->per_vertex; ++c) {
+    store_u16(s->out + s->layer.values + 2 * (index * uint32_t(s->per_vertex) + uint32_t(c)), values[c]);
+    if (s->gradients) {
+      uint8_t* g = s->out + s->layer.gradients + 8 * (index * uint32_t(s->per_vertex) + uint32_t(c));
+      store_u32(g, uint32_t(gradients[2 * c]));
+      store_u32(g + 4, uint32_t(gradients[2 * c + 1]));
+    }
+  }
+}
+
+}  // namespace
+
+size_t expanded_blob_size(const CompressedBlob& blob) {
+  uint32_t at = blob_header_size + blob_layer_entry_size * blob.layer_count;
+  for (int l = 0; l < blob.layer_count; ++l) at = v1_layer(blob, blob.layers[l], at).end;
+  return at;
+}
+
+size_t expand_workspace_size(const CompressedBlob& blob) {
+  size_t most = 0;
+  for (int l = 0; l < blob.layer_count; ++l) {
+    const size_t n = compressed_ring_bytes(blob, l);
+    most = n > most ? n : most;
+  }
+  return most;
+}
+
+Status expand_compressed_blob(const CompressedBlob& blob, void* out, size_t out_bytes, void* workspace,
+                              size_t workspace_bytes, BlobError* error) {
+  if (!out || !workspace) return Status::null_argument;
+  const size_t size = expanded_blob_size(blob);
+  if (out_bytes < size) return Status::workspace_too_small;
+  uint8_t* b = static_cast<uint8_t*>(out);
+  for (size_t i = 0; i < size; ++i) b[i] = 0;
+  b[0] = 'T', b[1] = 'S', b[2] = 'T', b[3] = 'B';
+  store_u16(b + 4, blob_version);
+  store_u16(b + 6, blob_header_size);
+  store_u32(b + 8, uint32_t(size));
+  for (int k = 12; k < 36; ++k) b[k] = blob.bytes[k];  // the fields v1 and the compressed form share
+  store_u32(b + 28, blob_header_size);
+  uint32_t at = blob_header_size + blob_layer_entry_size * blob.layer_count;
+  LayerDecoder decoder;
+  for (int l = 0; l < blob.layer_count; ++l) {
+    const CompressedLayer& cl = blob.layers[l];
+    const V1Layer o = v1_layer(blob, cl, at);
+    at = o.end;
+    uint8_t* e = b + blob_header_size + blob_layer_entry_size * uint32_t(l);
+    store_u32(e, cl.vertex_count);
+    store_u32(e + 4, cl.triangle_count);
+    store_u32(e + 8, o.positions);
+    store_u32(e + 12, o.values);
+    store_u32(e + 16, o.gradients);
+    store_u32(e + 20, o.triangles);
+    ExpandSink sink{b, o, blob.values_per_vertex, blob.method == Method::zienkiewicz};
+    Status s = decoder.begin(blob, l, workspace, workspace_bytes, expand_vertex, &sink);
+    if (s != Status::ok) return s;
+    DecodedTriangle t;
+    for (uint32_t k = 0; k < cl.triangle_count; ++k) {
+      s = decoder.next(&t);
+      if (s != Status::ok) {
+        if (error) error->offset = decoder.offset();
+        return s;
+      }
+      uint8_t* p = b + o.triangles + blob_triangle_size * k;
+      for (int c = 0; c < 3; ++c) store_u16(p + 2 * c, t.v[c]);
+      store_u16(p + 6, t.flags);
+    }
+    s = decoder.finish();
+    if (s != Status::ok) {
+      if (error) error->offset = decoder.offset();
+      return s;
+    }
+  }
+  // The decoder's checks are those of open_blob; it confirms them on the result.
+  Blob check;
+  BlobError where;
+  const Status s = open_blob(b, size, &check, &where);
+  if (s != Status::ok && error) error->offset = where.offset;
+  return s;
+}
+
+}  // namespace tristream::core
