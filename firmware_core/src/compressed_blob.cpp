@@ -33,6 +33,21 @@ constexpr int gradient_bits = 31;   // wrapped 32-bit differences
 // The class of an index difference, the context of the next one.
 uint8_t index_class(uint32_t d) { return d == 0 ? 0 : (d < 8 ? 1 : 2); }
 
+// A corner's candidates: the vertices of the last two triangles above `lower`, most recent
+// triangle first and its corners from the last, without repeats (at most 6).
+uint32_t candidates(const uint32_t (*recent)[3], uint32_t count, uint32_t lower, uint32_t* out) {
+  uint32_t n = 0;
+  for (uint32_t t = 0; t < count; ++t)
+    for (int k = 2; k >= 0; --k) {
+      const uint32_t x = recent[t][k];
+      bool seen = x <= lower;
+      for (uint32_t i = 0; i < n; ++i) seen |= out[i] == x;
+      if (!seen) out[n++] = x;
+    }
+  return n;
+}
+constexpr uint32_t new_vertex = 7;
+
 struct Fail {
   BlobError* error;
   Status operator()(Status s, uint32_t offset) const {
@@ -148,6 +163,9 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   for (auto& v : m_.value) detail::reset(v);
   for (auto& g : m_.gradient) detail::reset(g);
   detail::reset(m_.top);
+  detail::reset(m_.pick_second, 8);
+  detail::reset(&m_.pick_third[0][0], 16);
+  recent_count_ = 0;
   for (auto& s : m_.second) detail::reset(s);
   for (auto& t : m_.third) detail::reset(t);
   detail::reset(m_.rotation, 2);
@@ -251,10 +269,31 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   if (!decode_int(rc_, m_.top, index_bits, &s)) return fail(Status::bad_index);
   const int64_t a = int64_t(previous_top_) + s;
   if (a < 0 || a >= V) return fail(Status::bad_index);
-  if (!decode_uint(rc_, m_.second[previous_class_], index_bits, &d1)) return fail(Status::bad_index);
-  const uint8_t cls = index_class(d1);
-  if (!decode_uint(rc_, m_.third[cls], index_bits, &d2)) return fail(Status::bad_index);
-  const uint64_t b = uint64_t(a) + 1 + d1, c = b + 1 + d2;
+  uint32_t cand[6];
+  uint32_t n = candidates(recent_, recent_count_, uint32_t(a), cand);
+  const uint32_t pick_b = decode_symbol8(rc_, m_.pick_second);
+  uint64_t b;
+  uint8_t cls = previous_class_;
+  if (pick_b == new_vertex) {
+    if (!decode_uint(rc_, m_.second[previous_class_], index_bits, &d1)) return fail(Status::bad_index);
+    cls = index_class(d1);
+    b = uint64_t(a) + 1 + d1;
+  } else {
+    if (pick_b >= n) return fail(Status::bad_index);
+    b = cand[pick_b];
+  }
+  if (b >= V) return fail(Status::bad_index);
+  n = candidates(recent_, recent_count_, uint32_t(b), cand);
+  const uint32_t pick_c = decode_symbol8(rc_, m_.pick_third[pick_b == new_vertex]);
+  uint64_t c;
+  if (pick_c == new_vertex) {
+    if (!decode_uint(rc_, m_.third[index_class(uint32_t(b - uint64_t(a) - 1))], index_bits, &d2))
+      return fail(Status::bad_index);
+    c = b + 1 + d2;
+  } else {
+    if (pick_c >= n) return fail(Status::bad_index);
+    c = cand[pick_c];
+  }
   if (c >= V) return fail(Status::bad_index);
   if (rc_.overrun) return fail(Status::truncated);
   while (decoded_ <= c) {
@@ -304,6 +343,11 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   previous_row_ = top;
   previous_top_ = uint32_t(a);
   previous_class_ = cls;
+  for (int k = 0; k < 3; ++k) {
+    recent_[1][k] = recent_[0][k];
+    recent_[0][k] = index[k];
+  }
+  recent_count_ = recent_count_ < 2 ? recent_count_ + 1 : 2;
   ++triangles_;
   return Status::ok;
 }

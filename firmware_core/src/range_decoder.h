@@ -78,6 +78,13 @@ inline void reset(IntModel& m) {
   reset(m.magnitude);
 }
 
+// A symbol of 3 bits through a binary tree of contexts (tree[1 .. 7]).
+inline uint32_t decode_symbol8(RangeDecoder& d, Prob* tree) {
+  uint32_t node = 1;
+  for (int i = 0; i < 3; ++i) node = (node << 1) | decode_bit(d, tree[node]);
+  return node - 8;
+}
+
 // An unsigned integer of at most `max_bits` bits (<= 31) below the leading one of u + 1; false
 // when the prefix runs longer (a corrupt stream).
 inline bool decode_uint(RangeDecoder& d, UintModel& m, int max_bits, uint32_t* out) {

@@ -133,6 +133,26 @@ constexpr int gap_bits = 24, index_bits = 16, value_bits = 9, gradient_bits = 31
 
 std::uint8_t index_class(std::uint32_t d) { return d == 0 ? 0 : (d < 8 ? 1 : 2); }
 
+// The candidates of the decoder (compressed_blob.cpp): the last two triangles' vertices above
+// `lower`, most recent first, each triangle's from its last corner, without repeats.
+std::vector<std::uint32_t> candidates(const std::vector<std::array<std::uint32_t, 3>>& recent, std::uint32_t lower) {
+  std::vector<std::uint32_t> out;
+  for (const auto& t : recent)
+    for (int k = 2; k >= 0; --k)
+      if (t[k] > lower && std::find(out.begin(), out.end(), t[k]) == out.end()) out.push_back(t[k]);
+  return out;
+}
+constexpr std::uint32_t new_vertex = 7;
+
+void encode_symbol8(RangeEncoder& e, Prob* tree, std::uint32_t s) {
+  std::uint32_t node = 1;
+  for (int i = 2; i >= 0; --i) {
+    const std::uint32_t b = (s >> i) & 1u;
+    e.bit(tree[node], b);
+    node = (node << 1) | b;
+  }
+}
+
 struct Vertex {
   std::uint32_t x, y;
   std::uint32_t values[3];
@@ -205,6 +225,8 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   for (auto& x : m.value) reset(x);
   for (auto& x : m.gradient) reset(x);
   reset(m.top);
+  reset(m.pick_second, 8);
+  reset(&m.pick_third[0][0], 16);
   for (auto& x : m.second) reset(x);
   for (auto& x : m.third) reset(x);
   reset(m.rotation, 2);
@@ -251,12 +273,24 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   };
   std::uint32_t previous_top = 0;
   std::uint8_t previous_class = 0;
+  std::vector<std::array<std::uint32_t, 3>> recent;  // the last two triangles, most recent first
   for (const Tri& t : tris) {
     e.category = connectivity;
     encode_int(e, m.top, index_bits, std::int64_t(t.a) - std::int64_t(previous_top));
-    encode_uint(e, m.second[previous_class], index_bits, t.b - t.a - 1);
-    const std::uint8_t cls = index_class(t.b - t.a - 1);
-    encode_uint(e, m.third[cls], index_bits, t.c - t.b - 1);
+    std::vector<std::uint32_t> cand = candidates(recent, t.a);
+    auto found = std::find(cand.begin(), cand.end(), t.b);
+    const std::uint32_t pick_b = found == cand.end() ? new_vertex : std::uint32_t(found - cand.begin());
+    encode_symbol8(e, m.pick_second, pick_b);
+    std::uint8_t cls = previous_class;
+    if (pick_b == new_vertex) {
+      encode_uint(e, m.second[previous_class], index_bits, t.b - t.a - 1);
+      cls = index_class(t.b - t.a - 1);
+    }
+    cand = candidates(recent, t.b);
+    found = std::find(cand.begin(), cand.end(), t.c);
+    const std::uint32_t pick_c = found == cand.end() ? new_vertex : std::uint32_t(found - cand.begin());
+    encode_symbol8(e, m.pick_third[pick_b == new_vertex], pick_c);
+    if (pick_c == new_vertex) encode_uint(e, m.third[index_class(t.b - t.a - 1)], index_bits, t.c - t.b - 1);
     while (encoded <= t.c) vertex();
     e.category = connectivity;
     e.bit(m.rotation[0], t.rotation != 0);
@@ -267,6 +301,8 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
       for (int i = 0; i < 9; ++i) e.bit(m.flag_bit[i], (t.flags >> i) & 1u);
     previous_top = t.a;
     previous_class = cls;
+    recent.insert(recent.begin(), {t.a, t.b, t.c});
+    if (recent.size() > 2) recent.pop_back();
   }
   while (encoded < V) vertex();
   return LayerStream{e.finish(), window};

@@ -96,8 +96,10 @@ struct StreamModels {
   Prob fraction;            // some value of the vertex has a non-zero fraction byte
   IntModel gradient[2];     // gx, gy, against the previous vertex's of the same value
   IntModel top;             // triangle's first vertex against the previous triangle's
-  UintModel second[3];      // second index - first - 1, context: previous triangle's class
-  UintModel third[3];       // third index - second - 1, context: this triangle's second's class
+  Prob pick_second[8];      // second vertex: one of the recent candidates (0..5) or new (7), a tree
+  Prob pick_third[2][8];    // third vertex likewise, context: whether the second was new
+  UintModel second[3];      // a new second: index - first - 1, context: previous new second's class
+  UintModel third[3];       // a new third: index - second - 1, context: this triangle's second's class
   Prob rotation[2];
   Prob flags_nonzero;
   Prob flag_bit[9];
@@ -159,6 +161,8 @@ class LayerDecoder {
   uint32_t previous_top_ = 0;  // first index of the previous triangle
   int32_t previous_row_ = 0;   // top y (position_fx) of the previous triangle
   uint8_t previous_class_ = 0;
+  uint32_t recent_[2][3] = {{0, 0, 0}, {0, 0, 0}};  // the last two triangles' indices, ascending
+  uint32_t recent_count_ = 0;
   uint16_t last_values_[3] = {0, 0, 0};
   int32_t last_gradients_[3][2] = {{0, 0}, {0, 0}, {0, 0}};
   Status failed_ = Status::ok;
