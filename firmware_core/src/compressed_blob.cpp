@@ -181,10 +181,30 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   return Status::ok;
 }
 
-Status LayerDecoder::decode_vertex() {
+// The ring record of a vertex, or null when it is not in the ring.
+uint8_t* LayerDecoder::record(uint32_t index) const {
+  if (index >= decoded_ || decoded_ - index > layer_->window) return nullptr;
+  const uint32_t back = decoded_ - index;  // 1 .. window
+  const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
+  return ring_ + size_t(slot) * record_;
+}
+
+// Whether the values of a ring record are decoded: a byte of the record's padding (4 + 2 v is
+// 2 mod 4 for v = 1 or 3, so align4 leaves two bytes).
+namespace {
+uint8_t& known_byte(uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
+}  // namespace
+
+Status LayerDecoder::decode_position() {
   using namespace detail;
   const CompressedBlob& blob = *blob_;
   const int S = config::subpixel_bits;
+  // The slot's vertex leaves the ring: if no triangle asked for it, its values come now.
+  uint8_t* rec = ring_ + size_t(slot_) * record_;
+  if (decoded_ >= layer_->window && !known_byte(rec, blob.values_per_vertex)) {
+    const Status st = decode_values(rec, decoded_ - layer_->window, nullptr, nullptr);
+    if (st != Status::ok) return st;
+  }
   uint32_t gap;
   if (!decode_uint(rc_, m_.gap, gap_bits, &gap)) return fail(Status::coordinate_out_of_range);
   const uint64_t pixel = uint64_t(pixel_) + gap;
@@ -198,9 +218,34 @@ Status LayerDecoder::decode_vertex() {
   const uint32_t x = (px << S) | sx, y = (py << S) | sy;
   if (x > (uint32_t(blob.width - 1) << S) || y > (uint32_t(blob.height - 1) << S))
     return fail(Status::coordinate_out_of_range);
+  if (rc_.overrun) return fail(Status::truncated);
+  store_u16(rec, x);
+  store_u16(rec + 2, y);
+  known_byte(rec, blob.values_per_vertex) = 0;
+  pixel_ = uint32_t(pixel);
+  ++decoded_;
+  slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
+  return Status::ok;
+}
 
-  // Integer parts against the previous vertex's; in RGB, R and B also follow G's change.
+// Values (and gradients) of the vertex at `rec`, predicted from the records `p0` and `p1` (the
+// triangle's corners whose values are known; either may be null) or else from the last vertex
+// whose values were decoded.
+Status LayerDecoder::decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1) {
+  using namespace detail;
+  const CompressedBlob& blob = *blob_;
   const int nv = blob.values_per_vertex;
+  if (!p0) p0 = p1, p1 = nullptr;
+  int32_t predicted[3];
+  for (int c = 0; c < 3; ++c) {
+    if (p0 && c < nv) {
+      const int32_t h = load_u16(p0 + 4 + 2 * c) >> 8;
+      predicted[c] = p1 ? (h + (load_u16(p1 + 4 + 2 * c) >> 8) + 1) >> 1 : h;
+    } else {
+      predicted[c] = last_values_[c] >> 8;
+    }
+  }
+  // Integer parts against the prediction; in RGB, R and B also follow G's change.
   const bool rgb = blob.space == ColorSpace::rgb && nv == 3;
   int32_t high[3] = {0, 0, 0};
   int32_t shared = 0;
@@ -208,7 +253,7 @@ Status LayerDecoder::decode_vertex() {
     const int c = rgb ? (k == 0 ? 1 : (k == 1 ? 0 : 2)) : k;
     int64_t r;
     if (!decode_int(rc_, m_.value[k], value_bits, &r)) return fail(Status::value_out_of_range);
-    const int64_t h = int64_t(last_values_[c] >> 8) + r + (rgb && k > 0 ? shared : 0);
+    const int64_t h = int64_t(predicted[c]) + r + (rgb && k > 0 ? shared : 0);
     if (h < 0 || h > 255) return fail(Status::value_out_of_range);
     if (rgb && k == 0) shared = int32_t(r);
     high[c] = int32_t(h);
@@ -234,10 +279,6 @@ Status LayerDecoder::decode_vertex() {
       }
   }
   if (rc_.overrun) return fail(Status::truncated);
-
-  uint8_t* rec = ring_ + size_t(slot_) * record_;
-  store_u16(rec, x);
-  store_u16(rec + 2, y);
   for (int c = 0; c < nv; ++c) store_u16(rec + 4 + 2 * c, values[c]);
   if (blob.method == Method::zienkiewicz) {
     uint8_t* g = rec + align4(4 + 2 * uint32_t(nv));
@@ -246,15 +287,13 @@ Status LayerDecoder::decode_vertex() {
       store_u32(g + 8 * c + 4, uint32_t(gradients[c][1]));
     }
   }
-  if (sink_) sink_(sink_context_, decoded_, uint16_t(x), uint16_t(y), values, &gradients[0][0]);
+  known_byte(rec, nv) = 1;
+  if (sink_) sink_(sink_context_, index, load_u16(rec), load_u16(rec + 2), values, &gradients[0][0]);
   for (int c = 0; c < 3; ++c) {
     last_values_[c] = values[c];
     last_gradients_[c][0] = gradients[c][0];
     last_gradients_[c][1] = gradients[c][1];
   }
-  pixel_ = uint32_t(pixel);
-  ++decoded_;
-  slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
   return Status::ok;
 }
 
@@ -297,18 +336,14 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   if (c >= V) return fail(Status::bad_index);
   if (rc_.overrun) return fail(Status::truncated);
   while (decoded_ <= c) {
-    const Status st = decode_vertex();
+    const Status st = decode_position();
     if (st != Status::ok) return st;
   }
   // Every corner must still be in the ring (the window the header promised).
   if (uint64_t(a) + layer_->window < decoded_) return fail(Status::bad_index);
   const uint32_t index[3] = {uint32_t(a), uint32_t(b), uint32_t(c)};
-  const uint8_t* rec[3];
-  for (int k = 0; k < 3; ++k) {
-    const uint32_t back = decoded_ - index[k];  // 1 .. window
-    const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
-    rec[k] = ring_ + size_t(slot) * record_;
-  }
+  uint8_t* rec[3];
+  for (int k = 0; k < 3; ++k) rec[k] = record(index[k]);
   const int64_t xa = load_u16(rec[0]), ya = load_u16(rec[0] + 2);
   const int64_t area = (int64_t(load_u16(rec[1])) - xa) * (int64_t(load_u16(rec[2] + 2)) - ya) -
                        (int64_t(load_u16(rec[1] + 2)) - ya) * (int64_t(load_u16(rec[2])) - xa);
@@ -322,6 +357,15 @@ Status LayerDecoder::next(DecodedTriangle* out) {
     for (int i = 0; i < 9; ++i) flags = uint16_t(flags | (decode_bit(rc_, m_.flag_bit[i]) << i));
   if (rc_.overrun) return fail(Status::truncated);
   const int nv = blob_->values_per_vertex;
+  // The corners' values not decoded yet, in index order, from the corners known before them.
+  for (int k = 0; k < 3; ++k) {
+    if (known_byte(rec[k], nv)) continue;
+    const uint8_t* known[2] = {nullptr, nullptr};
+    for (int j = 0, n = 0; j < 3; ++j)
+      if (j != k && known_byte(rec[j], nv)) known[n++] = rec[j];
+    const Status st = decode_values(rec[k], index[k], known[0], known[1]);
+    if (st != Status::ok) return st;
+  }
   const bool z = blob_->method == Method::zienkiewicz;
   int32_t top = 0x7FFFFFFF;
   for (int k = 0; k < 3; ++k) {
@@ -357,7 +401,15 @@ Status LayerDecoder::finish() {
   if (failed_ != Status::ok) return failed_;
   if (triangles_ != layer_->triangle_count) return Status::bad_params;
   while (decoded_ < layer_->vertex_count) {
-    const Status st = decode_vertex();
+    const Status st = decode_position();
+    if (st != Status::ok) return st;
+  }
+  // The values no triangle asked for, of the vertices still in the ring.
+  const uint32_t V = layer_->vertex_count, first = V > layer_->window ? V - layer_->window : 0;
+  for (uint32_t i = first; i < V; ++i) {
+    uint8_t* rec = record(i);
+    if (known_byte(rec, blob_->values_per_vertex)) continue;
+    const Status st = decode_values(rec, i, nullptr, nullptr);
     if (st != Status::ok) return st;
   }
   if (rc_.overrun) return fail(Status::truncated);

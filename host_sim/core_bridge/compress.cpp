@@ -231,22 +231,25 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   for (auto& x : m.third) reset(x);
   reset(m.rotation, 2);
   reset(m.flag_bit, 9);
-  auto vertex = [&]() {
-    const Vertex& x = in[order[encoded]];
-    e.category = positions;
-    const std::uint32_t here = (x.y >> S) * blob.width + (x.x >> S);
-    encode_uint(e, m.gap, gap_bits, here - pixel);
-    const std::uint32_t sx = x.x & ((1u << S) - 1), sy = x.y & ((1u << S) - 1);
-    e.bit(m.subpixel, (sx | sy) != 0);
-    if (sx | sy) {
-      e.direct(sx, S);
-      e.direct(sy, S);
+  std::vector<char> valued(V, 0);
+  // Values (and gradients) of rank i, predicted from ranks p0, p1 (-1: none) as the decoder does.
+  auto values_of = [&](std::uint32_t i, std::int64_t p0, std::int64_t p1) {
+    const Vertex& x = in[order[i]];
+    if (p0 < 0) p0 = p1, p1 = -1;
+    std::uint32_t predicted[3];
+    for (int c = 0; c < 3; ++c) {
+      if (p0 >= 0) {
+        const std::uint32_t h = in[order[p0]].values[c] >> 8;
+        predicted[c] = p1 >= 0 ? (h + (in[order[p1]].values[c] >> 8) + 1) >> 1 : h;
+      } else {
+        predicted[c] = last_values[c] >> 8;
+      }
     }
     e.category = values;
     std::int64_t shared = 0;
     for (int k = 0; k < nv; ++k) {
       const int c = rgb ? (k == 0 ? 1 : (k == 1 ? 0 : 2)) : k;
-      std::int64_t r = std::int64_t(x.values[c] >> 8) - std::int64_t(last_values[c] >> 8);
+      std::int64_t r = std::int64_t(x.values[c] >> 8) - std::int64_t(predicted[c]);
       if (rgb && k == 0) shared = r;
       if (rgb && k > 0) r -= shared;
       encode_int(e, m.value[k], value_bits, r);
@@ -267,6 +270,22 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
       last_values[c] = x.values[c];
       last_gradients[c][0] = x.gradients[c][0];
       last_gradients[c][1] = x.gradients[c][1];
+    }
+    valued[i] = 1;
+  };
+  // The position of rank `encoded`; first the values of the rank it evicts from the ring, if no
+  // triangle asked for them.
+  auto position = [&]() {
+    if (encoded >= window && !valued[encoded - window]) values_of(encoded - window, -1, -1);
+    const Vertex& x = in[order[encoded]];
+    e.category = positions;
+    const std::uint32_t here = (x.y >> S) * blob.width + (x.x >> S);
+    encode_uint(e, m.gap, gap_bits, here - pixel);
+    const std::uint32_t sx = x.x & ((1u << S) - 1), sy = x.y & ((1u << S) - 1);
+    e.bit(m.subpixel, (sx | sy) != 0);
+    if (sx | sy) {
+      e.direct(sx, S);
+      e.direct(sy, S);
     }
     pixel = here;
     ++encoded;
@@ -291,7 +310,7 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     const std::uint32_t pick_c = found == cand.end() ? new_vertex : std::uint32_t(found - cand.begin());
     encode_symbol8(e, m.pick_third[pick_b == new_vertex], pick_c);
     if (pick_c == new_vertex) encode_uint(e, m.third[index_class(t.b - t.a - 1)], index_bits, t.c - t.b - 1);
-    while (encoded <= t.c) vertex();
+    while (encoded <= t.c) position();
     e.category = connectivity;
     e.bit(m.rotation[0], t.rotation != 0);
     if (t.rotation) e.bit(m.rotation[1], t.rotation == 2);
@@ -299,12 +318,22 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     e.bit(m.flags_nonzero, t.flags != 0);
     if (t.flags)
       for (int i = 0; i < 9; ++i) e.bit(m.flag_bit[i], (t.flags >> i) & 1u);
+    const std::uint32_t corner[3] = {t.a, t.b, t.c};
+    for (int k = 0; k < 3; ++k) {
+      if (valued[corner[k]]) continue;
+      std::int64_t known[2] = {-1, -1};
+      for (int j = 0, n = 0; j < 3; ++j)
+        if (j != k && valued[corner[j]]) known[n++] = corner[j];
+      values_of(corner[k], known[0], known[1]);
+    }
     previous_top = t.a;
     previous_class = cls;
     recent.insert(recent.begin(), {t.a, t.b, t.c});
     if (recent.size() > 2) recent.pop_back();
   }
-  while (encoded < V) vertex();
+  while (encoded < V) position();
+  for (std::uint32_t i = V > window ? V - window : 0; i < V; ++i)
+    if (!valued[i]) values_of(i, -1, -1);
   return LayerStream{e.finish(), window};
 }
 

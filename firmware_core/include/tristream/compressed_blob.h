@@ -124,7 +124,7 @@ struct DecodedTriangle {
   int32_t gradients[3][3][2];  // [corner][value][gx, gy], zienkiewicz only
 };
 
-// Receives each vertex once, in index order, as it is decoded (optional).
+// Receives each vertex once, when its values are decoded (not in index order; optional).
 using VertexSink = void (*)(void* context, uint32_t index, uint16_t x, uint16_t y, const uint16_t* values,
                             const int32_t* gradients);
 
@@ -144,7 +144,9 @@ class LayerDecoder {
 
  private:
   Status fail(Status s);
-  Status decode_vertex();
+  Status decode_position();
+  Status decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
+  uint8_t* record(uint32_t index) const;
 
   const CompressedBlob* blob_ = nullptr;
   const CompressedLayer* layer_ = nullptr;
