@@ -108,7 +108,8 @@ Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out,
     layer.stream_offset = load_u32(b + e + 8);
     layer.stream_bytes = load_u32(b + e + 12);
     layer.window = load_u32(b + e + 16);
-    for (uint32_t k = 20; k < compressed_layer_entry_size; ++k)
+    layer.pinned = load_u32(b + e + 20);
+    for (uint32_t k = 24; k < compressed_layer_entry_size; ++k)
       if (b[e + k] != 0) return fail(Status::bad_header, e + k);
     if (layer.vertex_count < 3 || layer.vertex_count > blob_max_vertices) return fail(Status::too_large, e);
     if (layer.triangle_count < 1 || layer.triangle_count > blob_max_triangles) return fail(Status::too_large, e + 4);
@@ -117,6 +118,7 @@ Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out,
         uint64_t(layer.stream_offset) + layer.stream_bytes > total)
       return fail(Status::bad_section, e + 8);
     if (layer.window < 3 || layer.window > layer.vertex_count) return fail(Status::bad_header, e + 16);
+    if (layer.pinned > layer.vertex_count) return fail(Status::bad_header, e + 20);
     layer.stream = b + layer.stream_offset;
     next_stream = layer.stream_offset + layer.stream_bytes;
   }
@@ -131,7 +133,8 @@ uint32_t compressed_vertex_record_bytes(const CompressedBlob& blob) {
 
 size_t compressed_ring_bytes(const CompressedBlob& blob, int layer) {
   if (layer < 0 || layer >= blob.layer_count) return 0;
-  return size_t(blob.layers[layer].window) * compressed_vertex_record_bytes(blob);
+  const CompressedLayer& l = blob.layers[layer];
+  return (size_t(l.window) + l.pinned) * compressed_vertex_record_bytes(blob) + 4 * size_t(l.pinned);
 }
 
 // A failure after the decoder ran past the stream's end is its truncation.
@@ -154,6 +157,11 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   blob_ = &blob;
   layer_ = &blob.layers[layer];
   ring_ = static_cast<uint8_t*>(ring);
+  pins_ = ring_ + size_t(layer_->window) * compressed_vertex_record_bytes(blob);
+  for (uint32_t i = 0; i < layer_->pinned; ++i)
+    store_u32(pins_ + size_t(layer_->pinned) * compressed_vertex_record_bytes(blob) + 4 * i, 0xFFFFFFFFu);
+  pin_slot_ = 0;
+  next_pinned_ = 0xFFFFFFFFu;
   record_ = compressed_vertex_record_bytes(blob);
   sink_ = sink;
   sink_context_ = sink_context;
@@ -169,6 +177,8 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   for (auto& s : m_.second) detail::reset(s);
   for (auto& t : m_.third) detail::reset(t);
   detail::reset(m_.rotation, 2);
+  m_.lift = detail::prob_half;
+  detail::reset(m_.lift_gap);
   detail::reset(m_.flag_bit, 9);
   decoded_ = slot_ = triangles_ = pixel_ = previous_top_ = 0;
   previous_row_ = 0;
@@ -181,9 +191,28 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   return Status::ok;
 }
 
-// The ring record of a vertex, or null when it is not in the ring.
+// The pinned record of a vertex not yet in the ring, or null.
+uint8_t* LayerDecoder::pinned_record(uint32_t index) const {
+  if (index < decoded_) return nullptr;
+  const uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
+  for (uint32_t i = 0; i < layer_->pinned; ++i)
+    if (load_u32(indices + 4 * i) == index) return pins_ + size_t(i) * record_;
+  return nullptr;
+}
+
+void LayerDecoder::find_next_pinned() {
+  const uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
+  next_pinned_ = 0xFFFFFFFFu;
+  for (uint32_t i = 0; i < layer_->pinned; ++i) {
+    const uint32_t v = load_u32(indices + 4 * i);
+    if (v >= decoded_ && v < next_pinned_) next_pinned_ = v;
+  }
+}
+
+// The record of a vertex: in the ring, or pinned ahead of it; null when it is in neither.
 uint8_t* LayerDecoder::record(uint32_t index) const {
-  if (index >= decoded_ || decoded_ - index > layer_->window) return nullptr;
+  if (index >= decoded_) return pinned_record(index);
+  if (decoded_ - index > layer_->window) return nullptr;
   const uint32_t back = decoded_ - index;  // 1 .. window
   const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
   return ring_ + size_t(slot) * record_;
@@ -204,6 +233,16 @@ Status LayerDecoder::decode_position() {
   if (decoded_ >= layer_->window && !known_byte(rec, blob.values_per_vertex)) {
     const Status st = decode_values(rec, decoded_ - layer_->window, nullptr, nullptr);
     if (st != Status::ok) return st;
+  }
+  if (decoded_ == next_pinned_) {
+    // Decoded ahead: the pinned record moves into the ring, without bits.
+    const uint8_t* pin = pinned_record(decoded_);
+    for (uint32_t i = 0; i < record_; ++i) rec[i] = pin[i];
+    pixel_ = uint32_t(load_u16(rec + 2) >> S) * blob.width + uint32_t(load_u16(rec) >> S);
+    ++decoded_;
+    slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
+    find_next_pinned();
+    return Status::ok;
   }
   uint32_t gap;
   if (!decode_uint(rc_, m_.gap, gap_bits, &gap)) return fail(Status::coordinate_out_of_range);
@@ -297,6 +336,47 @@ Status LayerDecoder::decode_values(uint8_t* rec, uint32_t index, const uint8_t* 
   return Status::ok;
 }
 
+// A corner not decoded yet: the positions up to it into the ring, or (a lift) its position alone
+// into the next pinned slot, whose vertex must have reached the ring.
+Status LayerDecoder::place(uint32_t index) {
+  using namespace detail;
+  if (!decode_bit(rc_, m_.lift)) {
+    while (decoded_ <= index) {
+      const Status st = decode_position();
+      if (st != Status::ok) return st;
+    }
+    return Status::ok;
+  }
+  const CompressedBlob& blob = *blob_;
+  const int S = config::subpixel_bits;
+  if (layer_->pinned == 0) return fail(Status::bad_header);
+  uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
+  const uint32_t held = load_u32(indices + 4 * pin_slot_);
+  if (held != 0xFFFFFFFFu && held >= decoded_) return fail(Status::bad_header);  // fewer slots than needed
+  uint32_t gap;
+  if (!decode_uint(rc_, m_.lift_gap, gap_bits, &gap)) return fail(Status::coordinate_out_of_range);
+  const uint64_t pixel = uint64_t(pixel_) + gap;
+  if (pixel >= uint64_t(blob.width) * blob.height) return fail(Status::coordinate_out_of_range);
+  const uint32_t py = uint32_t(pixel) / blob.width, px = uint32_t(pixel) - py * blob.width;
+  uint32_t sx = 0, sy = 0;
+  if (decode_bit(rc_, m_.subpixel)) {
+    sx = decode_direct(rc_, S);
+    sy = decode_direct(rc_, S);
+  }
+  const uint32_t x = (px << S) | sx, y = (py << S) | sy;
+  if (x > (uint32_t(blob.width - 1) << S) || y > (uint32_t(blob.height - 1) << S))
+    return fail(Status::coordinate_out_of_range);
+  if (rc_.overrun) return fail(Status::truncated);
+  uint8_t* rec = pins_ + size_t(pin_slot_) * record_;
+  store_u16(rec, x);
+  store_u16(rec + 2, y);
+  known_byte(rec, blob.values_per_vertex) = 0;
+  store_u32(indices + 4 * pin_slot_, index);
+  pin_slot_ = pin_slot_ + 1 == layer_->pinned ? 0 : pin_slot_ + 1;
+  if (index < next_pinned_) next_pinned_ = index;
+  return Status::ok;
+}
+
 Status LayerDecoder::next(DecodedTriangle* out) {
   using namespace detail;
   if (!layer_ || !out) return Status::null_argument;
@@ -335,15 +415,16 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   }
   if (c >= V) return fail(Status::bad_index);
   if (rc_.overrun) return fail(Status::truncated);
-  while (decoded_ <= c) {
-    const Status st = decode_position();
-    if (st != Status::ok) return st;
-  }
-  // Every corner must still be in the ring (the window the header promised).
-  if (uint64_t(a) + layer_->window < decoded_) return fail(Status::bad_index);
   const uint32_t index[3] = {uint32_t(a), uint32_t(b), uint32_t(c)};
+  for (int k = 0; k < 3; ++k)
+    if (index[k] >= decoded_ && !pinned_record(index[k])) {
+      const Status st = place(index[k]);
+      if (st != Status::ok) return st;
+    }
+  // Every corner must be in the ring (the window the header promised) or pinned.
   uint8_t* rec[3];
-  for (int k = 0; k < 3; ++k) rec[k] = record(index[k]);
+  for (int k = 0; k < 3; ++k)
+    if (!(rec[k] = record(index[k]))) return fail(Status::bad_index);
   const int64_t xa = load_u16(rec[0]), ya = load_u16(rec[0] + 2);
   const int64_t area = (int64_t(load_u16(rec[1])) - xa) * (int64_t(load_u16(rec[2] + 2)) - ya) -
                        (int64_t(load_u16(rec[1] + 2)) - ya) * (int64_t(load_u16(rec[2])) - xa);

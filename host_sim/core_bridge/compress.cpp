@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -162,9 +165,15 @@ struct Vertex {
 struct LayerStream {
   std::vector<std::uint8_t> bytes;
   std::uint32_t window = 0;
+  std::uint32_t pinned = 0;
+  std::size_t ram = 0;  // the decoder's ring and pinned slots
 };
 
-LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, RangeEncoder& e) {
+// One layer's stream; a corner more than `reach` ranks past its triangle's first vertex that is
+// not decoded yet is lifted (decoded alone into a pinned slot) instead of decoding every vertex up
+// to it: a shorter ring for a few explicit positions.
+LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, RangeEncoder& e,
+                         std::uint32_t reach) {
   const int S = core::config::subpixel_bits;
   const int nv = blob.values_per_vertex;
   const bool zienkiewicz = blob.method == core::Method::zienkiewicz;
@@ -196,7 +205,6 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     std::uint32_t flags;
   };
   std::vector<Tri> tris(T);
-  std::uint32_t hi = 0, window = 3;
   for (std::uint32_t t = 0; t < T; ++t) {
     const std::uint8_t* p = layer.triangles + core::blob_triangle_size * t;
     const std::uint32_t v[3] = {rank[get16(p)], rank[get16(p + 2)], rank[get16(p + 4)]};
@@ -210,8 +218,41 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     // Stored v[0] is cyc[rotation].
     const std::uint32_t rotation = v[0] == cyc[0] ? 0 : (v[0] == cyc[1] ? 1 : 2);
     tris[t] = Tri{s[0], s[1], s[2], rotation, get16(p + 6)};
-    hi = std::max(hi, s[2] + 1);
-    window = std::max(window, hi - s[0]);
+  }
+  // Pass 1: the lifts, the window (the ring must hold every corner decoded in raster order) and
+  // the pinned slots (taken in turn: a slot is free again once its vertex reached the ring).
+  std::vector<char> lift(3 * std::size_t(T), 0);
+  std::uint32_t window = 3, pinned_slots = 0;
+  {
+    std::uint32_t done = 0;
+    std::uint64_t lifts = 0;
+    std::map<std::uint32_t, std::uint64_t> pending;  // pinned rank -> its lift number
+    std::set<std::uint64_t> pending_lifts;
+    auto advance_to = [&](std::uint32_t x) {
+      for (; done <= x; ++done)
+        if (auto it = pending.find(done); it != pending.end()) {
+          pending_lifts.erase(it->second);
+          pending.erase(it);
+        }
+    };
+    for (std::uint32_t t = 0; t < T; ++t) {
+      const std::uint32_t corner[3] = {tris[t].a, tris[t].b, tris[t].c};
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t x = corner[k];
+        if (x < done || pending.count(x)) continue;
+        if (x + 1 - corner[0] > reach) {
+          lift[3 * std::size_t(t) + k] = 1;
+          pending[x] = lifts;
+          pending_lifts.insert(lifts);
+          pinned_slots = std::max(pinned_slots, std::uint32_t(lifts - *pending_lifts.begin() + 1));
+          ++lifts;
+        } else {
+          advance_to(x);
+        }
+      }
+      for (std::uint32_t x : corner)
+        if (x < done) window = std::max(window, done - x);
+    }
   }
   window = std::min(window, V);
 
@@ -230,6 +271,9 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   for (auto& x : m.second) reset(x);
   for (auto& x : m.third) reset(x);
   reset(m.rotation, 2);
+  m.lift = prob_half;
+  reset(m.lift_gap);
+  std::set<std::uint32_t> pinned;  // ranks decoded ahead, not yet in the ring
   reset(m.flag_bit, 9);
   std::vector<char> valued(V, 0);
   // Values (and gradients) of rank i, predicted from ranks p0, p1 (-1: none) as the decoder does.
@@ -280,6 +324,11 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     const Vertex& x = in[order[encoded]];
     e.category = positions;
     const std::uint32_t here = (x.y >> S) * blob.width + (x.x >> S);
+    if (pinned.erase(encoded)) {  // decoded ahead: no bits
+      pixel = here;
+      ++encoded;
+      return;
+    }
     encode_uint(e, m.gap, gap_bits, here - pixel);
     const std::uint32_t sx = x.x & ((1u << S) - 1), sy = x.y & ((1u << S) - 1);
     e.bit(m.subpixel, (sx | sy) != 0);
@@ -310,7 +359,28 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     const std::uint32_t pick_c = found == cand.end() ? new_vertex : std::uint32_t(found - cand.begin());
     encode_symbol8(e, m.pick_third[pick_b == new_vertex], pick_c);
     if (pick_c == new_vertex) encode_uint(e, m.third[index_class(t.b - t.a - 1)], index_bits, t.c - t.b - 1);
-    while (encoded <= t.c) position();
+    const std::uint32_t corners[3] = {t.a, t.b, t.c};
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t c = corners[k];
+      if (c < encoded || pinned.count(c)) continue;
+      e.category = positions;
+      const bool lifted = lift[3 * std::size_t(&t - tris.data()) + k];
+      e.bit(m.lift, lifted);
+      if (!lifted) {
+        while (encoded <= c) position();
+        continue;
+      }
+      const Vertex& x = in[order[c]];
+      const std::uint32_t here = (x.y >> S) * blob.width + (x.x >> S);
+      encode_uint(e, m.lift_gap, gap_bits, here - pixel);
+      const std::uint32_t sx = x.x & ((1u << S) - 1), sy = x.y & ((1u << S) - 1);
+      e.bit(m.subpixel, (sx | sy) != 0);
+      if (sx | sy) {
+        e.direct(sx, S);
+        e.direct(sy, S);
+      }
+      pinned.insert(c);
+    }
     e.category = connectivity;
     e.bit(m.rotation[0], t.rotation != 0);
     if (t.rotation) e.bit(m.rotation[1], t.rotation == 2);
@@ -334,7 +404,8 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   while (encoded < V) position();
   for (std::uint32_t i = V > window ? V - window : 0; i < V; ++i)
     if (!valued[i]) values_of(i, -1, -1);
-  return LayerStream{e.finish(), window};
+  const std::size_t record = ((4 + 2 * std::size_t(nv) + 3) & ~std::size_t(3)) + (zienkiewicz ? 8 * nv : 0);
+  return LayerStream{e.finish(), window, pinned_slots, (std::size_t(window) + pinned_slots) * record + 4 * pinned_slots};
 }
 
 }  // namespace
@@ -356,14 +427,25 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
   CompressStats st;
   st.v1_bytes = v1.size();
   for (int l = 0; l < blob.layer_count; ++l) {
+    // The reach with the least decoder RAM among those within 2 % of the bytes without lifts.
     RangeEncoder e;
-    const LayerStream ls = encode_layer(blob, blob.layers[l], e);
+    LayerStream ls = encode_layer(blob, blob.layers[l], e, std::numeric_limits<std::uint32_t>::max());
+    const std::size_t unlifted = ls.bytes.size();
+    for (std::uint32_t reach = ls.window / 2; reach >= 16; reach /= 2) {
+      RangeEncoder trial;
+      LayerStream candidate = encode_layer(blob, blob.layers[l], trial, reach);
+      if (candidate.ram < ls.ram && candidate.bytes.size() * 100 <= unlifted * 102) {
+        ls = std::move(candidate);
+        e = trial;
+      }
+    }
     const std::size_t entry = table + core::compressed_layer_entry_size * l;
     put32(out, entry, blob.layers[l].vertex_count);
     put32(out, entry + 4, blob.layers[l].triangle_count);
     put32(out, entry + 8, std::uint32_t(out.size()));
     put32(out, entry + 12, std::uint32_t(ls.bytes.size()));
     put32(out, entry + 16, ls.window);
+    put32(out, entry + 20, ls.pinned);
     out.insert(out.end(), ls.bytes.begin(), ls.bytes.end());
     st.vertices += blob.layers[l].vertex_count;
     st.triangles += blob.layers[l].triangle_count;

@@ -236,3 +236,33 @@ TEST_CASE("vertices no triangle uses round-trip, early ones leaving the ring and
     round_trip(v1, {{16, 16}});
   }
 }
+
+TEST_CASE("streams with lifted corners (pinned slots) round-trip and refuse damage in bounds") {
+  // Corners at the image's edges make tall triangles: their bottoms are lifted.
+  Mesh mesh = random_lattice_mesh(300, 200, 700, 21, 0, 3);
+  const std::vector<std::uint8_t> v1 = pack_blob(single_mesh(mesh, 300, 200, ColorSpace::rgb), core::Method::bilinear);
+  const std::vector<std::uint8_t> good = compress_blob(v1);
+  CAPTURE(get32(good, 64 + 16), get32(good, 64 + 20));
+  REQUIRE(get32(good, 64 + 20) > 0);  // pinned slots
+  round_trip(v1, {{32, 32}});
+  std::size_t refused = 0;
+  for (std::size_t at = 64; at < good.size(); ++at) {
+    std::vector<std::uint8_t> b = good;
+    b[at] = std::uint8_t(b[at] ^ 0xFF);
+    const Expanded r = expand(b);
+    if (r.status != core::Status::ok) {
+      ++refused;
+      CHECK(r.offset <= good.size());
+    }
+  }
+  CHECK(refused > (good.size() - 64) * 9 / 10);
+  for (std::size_t n = 0; n < good.size(); n += 7) {
+    std::vector<std::uint8_t> b(good.begin(), good.begin() + std::ptrdiff_t(n));
+    CHECK(expand(b).status != core::Status::ok);
+  }
+  // Fewer pinned slots than the stream needs is refused, not overrun.
+  std::vector<std::uint8_t> b = good;
+  const std::uint32_t pinned = get32(b, 64 + 20) - 1;
+  for (int k = 0; k < 4; ++k) b[64 + 20 + k] = std::uint8_t(pinned >> (8 * k));
+  CHECK(expand(b).status != core::Status::ok);
+}

@@ -13,7 +13,7 @@
 //    32  u32 max triangle height in rows (informative, as in v1)   36..63 reserved, zero
 //   layer table: layer count entries of 32 bytes
 //     0 u32 vertex count   4 u32 triangle count   8 u32 stream offset   12 u32 stream bytes
-//    16 u32 vertex window (ring slots the decoder needs)   20..31 reserved, zero
+//    16 u32 vertex window (ring slots the decoder needs)   20 u32 pinned slots   24..31 reserved, zero
 //   streams: one per layer, inside [header + table, total size), in layer order.
 //
 // Fields 12..35 mean what they mean in v1. The decoder (LayerDecoder) checks every symbol as it
@@ -36,7 +36,8 @@ struct CompressedLayer {
   const uint8_t* stream = nullptr;
   uint32_t stream_bytes = 0;
   uint32_t stream_offset = 0;  // of `stream` in the blob (for error offsets)
-  uint32_t window = 0;         // vertex ring slots: 1 .. vertex_count
+  uint32_t window = 0;         // vertex ring slots: 3 .. vertex_count
+  uint32_t pinned = 0;         // slots for vertices decoded ahead of the ring: 0 .. vertex_count
 };
 
 // A compressed blob whose header and layer table are valid; a view of the caller's bytes.
@@ -63,7 +64,8 @@ Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out,
 // Bytes of a decoded vertex in the ring: x, y (u16), values (u16 each), zienkiewicz gradients
 // (i32 gx, gy per value), rounded up to 4.
 uint32_t compressed_vertex_record_bytes(const CompressedBlob& blob);
-// Bytes of ring memory LayerDecoder::begin needs for layer `layer`: window * record bytes.
+// Bytes of ring memory LayerDecoder::begin needs for layer `layer`:
+// (window + pinned) * record bytes + 4 * pinned.
 size_t compressed_ring_bytes(const CompressedBlob& blob, int layer);
 
 namespace detail {
@@ -100,6 +102,8 @@ struct StreamModels {
   Prob pick_third[2][8];    // third vertex likewise, context: whether the second was new
   UintModel second[3];      // a new second: index - first - 1, context: previous new second's class
   UintModel third[3];       // a new third: index - second - 1, context: this triangle's second's class
+  Prob lift;                // a corner far ahead is decoded into a pinned slot
+  UintModel lift_gap;       // its raster pixel gap to the last vertex of the ring
   Prob rotation[2];
   Prob flags_nonzero;
   Prob flag_bit[9];
@@ -145,12 +149,18 @@ class LayerDecoder {
  private:
   Status fail(Status s);
   Status decode_position();
+  Status place(uint32_t index);
+  uint8_t* pinned_record(uint32_t index) const;
+  void find_next_pinned();
   Status decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
   uint8_t* record(uint32_t index) const;
 
   const CompressedBlob* blob_ = nullptr;
   const CompressedLayer* layer_ = nullptr;
   uint8_t* ring_ = nullptr;
+  uint8_t* pins_ = nullptr;       // pinned records, then their indices (u32 each)
+  uint32_t pin_slot_ = 0;         // the pinned slot the next lift takes
+  uint32_t next_pinned_ = 0;      // smallest index pending in a pinned slot (0xFFFFFFFF: none)
   uint32_t record_ = 0;
   VertexSink sink_ = nullptr;
   void* sink_context_ = nullptr;
