@@ -237,6 +237,7 @@ Status LayerDecoder::decode_position() {
   if (decoded_ == next_pinned_) {
     // Decoded ahead: the pinned record moves into the ring, without bits.
     const uint8_t* pin = pinned_record(decoded_);
+    if (!pin) return fail(Status::bad_index);
     for (uint32_t i = 0; i < record_; ++i) rec[i] = pin[i];
     pixel_ = uint32_t(load_u16(rec + 2) >> S) * blob.width + uint32_t(load_u16(rec) >> S);
     ++decoded_;
@@ -458,9 +459,12 @@ Status LayerDecoder::next(DecodedTriangle* out) {
     top = out->y[k] < top ? out->y[k] : top;
     for (int ch = 0; ch < 3; ++ch) {
       out->values[k][ch] = ch < nv ? load_u16(p + 4 + 2 * ch) : 0;
-      const uint8_t* g = p + align4(4 + 2 * uint32_t(nv)) + 8 * ch;
-      out->gradients[k][ch][0] = z && ch < nv ? int32_t(load_u32(g)) : 0;
-      out->gradients[k][ch][1] = z && ch < nv ? int32_t(load_u32(g + 4)) : 0;
+      out->gradients[k][ch][0] = out->gradients[k][ch][1] = 0;
+      if (z && ch < nv) {
+        const uint8_t* g = p + align4(4 + 2 * uint32_t(nv)) + 8 * ch;
+        out->gradients[k][ch][0] = int32_t(load_u32(g));
+        out->gradients[k][ch][1] = int32_t(load_u32(g + 4));
+      }
     }
   }
   out->flags = flags;

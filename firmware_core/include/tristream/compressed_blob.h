@@ -136,7 +136,8 @@ using VertexSink = void (*)(void* context, uint32_t index, uint16_t x, uint16_t 
 // of caller memory (compressed_ring_bytes). Its own state is this object (about 1.3 KiB).
 class LayerDecoder {
  public:
-  // Starts layer `layer`; `ring` must hold compressed_ring_bytes(blob, layer) bytes, 4-aligned.
+  // Starts layer `layer` of `blob` (both must outlive the decoding); `ring` must hold
+  // compressed_ring_bytes(blob, layer) bytes (any alignment).
   Status begin(const CompressedBlob& blob, int layer, void* ring, size_t ring_bytes, VertexSink sink = nullptr,
                void* sink_context = nullptr);
   // Decodes the next triangle. Call triangle_count times, then finish().
