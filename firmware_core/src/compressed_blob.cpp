@@ -170,9 +170,11 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   m_.subpixel = m_.fraction = m_.flags_nonzero = detail::prob_half;
   for (auto& v : m_.value) detail::reset(v);
   for (auto& g : m_.gradient) detail::reset(g);
-  detail::reset(m_.top);
-  detail::reset(m_.pick_second, 8);
-  detail::reset(&m_.pick_third[0][0], 16);
+  detail::reset(&m_.top[0][0], 6 * 8);
+  detail::reset(m_.top_far);
+  detail::reset(&m_.pick_second[0][0], 3 * 8);
+  detail::reset(&m_.pick_third[0][0], 9 * 8);
+  previous_picks_ = 0;
   recent_count_ = 0;
   for (auto& s : m_.second) detail::reset(s);
   for (auto& t : m_.third) detail::reset(t);
@@ -386,12 +388,20 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   const uint32_t V = layer_->vertex_count;
   int64_t s;
   uint32_t d1, d2;
-  if (!decode_int(rc_, m_.top, index_bits, &s)) return fail(Status::bad_index);
+  const uint32_t step = decode_symbol8(rc_, m_.top[previous_picks_]);
+  if (step < 4) {
+    s = step == 3 ? -1 : int64_t(step);
+  } else {
+    if (step != 7) return fail(Status::bad_index);
+    if (!decode_int(rc_, m_.top_far, index_bits, &s)) return fail(Status::bad_index);
+  }
+  const uint32_t step_class = step < 2 ? step : 2;
   const int64_t a = int64_t(previous_top_) + s;
   if (a < 0 || a >= V) return fail(Status::bad_index);
   uint32_t cand[6];
   uint32_t n = candidates(recent_, recent_count_, uint32_t(a), cand);
-  const uint32_t pick_b = decode_symbol8(rc_, m_.pick_second);
+  const uint32_t pick_b = decode_symbol8(rc_, m_.pick_second[step_class]);
+  const uint32_t b_class = pick_b == new_vertex ? 0 : (pick_b == 0 ? 1 : 2);
   uint64_t b;
   uint8_t cls = previous_class_;
   if (pick_b == new_vertex) {
@@ -404,7 +414,7 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   }
   if (b >= V) return fail(Status::bad_index);
   n = candidates(recent_, recent_count_, uint32_t(b), cand);
-  const uint32_t pick_c = decode_symbol8(rc_, m_.pick_third[pick_b == new_vertex]);
+  const uint32_t pick_c = decode_symbol8(rc_, m_.pick_third[3 * b_class + step_class]);
   uint64_t c;
   if (pick_c == new_vertex) {
     if (!decode_uint(rc_, m_.third[index_class(uint32_t(b - uint64_t(a) - 1))], index_bits, &d2))
@@ -472,6 +482,7 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   previous_row_ = top;
   previous_top_ = uint32_t(a);
   previous_class_ = cls;
+  previous_picks_ = uint8_t(2 * b_class + (pick_c == new_vertex));
   for (int k = 0; k < 3; ++k) {
     recent_[1][k] = recent_[0][k];
     recent_[0][k] = index[k];

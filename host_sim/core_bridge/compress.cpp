@@ -265,9 +265,11 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   m.subpixel = m.fraction = m.flags_nonzero = prob_half;
   for (auto& x : m.value) reset(x);
   for (auto& x : m.gradient) reset(x);
-  reset(m.top);
-  reset(m.pick_second, 8);
-  reset(&m.pick_third[0][0], 16);
+  reset(&m.top[0][0], 6 * 8);
+  reset(m.top_far);
+  reset(&m.pick_second[0][0], 3 * 8);
+  reset(&m.pick_third[0][0], 9 * 8);
+  std::uint32_t previous_picks = 0;
   for (auto& x : m.second) reset(x);
   for (auto& x : m.third) reset(x);
   reset(m.rotation, 2);
@@ -344,11 +346,16 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   std::vector<std::array<std::uint32_t, 3>> recent;  // the last two triangles, most recent first
   for (const Tri& t : tris) {
     e.category = connectivity;
-    encode_int(e, m.top, index_bits, std::int64_t(t.a) - std::int64_t(previous_top));
+    const std::int64_t delta = std::int64_t(t.a) - std::int64_t(previous_top);
+    const std::uint32_t step = delta >= 0 && delta <= 2 ? std::uint32_t(delta) : (delta == -1 ? 3 : 7);
+    encode_symbol8(e, m.top[previous_picks], step);
+    if (step == 7) encode_int(e, m.top_far, index_bits, delta);
+    const std::uint32_t step_class = step < 2 ? step : 2;
     std::vector<std::uint32_t> cand = candidates(recent, t.a);
     auto found = std::find(cand.begin(), cand.end(), t.b);
     const std::uint32_t pick_b = found == cand.end() ? new_vertex : std::uint32_t(found - cand.begin());
-    encode_symbol8(e, m.pick_second, pick_b);
+    encode_symbol8(e, m.pick_second[step_class], pick_b);
+    const std::uint32_t b_class = pick_b == new_vertex ? 0 : (pick_b == 0 ? 1 : 2);
     std::uint8_t cls = previous_class;
     if (pick_b == new_vertex) {
       encode_uint(e, m.second[previous_class], index_bits, t.b - t.a - 1);
@@ -357,7 +364,7 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     cand = candidates(recent, t.b);
     found = std::find(cand.begin(), cand.end(), t.c);
     const std::uint32_t pick_c = found == cand.end() ? new_vertex : std::uint32_t(found - cand.begin());
-    encode_symbol8(e, m.pick_third[pick_b == new_vertex], pick_c);
+    encode_symbol8(e, m.pick_third[3 * b_class + step_class], pick_c);
     if (pick_c == new_vertex) encode_uint(e, m.third[index_class(t.b - t.a - 1)], index_bits, t.c - t.b - 1);
     const std::uint32_t corners[3] = {t.a, t.b, t.c};
     for (int k = 0; k < 3; ++k) {
@@ -398,6 +405,7 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     }
     previous_top = t.a;
     previous_class = cls;
+    previous_picks = 2 * b_class + (pick_c == new_vertex);
     recent.insert(recent.begin(), {t.a, t.b, t.c});
     if (recent.size() > 2) recent.pop_back();
   }

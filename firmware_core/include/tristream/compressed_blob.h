@@ -97,9 +97,12 @@ struct StreamModels {
   IntModel value[3];        // integer parts of the values, predicted (see the doc)
   Prob fraction;            // some value of the vertex has a non-zero fraction byte
   IntModel gradient[2];     // gx, gy, against the previous vertex's of the same value
-  IntModel top;             // triangle's first vertex against the previous triangle's
-  Prob pick_second[8];      // second vertex: one of the recent candidates (0..5) or new (7), a tree
-  Prob pick_third[2][8];    // third vertex likewise, context: whether the second was new
+  // A triangle's first vertex against the previous triangle's: 0, +1, +2, -1 or an escape (7) to
+  // top_far, context: how the previous triangle's second and third were coded (6 classes).
+  Prob top[6][8];
+  IntModel top_far;
+  Prob pick_second[3][8];   // second vertex: a recent candidate (0..5) or new (7); context: first's step
+  Prob pick_third[9][8];    // third vertex likewise; context: second's class (new, 0, other) x step
   UintModel second[3];      // a new second: index - first - 1, context: previous new second's class
   UintModel third[3];       // a new third: index - second - 1, context: this triangle's second's class
   Prob lift;                // a corner far ahead is decoded into a pinned slot
@@ -174,6 +177,7 @@ class LayerDecoder {
   uint32_t previous_top_ = 0;  // first index of the previous triangle
   int32_t previous_row_ = 0;   // top y (position_fx) of the previous triangle
   uint8_t previous_class_ = 0;
+  uint8_t previous_picks_ = 0;  // context of the next triangle's first vertex
   uint32_t recent_[2][3] = {{0, 0, 0}, {0, 0, 0}};  // the last two triangles' indices, ascending
   uint32_t recent_count_ = 0;
   uint16_t last_values_[3] = {0, 0, 0};
