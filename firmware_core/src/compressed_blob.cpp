@@ -226,6 +226,16 @@ namespace {
 uint8_t& known_byte(uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
 }  // namespace
 
+namespace {
+// A gradient component's prediction: the known corners' (one, or the mean of two), else `last`.
+int32_t gradient_prediction(const uint8_t* p0, const uint8_t* p1, int nv, int c, int axis, int32_t last) {
+  if (!p0) return last;
+  const uint32_t at = align4(4 + 2 * uint32_t(nv)) + 8 * uint32_t(c) + 4 * uint32_t(axis);
+  const int64_t g0 = int32_t(load_u32(p0 + at));
+  return p1 ? int32_t((g0 + int32_t(load_u32(p1 + at))) >> 1) : int32_t(g0);
+}
+}  // namespace
+
 Status LayerDecoder::decode_position() {
   using namespace detail;
   const CompressedBlob& blob = *blob_;
@@ -315,7 +325,7 @@ Status LayerDecoder::decode_values(uint8_t* rec, uint32_t index, const uint8_t* 
       for (int a = 0; a < 2; ++a) {
         int64_t r;
         if (!decode_int(rc_, m_.gradient[a], gradient_bits, &r)) return fail(Status::value_out_of_range);
-        const int32_t g = int32_t(uint32_t(last_gradients_[c][a]) + uint32_t(r));
+        const int32_t g = int32_t(uint32_t(gradient_prediction(p0, p1, nv, c, a, last_gradients_[c][a])) + uint32_t(r));
         if (g > limit || g < -limit) return fail(Status::value_out_of_range);
         gradients[c][a] = g;
       }

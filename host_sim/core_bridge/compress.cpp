@@ -309,8 +309,15 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
       e.category = gradients;
       for (int c = 0; c < nv; ++c)
         for (int a = 0; a < 2; ++a)
+        {
+          std::int32_t predicted = last_gradients[c][a];
+          if (p0 >= 0) {
+            const std::int64_t g0 = in[order[p0]].gradients[c][a];
+            predicted = p1 >= 0 ? std::int32_t((g0 + in[order[p1]].gradients[c][a]) >> 1) : std::int32_t(g0);
+          }
           encode_int(e, m.gradient[a], gradient_bits,
-                     std::int32_t(std::uint32_t(x.gradients[c][a]) - std::uint32_t(last_gradients[c][a])));
+                     std::int32_t(std::uint32_t(x.gradients[c][a]) - std::uint32_t(predicted)));
+        }
     }
     for (int c = 0; c < 3; ++c) {
       last_values[c] = x.values[c];
