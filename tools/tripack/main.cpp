@@ -11,6 +11,8 @@
 #include "common/json_name.h"
 #include "common/tool_main.h"
 #include "core_bridge/c_source.h"
+#include "core_bridge/compress.h"
+#include "core_bridge/compressed_c_source.h"
 #include "core_bridge/core_stack.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/render_core.h"
@@ -33,6 +35,7 @@ struct Request {
   int width = 0;
   int height = 0;
   bool json = false;
+  bool compress = false;
 };
 
 }  // namespace
@@ -67,6 +70,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(2, core::config::max_dimension));
   app.add_option("--height", req.height, "Output height (default: the triangulation's)")
       ->check(CLI::Range(2, core::config::max_dimension));
+  app.add_flag("--compress", req.compress,
+               "Write the compressed blob (\"TSTC\", docs/COMPRESSED_BLOB.md) instead of v1: x.bin, or x.c with the\n"
+               "bytes as const uint8_t SYMBOL[] and x.h with SYMBOL_BYTES, SYMBOL_EXPANDED_BYTES and\n"
+               "SYMBOL_DECODER_RING_BYTES; the report adds its bytes against v1 and its bits per vertex");
   app.add_flag("--json", req.json, "Print the figures as JSON");
   return run_tool("tripack", app, argc, argv, [&]() -> int {
     const std::string ext = std::filesystem::path(req.output).extension().string();
@@ -85,11 +92,31 @@ int main(int argc, char** argv) {
     o.tile_height = req.tile_height >= 0 ? req.tile_height : req.tile;
     o.format = parse_pixel_format(req.format);
     CoreRenderer sizes(blob, o, req.input);
-    if (ext == ".bin") {
+    CompressStats stats;
+    std::vector<std::uint8_t> compressed;
+    core::CompressedBlob cblob;
+    if (req.compress) {
+      compressed = compress_blob(blob, req.input, &stats);
+      core::BlobError error;
+      const core::Status s = core::open_compressed_blob(compressed.data(), compressed.size(), &cblob, &error);
+      if (s != core::Status::ok)
+        throw std::logic_error("compressed blob refused at byte " + std::to_string(error.offset) + ": " +
+                               core::status_text(s));
+    }
+    const std::string symbol = req.symbol.empty() ? blob_symbol_of(req.output) : req.symbol;
+    if (req.compress && ext == ".bin") {
+      write_file_atomically(req.output,
+                            std::string_view(reinterpret_cast<const char*>(compressed.data()), compressed.size()));
+    } else if (req.compress) {
+      const CCompressedSpec spec{symbol, std::filesystem::path(req.input).filename().string()};
+      const std::filesystem::path header = std::filesystem::path(req.output).replace_extension(".h");
+      write_file_atomically(header.string(), compressed_c_header(cblob, spec));
+      write_file_atomically(req.output, compressed_c_source(compressed, spec));
+    } else if (ext == ".bin") {
       write_file_atomically(req.output, std::string_view(reinterpret_cast<const char*>(blob.data()), blob.size()));
     } else {
       CBlobSpec spec;
-      spec.symbol = req.symbol.empty() ? blob_symbol_of(req.output) : req.symbol;
+      spec.symbol = symbol;
       spec.source_name = std::filesystem::path(req.input).filename().string();
       spec.format = o.format;
       spec.output_width = req.width ? req.width : sizes.blob().width;
@@ -122,6 +149,22 @@ int main(int argc, char** argv) {
       j["ram_bytes"] = ram;
       j["tile_buffer_max_bytes"] = bound.tile_buffer_bytes;
       j["workspace_max_bytes"] = bound.workspace_bytes;
+      if (req.compress) {
+        const double n = double(stats.vertices);
+        j["blob_bytes"] = compressed.size();
+        j["v1_bytes"] = blob.size();
+        j["expanded_bytes"] = core::expanded_blob_size(cblob);
+        j["decoder_ring_bytes"] = core::expand_workspace_size(cblob);
+        j["decoder_state_bytes"] = sizeof(core::LayerDecoder);
+        j["vertices"] = stats.vertices;
+        j["triangles"] = stats.triangles;
+        j["bits_per_vertex"] = {{"positions", stats.position_bits / n},
+                                {"values", stats.value_bits / n},
+                                {"gradients", stats.gradient_bits / n},
+                                {"connectivity", stats.connectivity_bits / n},
+                                {"flags", stats.flag_bits / n},
+                                {"total", 8.0 * double(compressed.size()) / n}};
+      }
       std::printf("%s\n", j.dump(2).c_str());
     } else {
       const std::string w = o.tile_width ? std::to_string(o.tile_width) : std::string("full-width");
@@ -129,7 +172,20 @@ int main(int argc, char** argv) {
       const std::string tiles = o.tile_width == 0 && o.tile_height == 0 ? std::string("full frame")
                                 : o.tile_width == 0 ? "bands of " + h + " rows"
                                                     : "tiles " + w + "x" + h;
-      std::printf("%s: blob %zu bytes (%s)\n", req.output.c_str(), blob.size(), req.method.c_str());
+      if (req.compress) {
+        const double n = double(stats.vertices);
+        std::printf("%s: compressed blob %zu bytes (%s), v1 %zu bytes (%.2fx)\n", req.output.c_str(),
+                    compressed.size(), req.method.c_str(), blob.size(), double(blob.size()) / double(compressed.size()));
+        std::printf("bits per vertex (%llu vertices, %llu triangles): positions %.2f + values %.2f + gradients %.2f + "
+                    "connectivity %.2f + flags %.2f = %.2f\n",
+                    static_cast<unsigned long long>(stats.vertices), static_cast<unsigned long long>(stats.triangles),
+                    stats.position_bits / n, stats.value_bits / n, stats.gradient_bits / n,
+                    stats.connectivity_bits / n, stats.flag_bits / n, 8.0 * double(compressed.size()) / n);
+        std::printf("decoder RAM: ring %zu + state %zu bytes; expanded v1 blob %zu bytes (rendered as below)\n",
+                    core::expand_workspace_size(cblob), sizeof(core::LayerDecoder), core::expanded_blob_size(cblob));
+      } else {
+        std::printf("%s: blob %zu bytes (%s)\n", req.output.c_str(), blob.size(), req.method.c_str());
+      }
       std::printf("RAM for %s, %s: tile buffer %zu + workspace %zu + stack %zu (Cortex-M4) = %zu bytes\n",
                   req.format.c_str(), tiles.c_str(), sizes.tile_buffer_bytes(), sizes.workspace_bytes(), stack, ram);
       std::printf("upper bound for outputs up to %dx%d, any viewport, %s at most: tile buffer %zu + workspace %zu + "

@@ -1,0 +1,198 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+// The compressed blob ("TSTC", docs/COMPRESSED_BLOB.md): the same meshes as a v1 blob (blob.h),
+// each layer one stream of an adaptive binary range coder, decoded sequentially in the order the
+// core consumes the mesh (triangles by top row). Layout (little-endian, offsets from byte 0):
+//
+//   header, 64 bytes
+//     0  char[4] magic "TSTC"        4  u16 version (1)         6  u16 header size (64)
+//     8  u32 total size             12  u16 width  14 u16 height
+//    16  u8 colour space   17 u8 method   18 u8 layer count   19 u8 values per vertex
+//    20  u8 sub-pixel bits   21 u8 gradient fraction bits   22 u16 flags (0)
+//    24  u32 config hash (blob_config_hash())   28 u32 layer table offset (64)
+//    32  u32 max triangle height in rows (informative, as in v1)   36..63 reserved, zero
+//   layer table: layer count entries of 32 bytes
+//     0 u32 vertex count   4 u32 triangle count   8 u32 stream offset   12 u32 stream bytes
+//    16 u32 vertex window (ring slots the decoder needs)   20 u32 pinned slots   24..31 reserved, zero
+//   streams: one per layer, inside [header + table, total size), in layer order.
+//
+// Fields 12..35 mean what they mean in v1. The decoder (LayerDecoder) checks every symbol as it
+// goes: a corrupt stream ends in a status and the byte offset where the decoder stood.
+#include <stddef.h>
+#include <stdint.h>
+
+#include "tristream/blob.h"
+#include "tristream/status.h"
+
+namespace tristream::core {
+
+inline constexpr uint16_t compressed_version = 1;
+inline constexpr uint32_t compressed_header_size = 64;
+inline constexpr uint32_t compressed_layer_entry_size = 32;
+
+struct CompressedLayer {
+  uint32_t vertex_count = 0;
+  uint32_t triangle_count = 0;
+  const uint8_t* stream = nullptr;
+  uint32_t stream_bytes = 0;
+  uint32_t stream_offset = 0;  // of `stream` in the blob (for error offsets)
+  uint32_t window = 0;         // vertex ring slots: 3 .. vertex_count
+  uint32_t pinned = 0;         // slots for vertices decoded ahead of the ring: 0 .. vertex_count
+};
+
+// A compressed blob whose header and layer table are valid; a view of the caller's bytes.
+struct CompressedBlob {
+  const uint8_t* bytes = nullptr;
+  uint32_t size = 0;
+  uint16_t width = 0;
+  uint16_t height = 0;
+  ColorSpace space = ColorSpace::grey;
+  Method method = Method::bilinear;
+  uint8_t layer_count = 0;
+  uint8_t values_per_vertex = 0;
+  uint32_t max_triangle_height = 0;
+  CompressedLayer layers[3];
+};
+
+// Whether the bytes start with the compressed magic "TSTC" (size >= 4).
+bool is_compressed_blob(const void* bytes, size_t size);
+
+// Checks the header and the layer table (the streams are checked as they are decoded) and fills
+// `out`. Never reads outside [bytes, bytes + size). `error` receives the offset of a failure.
+Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out, BlobError* error = nullptr);
+
+// Bytes of a decoded vertex in the ring: x, y (u16), values (u16 each), zienkiewicz gradients
+// (i32 gx, gy per value), rounded up to 4.
+uint32_t compressed_vertex_record_bytes(const CompressedBlob& blob);
+// Bytes of ring memory LayerDecoder::begin needs for layer `layer`:
+// (window + pinned) * record bytes + 4 * pinned.
+size_t compressed_ring_bytes(const CompressedBlob& blob, int layer);
+
+namespace detail {
+
+// An adaptive probability of a 0 in 1/2048 (11 bits), moved 1/32 of the way per coded bit.
+using Prob = uint16_t;
+inline constexpr int prob_bits = 11;
+inline constexpr int prob_shift = 5;
+inline constexpr Prob prob_half = 1u << (prob_bits - 1);
+
+// Contexts of an unsigned integer u in adaptive Exp-Golomb form: k = floor(log2(u + 1)) as k ones
+// and a zero (bit i with prefix[min(i, 15)]), then the k bits of u + 1 below its leading one, the
+// first two through a small tree per k (mantissa[min(k, 15)]), the others at probability 1/2.
+struct UintModel {
+  Prob prefix[16];
+  Prob mantissa[16][3];
+};
+// A signed integer: zero or not, the sign, then |s| - 1 as an UintModel.
+struct IntModel {
+  Prob zero;
+  Prob sign;
+  UintModel magnitude;
+};
+
+// Every context of one layer's stream (docs/COMPRESSED_BLOB.md lists what each codes).
+struct StreamModels {
+  UintModel gap;            // raster pixel gap to the previous vertex
+  Prob subpixel;            // the vertex has non-zero sub-pixel bits
+  IntModel value[3];        // integer parts of the values, predicted (see the doc)
+  Prob fraction;            // some value of the vertex has a non-zero fraction byte
+  IntModel gradient[2];     // gx, gy, against the previous vertex's of the same value
+  // A triangle's first vertex against the previous triangle's: 0, +1, +2, -1 or an escape (7) to
+  // top_far, context: how the previous triangle's second and third were coded (6 classes).
+  Prob top[6][8];
+  IntModel top_far;
+  Prob pick_second[3][8];   // second vertex: a recent candidate (0..5) or new (7); context: first's step
+  Prob pick_third[9][8];    // third vertex likewise; context: second's class (new, 0, other) x step
+  UintModel second[3];      // a new second: index - first - 1, context: previous new second's class
+  UintModel third[3];       // a new third: index - second - 1, context: this triangle's second's class
+  Prob lift;                // a corner far ahead is decoded into a pinned slot
+  UintModel lift_gap;       // its raster pixel gap to the last vertex of the ring
+  Prob rotation[2];
+  Prob flags_nonzero;
+  Prob flag_bit[9];
+};
+
+struct RangeDecoder {
+  const uint8_t* p = nullptr;
+  const uint8_t* end = nullptr;
+  uint32_t range = 0;
+  uint32_t code = 0;
+  bool overrun = false;  // asked for bytes past the end (never in a valid stream)
+};
+
+}  // namespace detail
+
+// One decoded triangle: its corners as in the v1 blob (v[0] first), each with its data.
+struct DecodedTriangle {
+  uint32_t v[3];  // vertex indices in the stream's (raster) numbering
+  uint16_t flags;
+  uint16_t x[3], y[3];
+  uint16_t values[3][3];       // [corner][value], q8_8
+  int32_t gradients[3][3][2];  // [corner][value][gx, gy], zienkiewicz only
+};
+
+// Receives each vertex once, when its values are decoded (not in index order; optional).
+using VertexSink = void (*)(void* context, uint32_t index, uint16_t x, uint16_t y, const uint16_t* values,
+                            const int32_t* gradients);
+
+// Decodes one layer's stream triangle by triangle, keeping the last `window` vertices in a ring
+// of caller memory (compressed_ring_bytes). Its own state is this object (about 1.3 KiB).
+class LayerDecoder {
+ public:
+  // Starts layer `layer` of `blob` (both must outlive the decoding); `ring` must hold
+  // compressed_ring_bytes(blob, layer) bytes (any alignment).
+  Status begin(const CompressedBlob& blob, int layer, void* ring, size_t ring_bytes, VertexSink sink = nullptr,
+               void* sink_context = nullptr);
+  // Decodes the next triangle. Call triangle_count times, then finish().
+  Status next(DecodedTriangle* out);
+  // Decodes the vertices no triangle needed yet and checks that the stream ends exactly.
+  Status finish();
+  // Byte offset in the blob where the decoder stands (of the failure after a bad status).
+  uint32_t offset() const;
+
+ private:
+  Status fail(Status s);
+  Status decode_position();
+  Status place(uint32_t index);
+  uint8_t* pinned_record(uint32_t index) const;
+  void find_next_pinned();
+  Status decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
+  uint8_t* record(uint32_t index) const;
+
+  const CompressedBlob* blob_ = nullptr;
+  const CompressedLayer* layer_ = nullptr;
+  uint8_t* ring_ = nullptr;
+  uint8_t* pins_ = nullptr;       // pinned records, then their indices (u32 each)
+  uint32_t pin_slot_ = 0;         // the pinned slot the next lift takes
+  uint32_t next_pinned_ = 0;      // smallest index pending in a pinned slot (0xFFFFFFFF: none)
+  uint32_t record_ = 0;
+  VertexSink sink_ = nullptr;
+  void* sink_context_ = nullptr;
+  detail::RangeDecoder rc_;
+  detail::StreamModels m_;
+  uint32_t decoded_ = 0;       // vertices decoded: indices [0, decoded_)
+  uint32_t slot_ = 0;          // ring slot of vertex decoded_
+  uint32_t triangles_ = 0;     // triangles decoded
+  uint32_t pixel_ = 0;         // raster pixel index of the last vertex
+  uint32_t previous_top_ = 0;  // first index of the previous triangle
+  int32_t previous_row_ = 0;   // top y (position_fx) of the previous triangle
+  uint8_t previous_class_ = 0;
+  uint8_t previous_picks_ = 0;  // context of the next triangle's first vertex
+  uint32_t recent_[2][3] = {{0, 0, 0}, {0, 0, 0}};  // the last two triangles' indices, ascending
+  uint32_t recent_count_ = 0;
+  uint16_t last_values_[3] = {0, 0, 0};
+  int32_t last_gradients_[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  Status failed_ = Status::ok;
+};
+
+// Bytes of the v1 blob expand_compressed_blob writes (the layout tripack's packer writes).
+size_t expanded_blob_size(const CompressedBlob& blob);
+// Bytes of workspace expand_compressed_blob needs: the largest layer's ring.
+size_t expand_workspace_size(const CompressedBlob& blob);
+// Decodes every layer into a v1 blob at `out` (expanded_blob_size bytes), which open_blob accepts
+// and which renders bit-identically to the v1 blob the stream was made from (its vertices are
+// numbered in the stream's raster order). `error` receives the offset of a failure.
+Status expand_compressed_blob(const CompressedBlob& blob, void* out, size_t out_bytes, void* workspace,
+                              size_t workspace_bytes, BlobError* error = nullptr);
+
+}  // namespace tristream::core

@@ -1,0 +1,638 @@
+// SPDX-License-Identifier: MIT
+// The compressed blob: header checks, the layer decoder and the expansion to a v1 blob
+// (docs/COMPRESSED_BLOB.md is the format; this file is its only reader).
+#include "tristream/compressed_blob.h"
+
+#include "range_decoder.h"
+#include "tristream/detail/bytes.h"
+
+namespace tristream::core {
+
+using detail::load_u16;
+using detail::load_u32;
+
+namespace {
+
+void store_u16(uint8_t* p, uint32_t v) {
+  p[0] = uint8_t(v & 0xFFu);
+  p[1] = uint8_t((v >> 8) & 0xFFu);
+}
+void store_u32(uint8_t* p, uint32_t v) {
+  store_u16(p, v & 0xFFFFu);
+  store_u16(p + 2, v >> 16);
+}
+
+constexpr uint32_t align4(uint32_t n) { return (n + 3u) & ~3u; }
+
+// Sizes of the coded integers (bits of |s| - 1 or of u + 1 below its leading one).
+constexpr int gap_bits = 24;        // a raster pixel index of at most 4096 x 4096
+constexpr int index_bits = 16;      // vertex indices below 65535
+constexpr int value_bits = 9;       // residuals of at most 510
+constexpr int gradient_bits = 31;   // wrapped 32-bit differences
+
+// The class of an index difference, the context of the next one.
+uint8_t index_class(uint32_t d) { return d == 0 ? 0 : (d < 8 ? 1 : 2); }
+
+// A corner's candidates: the vertices of the last two triangles above `lower`, most recent
+// triangle first and its corners from the last, without repeats (at most 6).
+uint32_t candidates(const uint32_t (*recent)[3], uint32_t count, uint32_t lower, uint32_t* out) {
+  uint32_t n = 0;
+  for (uint32_t t = 0; t < count; ++t)
+    for (int k = 2; k >= 0; --k) {
+      const uint32_t x = recent[t][k];
+      bool seen = x <= lower;
+      for (uint32_t i = 0; i < n; ++i) seen |= out[i] == x;
+      if (!seen) out[n++] = x;
+    }
+  return n;
+}
+constexpr uint32_t new_vertex = 7;
+
+struct Fail {
+  BlobError* error;
+  Status operator()(Status s, uint32_t offset) const {
+    if (error) error->offset = offset;
+    return s;
+  }
+};
+
+}  // namespace
+
+bool is_compressed_blob(const void* bytes, size_t size) {
+  const uint8_t* b = static_cast<const uint8_t*>(bytes);
+  return b && size >= 4 && b[0] == 'T' && b[1] == 'S' && b[2] == 'T' && b[3] == 'C';
+}
+
+Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out, BlobError* error) {
+  if (!bytes || !out) return Status::null_argument;
+  const uint8_t* b = static_cast<const uint8_t*>(bytes);
+  const Fail fail{error};
+  if (size < compressed_header_size) return fail(Status::truncated, uint32_t(size));
+  if (!is_compressed_blob(b, size)) return fail(Status::bad_magic, 0);
+  if (load_u16(b + 4) != compressed_version) return fail(Status::bad_version, 4);
+  if (load_u16(b + 6) != compressed_header_size) return fail(Status::bad_header, 6);
+  const uint32_t total = load_u32(b + 8);
+  if (total < compressed_header_size || total > size) return fail(Status::truncated, 8);
+  if (b[20] != config::subpixel_bits) return fail(Status::config_mismatch, 20);
+  if (b[21] != config::gradient_frac_bits) return fail(Status::config_mismatch, 21);
+  if (load_u32(b + 24) != blob_config_hash()) return fail(Status::config_mismatch, 24);
+  CompressedBlob blob;
+  blob.bytes = b;
+  blob.size = total;
+  blob.width = load_u16(b + 12);
+  blob.height = load_u16(b + 14);
+  if (blob.width < 2 || blob.width > config::max_dimension) return fail(Status::too_large, 12);
+  if (blob.height < 2 || blob.height > config::max_dimension) return fail(Status::too_large, 14);
+  if (b[16] > 2) return fail(Status::bad_header, 16);
+  blob.space = ColorSpace(b[16]);
+  if (b[17] > 1) return fail(Status::bad_header, 17);
+  blob.method = Method(b[17]);
+  blob.layer_count = b[18];
+  blob.values_per_vertex = b[19];
+  const int channels = blob.space == ColorSpace::grey ? 1 : 3;
+  const bool single = blob.layer_count == 1 && blob.values_per_vertex == channels;
+  const bool layered = channels == 3 && blob.layer_count == 3 && blob.values_per_vertex == 1;
+  if (!single && !layered) return fail(Status::bad_header, blob.layer_count == 1 || blob.layer_count == 3 ? 19 : 18);
+  if (load_u16(b + 22) != 0) return fail(Status::bad_header, 22);
+  if (load_u32(b + 28) != compressed_header_size) return fail(Status::bad_section, 28);
+  blob.max_triangle_height = load_u32(b + 32);
+  for (uint32_t k = 36; k < compressed_header_size; ++k)
+    if (b[k] != 0) return fail(Status::bad_header, k);
+  uint32_t next_stream = compressed_header_size + blob.layer_count * compressed_layer_entry_size;
+  if (next_stream > total) return fail(Status::truncated, 28);
+  for (uint32_t l = 0; l < blob.layer_count; ++l) {
+    const uint32_t e = compressed_header_size + l * compressed_layer_entry_size;
+    CompressedLayer& layer = blob.layers[l];
+    layer.vertex_count = load_u32(b + e);
+    layer.triangle_count = load_u32(b + e + 4);
+    layer.stream_offset = load_u32(b + e + 8);
+    layer.stream_bytes = load_u32(b + e + 12);
+    layer.window = load_u32(b + e + 16);
+    layer.pinned = load_u32(b + e + 20);
+    for (uint32_t k = 24; k < compressed_layer_entry_size; ++k)
+      if (b[e + k] != 0) return fail(Status::bad_header, e + k);
+    if (layer.vertex_count < 3 || layer.vertex_count > blob_max_vertices) return fail(Status::too_large, e);
+    if (layer.triangle_count < 1 || layer.triangle_count > blob_max_triangles) return fail(Status::too_large, e + 4);
+    // Streams in layer order, each of at least the 4 bytes the decoder starts with.
+    if (layer.stream_offset < next_stream || layer.stream_bytes < 4 ||
+        uint64_t(layer.stream_offset) + layer.stream_bytes > total)
+      return fail(Status::bad_section, e + 8);
+    if (layer.window < 3 || layer.window > layer.vertex_count) return fail(Status::bad_header, e + 16);
+    if (layer.pinned > layer.vertex_count) return fail(Status::bad_header, e + 20);
+    layer.stream = b + layer.stream_offset;
+    next_stream = layer.stream_offset + layer.stream_bytes;
+  }
+  *out = blob;
+  return Status::ok;
+}
+
+uint32_t compressed_vertex_record_bytes(const CompressedBlob& blob) {
+  const uint32_t nv = blob.values_per_vertex;
+  return align4(4 + 2 * nv) + (blob.method == Method::zienkiewicz ? 8 * nv : 0);
+}
+
+size_t compressed_ring_bytes(const CompressedBlob& blob, int layer) {
+  if (layer < 0 || layer >= blob.layer_count) return 0;
+  const CompressedLayer& l = blob.layers[layer];
+  return (size_t(l.window) + l.pinned) * compressed_vertex_record_bytes(blob) + 4 * size_t(l.pinned);
+}
+
+// A failure after the decoder ran past the stream's end is its truncation.
+Status LayerDecoder::fail(Status s) {
+  if (rc_.overrun) s = Status::truncated;
+  failed_ = s;
+  return s;
+}
+
+uint32_t LayerDecoder::offset() const {
+  if (!layer_) return 0;
+  return layer_->stream_offset + uint32_t(rc_.p - layer_->stream);
+}
+
+Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, size_t ring_bytes, VertexSink sink,
+                           void* sink_context) {
+  if (layer < 0 || layer >= blob.layer_count) return Status::bad_params;
+  if (!ring) return Status::null_argument;
+  if (ring_bytes < compressed_ring_bytes(blob, layer)) return Status::workspace_too_small;
+  blob_ = &blob;
+  layer_ = &blob.layers[layer];
+  ring_ = static_cast<uint8_t*>(ring);
+  pins_ = ring_ + size_t(layer_->window) * compressed_vertex_record_bytes(blob);
+  for (uint32_t i = 0; i < layer_->pinned; ++i)
+    store_u32(pins_ + size_t(layer_->pinned) * compressed_vertex_record_bytes(blob) + 4 * i, 0xFFFFFFFFu);
+  pin_slot_ = 0;
+  next_pinned_ = 0xFFFFFFFFu;
+  record_ = compressed_vertex_record_bytes(blob);
+  sink_ = sink;
+  sink_context_ = sink_context;
+  detail::start(rc_, layer_->stream, layer_->stream + layer_->stream_bytes);
+  detail::reset(m_.gap);
+  m_.subpixel = m_.fraction = m_.flags_nonzero = detail::prob_half;
+  for (auto& v : m_.value) detail::reset(v);
+  for (auto& g : m_.gradient) detail::reset(g);
+  detail::reset(&m_.top[0][0], 6 * 8);
+  detail::reset(m_.top_far);
+  detail::reset(&m_.pick_second[0][0], 3 * 8);
+  detail::reset(&m_.pick_third[0][0], 9 * 8);
+  previous_picks_ = 0;
+  recent_count_ = 0;
+  for (auto& s : m_.second) detail::reset(s);
+  for (auto& t : m_.third) detail::reset(t);
+  detail::reset(m_.rotation, 2);
+  m_.lift = detail::prob_half;
+  detail::reset(m_.lift_gap);
+  detail::reset(m_.flag_bit, 9);
+  decoded_ = slot_ = triangles_ = pixel_ = previous_top_ = 0;
+  previous_row_ = 0;
+  previous_class_ = 0;
+  for (int c = 0; c < 3; ++c) {
+    last_values_[c] = 0;
+    last_gradients_[c][0] = last_gradients_[c][1] = 0;
+  }
+  failed_ = Status::ok;
+  return Status::ok;
+}
+
+// The pinned record of a vertex not yet in the ring, or null.
+uint8_t* LayerDecoder::pinned_record(uint32_t index) const {
+  if (index < decoded_) return nullptr;
+  const uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
+  for (uint32_t i = 0; i < layer_->pinned; ++i)
+    if (load_u32(indices + 4 * i) == index) return pins_ + size_t(i) * record_;
+  return nullptr;
+}
+
+void LayerDecoder::find_next_pinned() {
+  const uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
+  next_pinned_ = 0xFFFFFFFFu;
+  for (uint32_t i = 0; i < layer_->pinned; ++i) {
+    const uint32_t v = load_u32(indices + 4 * i);
+    if (v >= decoded_ && v < next_pinned_) next_pinned_ = v;
+  }
+}
+
+// The record of a vertex: in the ring, or pinned ahead of it; null when it is in neither.
+uint8_t* LayerDecoder::record(uint32_t index) const {
+  if (index >= decoded_) return pinned_record(index);
+  if (decoded_ - index > layer_->window) return nullptr;
+  const uint32_t back = decoded_ - index;  // 1 .. window
+  const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
+  return ring_ + size_t(slot) * record_;
+}
+
+// Whether the values of a ring record are decoded: a byte of the record's padding (4 + 2 v is
+// 2 mod 4 for v = 1 or 3, so align4 leaves two bytes).
+namespace {
+uint8_t& known_byte(uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
+}  // namespace
+
+namespace {
+// A gradient component's prediction: the known corners' (one, or the mean of two), else `last`.
+int32_t gradient_prediction(const uint8_t* p0, const uint8_t* p1, int nv, int c, int axis, int32_t last) {
+  if (!p0) return last;
+  const uint32_t at = align4(4 + 2 * uint32_t(nv)) + 8 * uint32_t(c) + 4 * uint32_t(axis);
+  const int64_t g0 = int32_t(load_u32(p0 + at));
+  return p1 ? int32_t((g0 + int32_t(load_u32(p1 + at))) >> 1) : int32_t(g0);
+}
+}  // namespace
+
+Status LayerDecoder::decode_position() {
+  using namespace detail;
+  const CompressedBlob& blob = *blob_;
+  const int S = config::subpixel_bits;
+  // The slot's vertex leaves the ring: if no triangle asked for it, its values come now.
+  uint8_t* rec = ring_ + size_t(slot_) * record_;
+  if (decoded_ >= layer_->window && !known_byte(rec, blob.values_per_vertex)) {
+    const Status st = decode_values(rec, decoded_ - layer_->window, nullptr, nullptr);
+    if (st != Status::ok) return st;
+  }
+  if (decoded_ == next_pinned_) {
+    // Decoded ahead: the pinned record moves into the ring, without bits.
+    const uint8_t* pin = pinned_record(decoded_);
+    if (!pin) return fail(Status::bad_index);
+    for (uint32_t i = 0; i < record_; ++i) rec[i] = pin[i];
+    pixel_ = uint32_t(load_u16(rec + 2) >> S) * blob.width + uint32_t(load_u16(rec) >> S);
+    ++decoded_;
+    slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
+    find_next_pinned();
+    return Status::ok;
+  }
+  uint32_t gap;
+  if (!decode_uint(rc_, m_.gap, gap_bits, &gap)) return fail(Status::coordinate_out_of_range);
+  const uint64_t pixel = uint64_t(pixel_) + gap;
+  if (pixel >= uint64_t(blob.width) * blob.height) return fail(Status::coordinate_out_of_range);
+  const uint32_t py = uint32_t(pixel) / blob.width, px = uint32_t(pixel) - py * blob.width;
+  uint32_t sx = 0, sy = 0;
+  if (decode_bit(rc_, m_.subpixel)) {
+    sx = decode_direct(rc_, S);
+    sy = decode_direct(rc_, S);
+  }
+  const uint32_t x = (px << S) | sx, y = (py << S) | sy;
+  if (x > (uint32_t(blob.width - 1) << S) || y > (uint32_t(blob.height - 1) << S))
+    return fail(Status::coordinate_out_of_range);
+  if (rc_.overrun) return fail(Status::truncated);
+  store_u16(rec, x);
+  store_u16(rec + 2, y);
+  known_byte(rec, blob.values_per_vertex) = 0;
+  pixel_ = uint32_t(pixel);
+  ++decoded_;
+  slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
+  return Status::ok;
+}
+
+// Values (and gradients) of the vertex at `rec`, predicted from the records `p0` and `p1` (the
+// triangle's corners whose values are known; either may be null) or else from the last vertex
+// whose values were decoded.
+Status LayerDecoder::decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1) {
+  using namespace detail;
+  const CompressedBlob& blob = *blob_;
+  const int nv = blob.values_per_vertex;
+  if (!p0) p0 = p1, p1 = nullptr;
+  int32_t predicted[3];
+  for (int c = 0; c < 3; ++c) {
+    if (p0 && c < nv) {
+      const int32_t h = load_u16(p0 + 4 + 2 * c) >> 8;
+      predicted[c] = p1 ? (h + (load_u16(p1 + 4 + 2 * c) >> 8) + 1) >> 1 : h;
+    } else {
+      predicted[c] = last_values_[c] >> 8;
+    }
+  }
+  // Integer parts against the prediction; in RGB, R and B also follow G's change.
+  const bool rgb = blob.space == ColorSpace::rgb && nv == 3;
+  int32_t high[3] = {0, 0, 0};
+  int32_t shared = 0;
+  for (int k = 0; k < nv; ++k) {
+    const int c = rgb ? (k == 0 ? 1 : (k == 1 ? 0 : 2)) : k;
+    int64_t r;
+    if (!decode_int(rc_, m_.value[k], value_bits, &r)) return fail(Status::value_out_of_range);
+    const int64_t h = int64_t(predicted[c]) + r + (rgb && k > 0 ? shared : 0);
+    if (h < 0 || h > 255) return fail(Status::value_out_of_range);
+    if (rgb && k == 0) shared = int32_t(r);
+    high[c] = int32_t(h);
+  }
+  uint16_t values[3] = {0, 0, 0};
+  const bool fraction = decode_bit(rc_, m_.fraction);
+  for (int c = 0; c < nv; ++c) {
+    const uint32_t low = fraction ? decode_direct(rc_, 8) : 0;
+    const uint32_t v = (uint32_t(high[c]) << 8) | low;
+    if (v > 255u * 256u) return fail(Status::value_out_of_range);
+    values[c] = uint16_t(v);
+  }
+  int32_t gradients[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+  if (blob.method == Method::zienkiewicz) {
+    const int64_t limit = int64_t(config::max_gradient) << config::gradient_frac_bits;
+    for (int c = 0; c < nv; ++c)
+      for (int a = 0; a < 2; ++a) {
+        int64_t r;
+        if (!decode_int(rc_, m_.gradient[a], gradient_bits, &r)) return fail(Status::value_out_of_range);
+        const int32_t g = int32_t(uint32_t(gradient_prediction(p0, p1, nv, c, a, last_gradients_[c][a])) + uint32_t(r));
+        if (g > limit || g < -limit) return fail(Status::value_out_of_range);
+        gradients[c][a] = g;
+      }
+  }
+  if (rc_.overrun) return fail(Status::truncated);
+  for (int c = 0; c < nv; ++c) store_u16(rec + 4 + 2 * c, values[c]);
+  if (blob.method == Method::zienkiewicz) {
+    uint8_t* g = rec + align4(4 + 2 * uint32_t(nv));
+    for (int c = 0; c < nv; ++c) {
+      store_u32(g + 8 * c, uint32_t(gradients[c][0]));
+      store_u32(g + 8 * c + 4, uint32_t(gradients[c][1]));
+    }
+  }
+  known_byte(rec, nv) = 1;
+  if (sink_) sink_(sink_context_, index, load_u16(rec), load_u16(rec + 2), values, &gradients[0][0]);
+  for (int c = 0; c < 3; ++c) {
+    last_values_[c] = values[c];
+    last_gradients_[c][0] = gradients[c][0];
+    last_gradients_[c][1] = gradients[c][1];
+  }
+  return Status::ok;
+}
+
+// A corner not decoded yet: the positions up to it into the ring, or (a lift) its position alone
+// into the next pinned slot, whose vertex must have reached the ring.
+Status LayerDecoder::place(uint32_t index) {
+  using namespace detail;
+  if (!decode_bit(rc_, m_.lift)) {
+    while (decoded_ <= index) {
+      const Status st = decode_position();
+      if (st != Status::ok) return st;
+    }
+    return Status::ok;
+  }
+  const CompressedBlob& blob = *blob_;
+  const int S = config::subpixel_bits;
+  if (layer_->pinned == 0) return fail(Status::bad_header);
+  uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
+  const uint32_t held = load_u32(indices + 4 * pin_slot_);
+  if (held != 0xFFFFFFFFu && held >= decoded_) return fail(Status::bad_header);  // fewer slots than needed
+  uint32_t gap;
+  if (!decode_uint(rc_, m_.lift_gap, gap_bits, &gap)) return fail(Status::coordinate_out_of_range);
+  const uint64_t pixel = uint64_t(pixel_) + gap;
+  if (pixel >= uint64_t(blob.width) * blob.height) return fail(Status::coordinate_out_of_range);
+  const uint32_t py = uint32_t(pixel) / blob.width, px = uint32_t(pixel) - py * blob.width;
+  uint32_t sx = 0, sy = 0;
+  if (decode_bit(rc_, m_.subpixel)) {
+    sx = decode_direct(rc_, S);
+    sy = decode_direct(rc_, S);
+  }
+  const uint32_t x = (px << S) | sx, y = (py << S) | sy;
+  if (x > (uint32_t(blob.width - 1) << S) || y > (uint32_t(blob.height - 1) << S))
+    return fail(Status::coordinate_out_of_range);
+  if (rc_.overrun) return fail(Status::truncated);
+  uint8_t* rec = pins_ + size_t(pin_slot_) * record_;
+  store_u16(rec, x);
+  store_u16(rec + 2, y);
+  known_byte(rec, blob.values_per_vertex) = 0;
+  store_u32(indices + 4 * pin_slot_, index);
+  pin_slot_ = pin_slot_ + 1 == layer_->pinned ? 0 : pin_slot_ + 1;
+  if (index < next_pinned_) next_pinned_ = index;
+  return Status::ok;
+}
+
+Status LayerDecoder::next(DecodedTriangle* out) {
+  using namespace detail;
+  if (!layer_ || !out) return Status::null_argument;
+  if (failed_ != Status::ok) return failed_;
+  if (triangles_ >= layer_->triangle_count) return Status::bad_params;
+  const uint32_t V = layer_->vertex_count;
+  int64_t s;
+  uint32_t d1, d2;
+  const uint32_t step = decode_symbol8(rc_, m_.top[previous_picks_]);
+  if (step < 4) {
+    s = step == 3 ? -1 : int64_t(step);
+  } else {
+    if (step != 7) return fail(Status::bad_index);
+    if (!decode_int(rc_, m_.top_far, index_bits, &s)) return fail(Status::bad_index);
+  }
+  const uint32_t step_class = step < 2 ? step : 2;
+  const int64_t a = int64_t(previous_top_) + s;
+  if (a < 0 || a >= V) return fail(Status::bad_index);
+  uint32_t cand[6];
+  uint32_t n = candidates(recent_, recent_count_, uint32_t(a), cand);
+  const uint32_t pick_b = decode_symbol8(rc_, m_.pick_second[step_class]);
+  const uint32_t b_class = pick_b == new_vertex ? 0 : (pick_b == 0 ? 1 : 2);
+  uint64_t b;
+  uint8_t cls = previous_class_;
+  if (pick_b == new_vertex) {
+    if (!decode_uint(rc_, m_.second[previous_class_], index_bits, &d1)) return fail(Status::bad_index);
+    cls = index_class(d1);
+    b = uint64_t(a) + 1 + d1;
+  } else {
+    if (pick_b >= n) return fail(Status::bad_index);
+    b = cand[pick_b];
+  }
+  if (b >= V) return fail(Status::bad_index);
+  n = candidates(recent_, recent_count_, uint32_t(b), cand);
+  const uint32_t pick_c = decode_symbol8(rc_, m_.pick_third[3 * b_class + step_class]);
+  uint64_t c;
+  if (pick_c == new_vertex) {
+    if (!decode_uint(rc_, m_.third[index_class(uint32_t(b - uint64_t(a) - 1))], index_bits, &d2))
+      return fail(Status::bad_index);
+    c = b + 1 + d2;
+  } else {
+    if (pick_c >= n) return fail(Status::bad_index);
+    c = cand[pick_c];
+  }
+  if (c >= V) return fail(Status::bad_index);
+  if (rc_.overrun) return fail(Status::truncated);
+  const uint32_t index[3] = {uint32_t(a), uint32_t(b), uint32_t(c)};
+  for (int k = 0; k < 3; ++k)
+    if (index[k] >= decoded_ && !pinned_record(index[k])) {
+      const Status st = place(index[k]);
+      if (st != Status::ok) return st;
+    }
+  // Every corner must be in the ring (the window the header promised) or pinned.
+  uint8_t* rec[3];
+  for (int k = 0; k < 3; ++k)
+    if (!(rec[k] = record(index[k]))) return fail(Status::bad_index);
+  const int64_t xa = load_u16(rec[0]), ya = load_u16(rec[0] + 2);
+  const int64_t area = (int64_t(load_u16(rec[1])) - xa) * (int64_t(load_u16(rec[2] + 2)) - ya) -
+                       (int64_t(load_u16(rec[1] + 2)) - ya) * (int64_t(load_u16(rec[2])) - xa);
+  if (area == 0) return fail(Status::bad_triangle);
+  // The cyclic order with positive area, then the rotation the v1 blob stored.
+  const int cyc[3] = {0, area > 0 ? 1 : 2, area > 0 ? 2 : 1};
+  uint32_t r = 0;
+  if (decode_bit(rc_, m_.rotation[0])) r = 1 + decode_bit(rc_, m_.rotation[1]);
+  uint16_t flags = 0;
+  if (decode_bit(rc_, m_.flags_nonzero))
+    for (int i = 0; i < 9; ++i) flags = uint16_t(flags | (decode_bit(rc_, m_.flag_bit[i]) << i));
+  if (rc_.overrun) return fail(Status::truncated);
+  const int nv = blob_->values_per_vertex;
+  // The corners' values not decoded yet, in index order, from the corners known before them.
+  for (int k = 0; k < 3; ++k) {
+    if (known_byte(rec[k], nv)) continue;
+    const uint8_t* known[2] = {nullptr, nullptr};
+    for (int j = 0, n = 0; j < 3; ++j)
+      if (j != k && known_byte(rec[j], nv)) known[n++] = rec[j];
+    const Status st = decode_values(rec[k], index[k], known[0], known[1]);
+    if (st != Status::ok) return st;
+  }
+  const bool z = blob_->method == Method::zienkiewicz;
+  int32_t top = 0x7FFFFFFF;
+  for (int k = 0; k < 3; ++k) {
+    const int corner = cyc[(r + uint32_t(k)) % 3];
+    const uint8_t* p = rec[corner];
+    out->v[k] = index[corner];
+    out->x[k] = load_u16(p);
+    out->y[k] = load_u16(p + 2);
+    top = out->y[k] < top ? out->y[k] : top;
+    for (int ch = 0; ch < 3; ++ch) {
+      out->values[k][ch] = ch < nv ? load_u16(p + 4 + 2 * ch) : 0;
+      out->gradients[k][ch][0] = out->gradients[k][ch][1] = 0;
+      if (z && ch < nv) {
+        const uint8_t* g = p + align4(4 + 2 * uint32_t(nv)) + 8 * ch;
+        out->gradients[k][ch][0] = int32_t(load_u32(g));
+        out->gradients[k][ch][1] = int32_t(load_u32(g + 4));
+      }
+    }
+  }
+  out->flags = flags;
+  if (top < previous_row_) return fail(Status::unsorted);
+  previous_row_ = top;
+  previous_top_ = uint32_t(a);
+  previous_class_ = cls;
+  previous_picks_ = uint8_t(2 * b_class + (pick_c == new_vertex));
+  for (int k = 0; k < 3; ++k) {
+    recent_[1][k] = recent_[0][k];
+    recent_[0][k] = index[k];
+  }
+  recent_count_ = recent_count_ < 2 ? recent_count_ + 1 : 2;
+  ++triangles_;
+  return Status::ok;
+}
+
+Status LayerDecoder::finish() {
+  if (!layer_) return Status::null_argument;
+  if (failed_ != Status::ok) return failed_;
+  if (triangles_ != layer_->triangle_count) return Status::bad_params;
+  while (decoded_ < layer_->vertex_count) {
+    const Status st = decode_position();
+    if (st != Status::ok) return st;
+  }
+  // The values no triangle asked for, of the vertices still in the ring.
+  const uint32_t V = layer_->vertex_count, first = V > layer_->window ? V - layer_->window : 0;
+  for (uint32_t i = first; i < V; ++i) {
+    uint8_t* rec = record(i);
+    if (known_byte(rec, blob_->values_per_vertex)) continue;
+    const Status st = decode_values(rec, i, nullptr, nullptr);
+    if (st != Status::ok) return st;
+  }
+  if (rc_.overrun) return fail(Status::truncated);
+  if (rc_.p != rc_.end) return fail(Status::bad_section);  // bytes after the stream's end
+  return Status::ok;
+}
+
+namespace {
+
+// v1 section offsets of one layer (the packer's layout: each section 4-aligned, in this order).
+struct V1Layer {
+  uint32_t positions, values, gradients, triangles, end;
+};
+
+V1Layer v1_layer(const CompressedBlob& blob, const CompressedLayer& l, uint32_t at) {
+  V1Layer o;
+  const uint32_t nv = blob.values_per_vertex;
+  o.positions = at;
+  o.values = align4(o.positions + 4 * l.vertex_count);
+  o.gradients = align4(o.values + 2 * l.vertex_count * nv);
+  o.triangles = blob.method == Method::zienkiewicz ? o.gradients + 8 * l.vertex_count * nv : o.gradients;
+  o.end = o.triangles + blob_triangle_size * l.triangle_count;
+  if (blob.method != Method::zienkiewicz) o.gradients = 0;
+  return o;
+}
+
+struct ExpandSink {
+  uint8_t* out;
+  V1Layer layer;
+  int per_vertex;
+  bool gradients;
+};
+
+void expand_vertex(void* context, uint32_t index, uint16_t x, uint16_t y, const uint16_t* values,
+                   const int32_t* gradients) {
+  const ExpandSink* s = static_cast<const ExpandSink*>(context);
+  store_u16(s->out + s->layer.positions + 4 * index, x);
+  store_u16(s->out + s->layer.positions + 4 * index + 2, y);
+  for (int c = 0; c < s->per_vertex; ++c) {
+    store_u16(s->out + s->layer.values + 2 * (index * uint32_t(s->per_vertex) + uint32_t(c)), values[c]);
+    if (s->gradients) {
+      uint8_t* g = s->out + s->layer.gradients + 8 * (index * uint32_t(s->per_vertex) + uint32_t(c));
+      store_u32(g, uint32_t(gradients[2 * c]));
+      store_u32(g + 4, uint32_t(gradients[2 * c + 1]));
+    }
+  }
+}
+
+}  // namespace
+
+size_t expanded_blob_size(const CompressedBlob& blob) {
+  uint32_t at = blob_header_size + blob_layer_entry_size * blob.layer_count;
+  for (int l = 0; l < blob.layer_count; ++l) at = v1_layer(blob, blob.layers[l], at).end;
+  return at;
+}
+
+size_t expand_workspace_size(const CompressedBlob& blob) {
+  size_t most = 0;
+  for (int l = 0; l < blob.layer_count; ++l) {
+    const size_t n = compressed_ring_bytes(blob, l);
+    most = n > most ? n : most;
+  }
+  return most;
+}
+
+Status expand_compressed_blob(const CompressedBlob& blob, void* out, size_t out_bytes, void* workspace,
+                              size_t workspace_bytes, BlobError* error) {
+  if (!out || !workspace) return Status::null_argument;
+  const size_t size = expanded_blob_size(blob);
+  if (out_bytes < size) return Status::workspace_too_small;
+  uint8_t* b = static_cast<uint8_t*>(out);
+  for (size_t i = 0; i < size; ++i) b[i] = 0;
+  b[0] = 'T', b[1] = 'S', b[2] = 'T', b[3] = 'B';
+  store_u16(b + 4, blob_version);
+  store_u16(b + 6, blob_header_size);
+  store_u32(b + 8, uint32_t(size));
+  for (int k = 12; k < 36; ++k) b[k] = blob.bytes[k];  // the fields v1 and the compressed form share
+  store_u32(b + 28, blob_header_size);
+  uint32_t at = blob_header_size + blob_layer_entry_size * blob.layer_count;
+  LayerDecoder decoder;
+  for (int l = 0; l < blob.layer_count; ++l) {
+    const CompressedLayer& cl = blob.layers[l];
+    const V1Layer o = v1_layer(blob, cl, at);
+    at = o.end;
+    uint8_t* e = b + blob_header_size + blob_layer_entry_size * uint32_t(l);
+    store_u32(e, cl.vertex_count);
+    store_u32(e + 4, cl.triangle_count);
+    store_u32(e + 8, o.positions);
+    store_u32(e + 12, o.values);
+    store_u32(e + 16, o.gradients);
+    store_u32(e + 20, o.triangles);
+    ExpandSink sink{b, o, blob.values_per_vertex, blob.method == Method::zienkiewicz};
+    Status s = decoder.begin(blob, l, workspace, workspace_bytes, expand_vertex, &sink);
+    if (s != Status::ok) return s;
+    DecodedTriangle t;
+    for (uint32_t k = 0; k < cl.triangle_count; ++k) {
+      s = decoder.next(&t);
+      if (s != Status::ok) {
+        if (error) error->offset = decoder.offset();
+        return s;
+      }
+      uint8_t* p = b + o.triangles + blob_triangle_size * k;
+      for (int c = 0; c < 3; ++c) store_u16(p + 2 * c, t.v[c]);
+      store_u16(p + 6, t.flags);
+    }
+    s = decoder.finish();
+    if (s != Status::ok) {
+      if (error) error->offset = decoder.offset();
+      return s;
+    }
+  }
+  // The decoder's checks are those of open_blob; it confirms them on the result.
+  Blob check;
+  BlobError where;
+  const Status s = open_blob(b, size, &check, &where);
+  if (s != Status::ok && error) error->offset = where.offset;
+  return s;
+}
+
+}  // namespace tristream::core
