@@ -92,9 +92,13 @@ struct BilinearShader {
       }
     };
     // The scan path's numerators are small enough for the division without correction, and its
-    // edge values fit int32 (e_ref32).
+    // edge values fit int32 (e_ref32, set without SSE2).
     if (bilinear_short_division && s.scan_path) {
-      setup(ShortRoundingDivider(s.area2), s.e_ref32);
+      if constexpr (TS_USE_SSE2) {
+        setup(ShortRoundingDivider(s.area2), s.e_ref);
+      } else {
+        setup(ShortRoundingDivider(s.area2), s.e_ref32);
+      }
     } else if (bilinear_chunked_division && s.scan_path) {
       setup(ChunkedRoundingDivider(s.area2), s.e_ref32);
     } else if (bilinear_preinv_division && PreinvRoundingDivider::fits(s.area2)) {

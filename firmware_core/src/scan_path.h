@@ -119,9 +119,6 @@ inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSet
                                                           _mm_sub_epi32(_mm_set1_epi32(yr * (1 << S)), y)));
   _mm_storeu_si128(reinterpret_cast<__m128i*>(s->a), e.a);
   _mm_storeu_si128(reinterpret_cast<__m128i*>(s->b), e.b);
-  int32_t ref32[4];
-  _mm_storeu_si128(reinterpret_cast<__m128i*>(ref32), ref);
-  for (int k = 0; k < 3; ++k) s->e_ref32[k] = ref32[k];
   const __m128i sign = _mm_srai_epi32(ref, 31);
   _mm_storeu_si128(reinterpret_cast<__m128i*>(s->e_ref), _mm_unpacklo_epi32(ref, sign));
   _mm_storel_epi64(reinterpret_cast<__m128i*>(s->e_ref + 2), _mm_unpackhi_epi32(ref, sign));

@@ -29,7 +29,9 @@ constexpr int32_t scan_max_extent = TS_USE_SSE2 ? 16 : 12;
 struct TriangleSetup {
   int32_t a[4], b[4];  // a[3], b[3] unused (whole vectors for SSE2)
   int64_t e_ref[3];
-  int32_t e_ref32[3];  // the scan path's e_ref in int32 (|E| < 2^31: scan_path.h); unset on the span path
+  // The scan path's e_ref in int32 (|E| < 2^31: scan_path.h), without SSE2 only (where a 64 x 64
+  // product is one instruction it would only add stores); unset otherwise.
+  int32_t e_ref32[3];
   int32_t xr, yr;
   int64_t area2;
   bool scan_path;  // a triangle of the scan path (small: see SmallEdges)
