@@ -117,7 +117,7 @@ struct BilinearShader {
     }
 #endif
   }
-  void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {
+  TS_SPAN_INLINE void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {
 #if TS_USE_SSE2
     if constexpr (in_lanes) {
       // BilinearChannel::at in lanes: the same sums modulo 2^32.

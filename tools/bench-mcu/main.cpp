@@ -83,7 +83,7 @@ struct Program {
   ElfImage elf;
   std::unique_ptr<M4Emulator> emu;
   std::unique_ptr<M4Emulator> checker;  // per-instruction counting, with --check-counts
-  CoreSize core, full;
+  CoreSize core, full, compressed;  // compressed: the compressed-blob decoder (not in core or full)
 };
 
 struct Digest {
@@ -271,6 +271,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
     if (check_counts) p.checker = std::make_unique<M4Emulator>(p.elf, true);
     p.core = read_size(elf_dir + "/ts_core_" + key + ".size");
     p.full = read_size(elf_dir + "/ts_core_" + opt + "_full.size");
+    p.compressed = read_size(elf_dir + "/ts_core_" + key + ".compressed.size");
     return p;
   };
   std::vector<Row> rows;
@@ -344,6 +345,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
               j["ram_bytes"] = o.result.tile_buffer_bytes + o.result.workspace_bytes + o.stack_bytes + static_ram;
               j["flash_core_bytes"] = prog.core.known ? json(prog.core.text) : json(nullptr);
               j["flash_core_full_bytes"] = prog.full.known ? json(prog.full.text) : json(nullptr);
+              j["flash_compressed_decoder_bytes"] = prog.compressed.known ? json(prog.compressed.text) : json(nullptr);
               j["pixels_equal_host"] = m4 == host;
               all_equal &= m4 == host;
               if (check_stack) {
