@@ -43,6 +43,10 @@ constexpr core::PixelFormat c_formats[] = {core::PixelFormat::l8, core::PixelFor
 static_assert(TS_L8 == 1 && TS_RGB888 == 2 && TS_RGB565_LE == 3 && TS_RGB565_BE == 4 && TS_XRGB8888 == 5,
               "c_formats lists the C formats in order");
 
+static_assert(TS_FIT_STRETCH == int(core::Fit::stretch) && TS_FIT_INSIDE == int(core::Fit::inside) &&
+                  TS_FIT_FILL == int(core::Fit::fill),
+              "the C fits are the values of core::Fit");
+
 int c_format(core::PixelFormat f) {
   for (int i = 0; i < int(sizeof c_formats / sizeof c_formats[0]); ++i)
     if (c_formats[i] == f) return i + 1;
@@ -51,6 +55,7 @@ int c_format(core::PixelFormat f) {
 
 bool convert(const ts_params* p, core::RenderParams* out) {
   if (!p || p->format < TS_L8 || p->format > TS_XRGB8888) return false;
+  if (p->fit < TS_FIT_STRETCH || p->fit > TS_FIT_FILL) return false;
   out->output_width = p->output_width;
   out->output_height = p->output_height;
   out->viewport = core::Rect{p->viewport.x0, p->viewport.y0, p->viewport.x1, p->viewport.y1};
@@ -60,6 +65,7 @@ bool convert(const ts_params* p, core::RenderParams* out) {
   out->dither = p->dither != 0;
   for (int c = 0; c < 3; ++c) out->background[c] = p->background[c];
   out->packed_tiles = p->packed_tiles != 0;
+  out->fit = core::Fit(p->fit);
   return true;
 }
 

@@ -12,13 +12,21 @@
 namespace tristream::core::detail {
 namespace {
 
+// Rectangles and the mapping are in drawing positions: output positions + (shift_x, shift_y), the
+// smallest multiples of 4 that keep the domain's mapped positions non-negative (0 unless a fill
+// crops). Pixels do not depend on it: everything the core computes is relative to a triangle's
+// vertices or a row's first pixel, and the Bayer matrix repeats every 4 pixels.
 struct FramePlan {
   int32_t out_w = 0, out_h = 0;
-  Rect view;
+  Rect view;  // drawing positions
   int32_t tile_w = 0, tile_h = 0;
   PixelFormat format = PixelFormat::rgb888;
   Mapping map;
+  int32_t shift_x = 0, shift_y = 0;
 };
+
+// The smallest multiple of 4 at least -o (0 for o >= 0).
+constexpr int32_t crop_shift(int32_t o) { return o < 0 ? (3 - o) / 4 * 4 : 0; }
 
 inline Status plan_frame(const Blob& blob, const RenderParams& p, FramePlan* r) {
   if (!blob.bytes) return Status::null_argument;
@@ -42,11 +50,18 @@ inline Status plan_frame(const Blob& blob, const RenderParams& p, FramePlan* r) 
   if (!(config::pixel_formats >> int(p.format) & 1) || !(config::methods >> int(blob.method) & 1))
     return Status::not_compiled;
   r->format = p.format;
-  r->map.identity = r->out_w == blob.width && r->out_h == blob.height;
-  r->map.nx = uint32_t(r->out_w - 1);
-  r->map.dx = uint32_t(blob.width - 1);
-  r->map.ny = uint32_t(r->out_h - 1);
-  r->map.dy = uint32_t(blob.height - 1);
+  if (p.fit != Fit::stretch && p.fit != Fit::inside && p.fit != Fit::fill) return Status::bad_params;
+  const FitLayout f = fit_layout(blob.width, blob.height, r->out_w, r->out_h, p.fit);
+  r->shift_x = crop_shift(f.ox);
+  r->shift_y = crop_shift(f.oy);
+  r->map = drawing_mapping(f, r->shift_x, r->shift_y);
+  // The coordinate budget (docs/FIXED_POINT.md): drawing positions below max_dimension 2^S. Only a
+  // fill goes beyond, when its picture is about max_dimension pixels long or longer.
+  constexpr int32_t budget = (config::max_dimension << config::subpixel_bits) - 1;
+  if (r->map.x((blob.width - 1) << config::subpixel_bits) > budget ||
+      r->map.y((blob.height - 1) << config::subpixel_bits) > budget)
+    return Status::bad_params;
+  r->view = Rect{r->view.x0 + r->shift_x, r->view.y0 + r->shift_y, r->view.x1 + r->shift_x, r->view.y1 + r->shift_y};
   return Status::ok;
 }
 

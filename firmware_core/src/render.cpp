@@ -89,6 +89,8 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
       tile.rect = Rect{bx, by, bx1, by1};
       tile.format = r.format;
       draw(blob, params, r.map, sets, tile.rect, tile.pixels, tile.stride, scratch_ptr);
+      // The sink gets output positions (the drawing positions less the frame's shift).
+      tile.rect = Rect{bx - r.shift_x, by - r.shift_y, bx1 - r.shift_x, by1 - r.shift_y};
       if (!sink(context, &tile)) return Status::stopped;
       next ^= 1;
     }

@@ -172,7 +172,7 @@ std::string blob_c_header(const core::Blob& blob, const CBlobSpec& spec) {
          guard_macro + "\n#define " + guard_macro + "\n\n#include \"tristream/tristream.h\"\n\n" + guard(blob, spec) +
          "\n/* Buffer sizes that suffice for every render of this blob in " + std::string(format_name(spec.format)) +
          "\n   with an output of at most " + std::to_string(spec.output_width) + " x " +
-         std::to_string(spec.output_height) + ", any viewport of it and tiles of at most " + tiles +
+         std::to_string(spec.output_height) + ", any fit and viewport of it and tiles of at most " + tiles +
          " pixels:\n   static buffers of these sizes are always big enough. The descriptor holds the exact figures\n"
          "   for the whole output in these tiles. */\n#define " + macro + "_TILE_BUFFER_MAX_BYTES " +
          std::to_string(bounds.tile_buffer_bytes) + "u\n#define " + macro + "_WORKSPACE_MAX_BYTES " +

@@ -24,10 +24,11 @@ bool is_blob_symbol(std::string_view name);
 std::string blob_symbol_of(std::string_view path);
 
 // Buffer sizes that suffice for every render of `blob` in `format` with an output of at most
-// width x height, any viewport of it and tiles of at most tile_width x tile_height (0: the
-// viewport's width or height). Mirrors the layout of firmware_core's workspace (src/workspace_layout.h,
-// src/render.cpp): alignment padding, the channel scratch of layered blobs (6 bytes per tile pixel), and per layer an
-// active-set bitmap, here for all of the layer's triangles (the window is never longer).
+// width x height, any fit (stretch, inside, fill) and viewport of it and tiles of at most
+// tile_width x tile_height (0: the viewport's width or height). Mirrors the layout of firmware_core's
+// workspace (src/workspace_layout.h, src/render.cpp): alignment padding, the channel scratch of layered
+// blobs (6 bytes per tile pixel), and per layer an active-set bitmap, here for all of the layer's
+// triangles (the window is never longer, whatever the mapping): none of it depends on the fit.
 struct BufferBounds {
   std::size_t tile_buffer_bytes = 0;
   std::size_t workspace_bytes = 0;

@@ -44,6 +44,7 @@ CoreRenderer::CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions
   };
   params_.output_width = dimension(o.width, "output width");
   params_.output_height = dimension(o.height, "output height");
+  params_.fit = o.fit;
   params_.viewport = o.viewport;
   params_.tile_width = dimension(o.tile_width, "tile width");
   params_.tile_height = dimension(o.tile_height, "tile height");

@@ -16,6 +16,7 @@ namespace tristream {
 struct CoreOptions {
   int width = 0;   // output size; 0 = the triangulation's size (corner-to-corner mapping)
   int height = 0;
+  core::Fit fit = core::Fit::stretch;  // how the domain maps to the output (RenderParams::fit)
   core::Rect viewport;  // output pixels to render; empty = all
   int tile_width = 32;  // 0 = the viewport width (bands)
   int tile_height = 32; // 0 = the viewport height (one band: full frame when both are 0)

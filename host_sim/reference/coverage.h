@@ -26,17 +26,24 @@
 
 namespace tristream {
 
-// Maps output pixels to domain points, corner to corner.
+// Maps output pixels to domain points: corner to corner, or with one scale of scale_d / scale_n
+// domain units per output pixel on both axes (the fits; a sample is then i * d / n, rounded once).
 struct PixelMapping {
   int out_width = 0, out_height = 0;
   double sx = 1, sy = 1;  // domain units per output pixel
+  std::int64_t scale_n = 0, scale_d = 0;
 
-  PixelMapping(int domain_width, int domain_height, int width, int height)
+  PixelMapping(int domain_width, int domain_height, int width, int height, std::int64_t n = 0, std::int64_t d = 0)
       : out_width(width), out_height(height),
-        sx(width > 1 ? double(domain_width - 1) / (width - 1) : 1.0),
-        sy(height > 1 ? double(domain_height - 1) / (height - 1) : 1.0) {}
+        sx(n > 0 ? double(d) / double(n) : width > 1 ? double(domain_width - 1) / (width - 1) : 1.0),
+        sy(n > 0 ? double(d) / double(n) : height > 1 ? double(domain_height - 1) / (height - 1) : 1.0),
+        scale_n(n), scale_d(d) {}
 
-  Point sample(int i, int j) const { return {sx == 1 ? double(i) : i * sx, sy == 1 ? double(j) : j * sy}; }
+  double coordinate(int i, double s) const {
+    if (s == 1) return double(i);
+    return scale_n > 0 ? double(i * scale_d) / double(scale_n) : i * s;
+  }
+  Point sample(int i, int j) const { return {coordinate(i, sx), coordinate(j, sy)}; }
   // The output pixel range whose sample points can lie in [lo, hi] (domain units).
   int first_column(double lo) const { return std::max(0, int(std::floor(lo / sx)) - 1); }
   int last_column(double hi) const { return std::min(out_width - 1, int(std::ceil(hi / sx)) + 1); }

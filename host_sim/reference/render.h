@@ -9,14 +9,19 @@
 
 #include "model/image.h"
 #include "model/triangulation.h"
+#include "reference/fit.h"
 
 namespace tristream {
 
 struct RenderOptions {
-  int width = 0;   // output size; 0 = the triangulation's size. The output is mapped corner to
-  int height = 0;  // corner: pixel (i, j) samples the domain at (i*(W-1)/(W'-1), j*(H-1)/(H'-1)).
+  int width = 0;   // output size; 0 = the triangulation's size. With Fit::stretch the output is mapped
+  int height = 0;  // corner to corner: pixel (i, j) samples the domain at (i*(W-1)/(W'-1), j*(H-1)/(H'-1)).
+  Fit fit = Fit::stretch;  // inside, fill: one scale for both axes (reference/fit.h)
   std::string variant;  // method-specific variant ("" = default; e.g. "thesis" for patches)
   std::uint8_t background = 0;  // value of pixels outside the domain, every channel
+  // What a ChannelRenderer maps with: 0, corner to corner; else fit_d / fit_n domain units per output
+  // pixel on both axes from pixel (0, 0) (render_reference_field sets it for the picture's box).
+  std::int64_t fit_n = 0, fit_d = 0;
 };
 
 // Unclamped interpolant values, `channels` interleaved per pixel; NaN where not covered.
@@ -34,7 +39,7 @@ struct Field {
 
 // Renders every value channel of `mesh` into `out` (already sized to the output size with
 // out.channels == mesh.value_count, filled with NaN). `domain_width/height` is the
-// triangulation's size (for the corner-to-corner mapping).
+// triangulation's size (for the corner-to-corner mapping); options.fit_n/fit_d a scale instead.
 using ChannelRenderer = void (*)(const Mesh& mesh, int domain_width, int domain_height,
                                  const RenderOptions& options, Field& out);
 

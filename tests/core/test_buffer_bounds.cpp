@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The compile-time buffer bounds of tripack's generated header (core_bridge/c_source.h): for many
-// output sizes up to the given one, viewports of them and tile sizes up to the given one, the
+// output sizes up to the given one, each fit, viewports of them and tile sizes up to the given one, the
 // core's own tile_buffer_size and workspace_size never exceed them, and rendering with buffers of
 // exactly the bounds succeeds.
 #include <catch2/catch.hpp>
@@ -53,6 +53,7 @@ TEST_CASE("no render up to the given output and tile size needs more than the he
       const int h = k == 0 ? c.height : (k == 1 ? std::min<int>(c.height, blob.height) : std::max(2, below(c.height)));
       p.output_width = std::uint16_t(w);
       p.output_height = std::uint16_t(h);
+      p.fit = core::Fit(k / 3 % 3);  // stretch, inside, fill: the bounds do not depend on the mapping
       if (k % 3 == 2) {  // a viewport of the output
         const int x0 = below(w) - 1, y0 = below(h) - 1;
         p.viewport = core::Rect{x0, y0, x0 + below(w - x0), y0 + below(h - y0)};
@@ -62,7 +63,7 @@ TEST_CASE("no render up to the given output and tile size needs more than the he
       std::size_t tile = 0, work = 0;
       REQUIRE(core::tile_buffer_size(blob, p, &tile) == core::Status::ok);
       REQUIRE(core::workspace_size(blob, p, &work) == core::Status::ok);
-      INFO("output " << w << "x" << h << ", viewport " << p.viewport.x0 << "," << p.viewport.y0 << ".."
+      INFO("output " << w << "x" << h << ", fit " << int(p.fit) << ", viewport " << p.viewport.x0 << "," << p.viewport.y0 << ".."
                      << p.viewport.x1 << "," << p.viewport.y1 << ", tiles " << p.tile_width << "x" << p.tile_height
                      << ": " << tile << " + " << work);
       REQUIRE(tile <= bound.tile_buffer_bytes);

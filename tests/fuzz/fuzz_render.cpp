@@ -7,7 +7,8 @@
 //
 // Parameter bytes: 0 format (low bits) and dither (bit 7); 1, 2 tile width and height; 3 flags
 // (bit 0 output size from bytes 4, 5; bit 1 viewport from bytes 6..9; bit 2 tile buffer size
-// changed by the signed byte 10; bit 3 workspace size changed by the signed byte 11); 12 background.
+// changed by the signed byte 10; bit 3 workspace size changed by the signed byte 11; bits 4, 5 the
+// fit, 3 being no fit, which must be refused); 12 background.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -107,6 +108,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     params.output_height = std::uint16_t(1 + p[5] % 250);
   }
   if (flags & 2) params.viewport = core::Rect{p[6] % 260 - 4, p[7] % 260 - 4, p[8] % 260, p[9] % 260};
+  params.fit = core::Fit((flags >> 4) & 3);
   for (auto& b : params.background) b = p[12];
   // Keep frames small enough for many runs per second.
   const int out_w = params.output_width ? params.output_width : blob.width;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -199,4 +200,75 @@ TEST_CASE("pixels outside the domain get the background") {
   CHECK(int(img.at(5, 5, 0)) == 7);   // x + y = 10 > 9: outside
   CHECK(int(img.at(4, 5, 0)) == 200);  // on the hypotenuse, a boundary edge: inside
   CHECK(int(img.at(0, 9, 0)) == 200);
+}
+
+TEST_CASE("every method's fits are its stretch at the same scale, shifted or cropped (reference/fit.h)") {
+  // 64 x 48 inside 64 x 65 (scale 1, rows 8 .. 55), filling 49 x 48 (scale 1, columns 8 .. 56 of
+  // the native render), and inside 127 x 200 (scale 2: the 127 x 95 stretch from row 52).
+  const Triangulation tri = single(random_lattice_mesh(64, 48, 150, 11, 40), 64, 48);
+  struct Case {
+    Fit fit;
+    int w, h, stretch_w, stretch_h, dx, dy;  // output pixel (i, j) = stretch pixel (i - dx, j - dy)
+  };
+  const Case cases[] = {{Fit::inside, 64, 65, 64, 48, 0, 8}, {Fit::fill, 49, 48, 64, 48, -8, 0},
+                        {Fit::inside, 127, 200, 127, 95, 0, 52}};
+  for (const MethodInfo& m : reference_methods()) {
+    for (const Case& c : cases) {
+      RenderOptions o;
+      o.width = c.w;
+      o.height = c.h;
+      o.fit = c.fit;
+      const Field fitted = render_reference_field(tri, m, o);
+      const Field stretched = render_field(tri, m.name, c.stretch_w, c.stretch_h);
+      REQUIRE((fitted.width == c.w && fitted.height == c.h));
+      std::size_t differ = 0, picture = 0;
+      for (int j = 0; j < c.h; ++j)
+        for (int i = 0; i < c.w; ++i) {
+          const int x = i - c.dx, y = j - c.dy;
+          const double v = fitted.at(i, j, 0);
+          if (x < 0 || y < 0 || x >= c.stretch_w || y >= c.stretch_h) {
+            differ += !std::isnan(v);  // the border is outside the domain
+            continue;
+          }
+          ++picture;
+          const double s = stretched.at(x, y, 0);
+          differ += !(v == s || (std::isnan(v) && std::isnan(s)));
+        }
+      INFO(m.name << " " << c.w << "x" << c.h);
+      CHECK(picture == std::size_t(std::min(c.w, c.stretch_w)) * std::min(c.h, c.stretch_h));
+      CHECK(differ == 0);
+    }
+  }
+}
+
+TEST_CASE("fits at other scales sample (i - o) d / n: linear data, every method that reproduces it") {
+  Mesh mesh = random_lattice_mesh(60, 45, 150, 78, 80);
+  auto linear = [](double x, double y) { return 0.7 * x - 1.3 * y + 100.0; };
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) mesh.values[v] = linear(mesh.points[v].x, mesh.points[v].y);
+  const Triangulation tri = single(mesh, 60, 45);
+  // Scales such as 40/59 (inside 41 x 90), 89/59 (fill 90 x 41) and 76/59 (inside 77 x 77).
+  for (Fit fit : {Fit::inside, Fit::fill})
+    for (auto [w, h] : {std::pair{41, 90}, std::pair{200, 45}, std::pair{90, 41}, std::pair{77, 77}}) {
+      const FitLayout f = fit_layout(60, 45, w, h, fit);
+      for (const char* method : {"bilinear", "zienkiewicz", "clough-tocher", "natural"}) {
+        RenderOptions o;
+        o.width = w;
+        o.height = h;
+        o.fit = fit;
+        const Field got = render_reference_field(tri, *find_reference_method(method), o);
+        double worst = 0;
+        std::size_t wrong_coverage = 0;
+        for (int j = 0; j < h; ++j)
+          for (int i = 0; i < w; ++i) {
+            const double x = double((i - f.x0) * f.d) / double(f.n), y = double((j - f.y0) * f.d) / double(f.n);
+            const bool inside = x >= 0 && y >= 0 && x <= 59 && y <= 44;
+            const double v = got.at(i, j, 0);
+            wrong_coverage += inside == std::isnan(v);
+            if (inside && !std::isnan(v)) worst = std::max(worst, std::abs(v - linear(x, y)));
+          }
+        INFO(method << (fit == Fit::inside ? " inside " : " fill ") << w << "x" << h << " scale " << f.n << "/" << f.d);
+        CHECK(wrong_coverage == 0);
+        CHECK(worst < 1e-9);
+      }
+    }
 }

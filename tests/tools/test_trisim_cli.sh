@@ -70,6 +70,21 @@ for key in method engine mse psnr ssim ms; do
   grep -q "\"$key\":" "$tmp/out" && passes=$((passes + 1)) || { echo "FAIL: compare --json lacks '$key'"; failures=$((failures + 1)); }
 done
 expect 65 "expected an image of 20x20" "$bin/trisim" compare "$tri" --width 20 --height 20 --original "$tmp/a.png"
+# --fit (docs/CONVENTIONS.md "Fitting"): 24 x 16 inside 47 x 47 and filling 40 x 31 are scaled by
+# 2 (a border of 8 rows above and below; 4 columns cropped on the left, 3 on the right), where the
+# core stays within the tolerance of the reference (bilinear 1, zienkiewicz 2).
+expect 64 "--fit" "$bin/trisim" render "$tri" --fit squash -o "$tmp/x.png"
+for fit in inside:47:47 fill:40:31; do
+  IFS=: read -r mode w h <<<"$fit"
+  expect 0 "" "$bin/trisim" render "$tri" --fit "$mode" --width "$w" --height "$h" -o "$tmp/fit.png"
+  for m in bilinear:1 zienkiewicz:2; do
+    expect 0 "" "$bin/trisim" compare "$tri" --fit "$mode" --width "$w" --height "$h" --method "${m%:*}" \
+      --engine core --original "$tmp/fit.png" --json
+    diff=$(grep -o '"max_abs_diff_vs_reference":[0-9]*' "$tmp/out" | cut -d: -f2)
+    [ -n "$diff" ] && [ "$diff" -le "${m#*:}" ] && passes=$((passes + 1)) ||
+      { echo "FAIL: --fit $mode ${m%:*}: core against reference: $(cat "$tmp/out")"; failures=$((failures + 1)); }
+  done
+done
 expect 0 "" "$bin/trisim" metrics "$tmp/a.png" "$tmp/a.png" --json
 grep -q '"mse":0' "$tmp/out" && passes=$((passes + 1)) || { echo "FAIL: metrics of identical images: $(cat "$tmp/out")"; failures=$((failures + 1)); }
 expect 66 "" "$bin/trisim" metrics "$tmp/a.png" "$tmp/missing.png"

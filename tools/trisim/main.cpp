@@ -37,6 +37,7 @@ struct RenderRequest {
   std::string variant;
   int width = 0;
   int height = 0;
+  std::string fit = "stretch";  // --fit: stretch, inside or fill
   int background = 0;
   int tile = 32;       // --engine core: square tile side, 0 = full frame
   std::string format;  // --engine core: pixel format ("" = l8 for grey, rgb888 for colour)
@@ -73,6 +74,11 @@ void add_render_options(CLI::App* cmd, RenderRequest& req) {
   cmd->add_option("--width", req.width, "Output width (default: the triangulation's; mapped corner to corner)")
       ->check(CLI::Range(1, 65535));
   cmd->add_option("--height", req.height, "Output height (default: the triangulation's)")->check(CLI::Range(1, 65535));
+  cmd->add_option("--fit", req.fit,
+                  "How the picture meets an output of another shape: stretch (corner to corner), inside (one "
+                  "scale, centred, a --background border) or fill (one scale, centred, the excess cropped)")
+      ->check(CLI::IsMember({"stretch", "inside", "fill"}))
+      ->capture_default_str();
   cmd->add_option("--background", req.background, "Value of pixels outside the triangulation")
       ->check(CLI::Range(0, 255))
       ->capture_default_str();
@@ -163,6 +169,7 @@ CoreOptions core_options(const Triangulation& tri, const RenderRequest& req) {
   CoreOptions o;
   o.width = req.width;
   o.height = req.height;
+  o.fit = req.fit == "inside" ? core::Fit::inside : req.fit == "fill" ? core::Fit::fill : core::Fit::stretch;
   o.tile_width = o.tile_height = req.tile;
   o.format = parse_pixel_format(req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : req.format);
   o.dither = req.dither;
@@ -196,6 +203,7 @@ Rendered render(const Input& in, const RenderRequest& req) {
   RenderOptions options;
   options.width = req.width;
   options.height = req.height;
+  options.fit = req.fit == "inside" ? Fit::inside : req.fit == "fill" ? Fit::fill : Fit::stretch;
   options.variant = req.variant;
   options.background = static_cast<std::uint8_t>(req.background);
   const auto t0 = std::chrono::steady_clock::now();

@@ -11,9 +11,16 @@
 
 namespace tristream::core {
 
+// How the triangulation's W x H domain maps to a W' x H' output (docs/CONVENTIONS.md, "Fitting").
+enum class Fit : uint8_t {
+  stretch = 0,  // each axis corner to corner: the picture fills the output, its aspect follows the output's
+  inside = 1,   // one scale for both axes, the whole picture visible and centred, a `background` border
+  fill = 2,     // one scale for both axes covering the whole output, centred, the excess cropped
+};
+
 struct RenderParams {
-  // Output size; 0 means the blob's size. Output pixel (i, j) samples the domain at
-  // (i * (W-1) / (W'-1), j * (H-1) / (H'-1)): corners map to corners.
+  // Output size; 0 means the blob's size. With Fit::stretch output pixel (i, j) samples the domain
+  // at (i * (W-1) / (W'-1), j * (H-1) / (H'-1)): corners map to corners.
   uint16_t output_width = 0;
   uint16_t output_height = 0;
   // The part of the output to render, in output pixels; all zeros means all of it, and any other
@@ -31,6 +38,12 @@ struct RenderParams {
   // tiles of the last column), so a tile is one contiguous transfer; otherwise the stride is the
   // tile width's.
   bool packed_tiles = false;
+  // The mapping of the domain to the output; stretch, the default, is the only one that changes
+  // the picture's aspect. Pixels outside the picture (the border of Fit::inside) are outside the
+  // domain and get `background` like any other. A fill is bad_params when its picture, counted
+  // from its crop rounded up to a multiple of 4 pixels before the output, would reach
+  // TS_MAX_DIMENSION pixels (the coordinate budget).
+  Fit fit = Fit::stretch;
 };
 
 // Caller memory of a render: one tile buffer, or two that the tiles alternate between (double

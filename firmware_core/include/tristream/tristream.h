@@ -50,6 +50,16 @@ enum {
   TS_XRGB8888 = 5
 };
 
+/* How the triangulation maps to an output of another shape (docs/CONVENTIONS.md, "Fitting"):
+   stretched corner to corner (0, a zeroed ts_params), or with one scale for both axes, either the
+   whole picture centred inside a border of the background colour, or the output filled and the
+   excess cropped equally from both sides. */
+enum {
+  TS_FIT_STRETCH = 0,
+  TS_FIT_INSIDE = 1,
+  TS_FIT_FILL = 2
+};
+
 /* An opened (validated) blob; treat as opaque. */
 typedef struct ts_blob {
   uint64_t storage[24];
@@ -105,6 +115,7 @@ typedef struct ts_params {
   int dither; /* nonzero: Bayer dithering for RGB565 */
   uint8_t background[3];
   int packed_tiles; /* nonzero: stride = each tile's own width (a tile is one contiguous transfer) */
+  int fit;          /* TS_FIT_STRETCH (0), TS_FIT_INSIDE or TS_FIT_FILL; another value is refused */
 } ts_params;
 
 /* Validates `size` bytes and fills `blob`. On failure *error_offset (if not null) is the byte

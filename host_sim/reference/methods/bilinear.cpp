@@ -5,9 +5,9 @@
 
 namespace tristream {
 
-void render_bilinear(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
+void render_bilinear(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
   const Topology topo = build_topology(mesh);
-  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+  const PixelMapping map(domain_width, domain_height, out.width, out.height, options.fit_n, options.fit_d);
   const int nc = mesh.value_count;
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& v = mesh.triangles[t].v;

@@ -62,10 +62,10 @@ double clough_tocher_value(const CloughTocherTriangle& ct, double l0, double l1,
          6 * o[9] * u * v * w;
 }
 
-void render_clough_tocher(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&,
+void render_clough_tocher(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options,
                           Field& out) {
   const Topology topo = build_topology(mesh);
-  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+  const PixelMapping map(domain_width, domain_height, out.width, out.height, options.fit_n, options.fit_d);
   const int nc = mesh.value_count;
   std::vector<std::vector<Gradient>> gradients;
   for (int c = 0; c < nc; ++c) gradients.push_back(vertex_gradients(mesh, topo, c));

@@ -546,8 +546,8 @@ void search_domain_pixels(SibsonCoordinates& sibson, const std::vector<std::uint
 
 }  // namespace
 
-void render_natural(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
-  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+void render_natural(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
+  const PixelMapping map(domain_width, domain_height, out.width, out.height, options.fit_n, options.fit_d);
   const double xmax = domain_width - 1, ymax = domain_height - 1;
   const Topology topo = build_topology(mesh);
   const bool full = covers_rectangle(mesh, xmax, ymax);

@@ -558,8 +558,8 @@ void write_bilinear(const Mesh& mesh, std::uint32_t t, const Point& p, int i, in
 
 }  // namespace
 
-void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
-  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+void render_voronoi(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
+  const PixelMapping map(domain_width, domain_height, out.width, out.height, options.fit_n, options.fit_d);
   const Topology topo = build_topology(mesh);
   const double xmax = domain_width - 1, ymax = domain_height - 1;
   // The domain's pixels: all of them when the mesh covers the rectangle, otherwise those the

@@ -27,9 +27,9 @@ double zienkiewicz_value(const ZienkiewiczCoefficients& k, double a, double b, d
          u[6] * (c * c * (3 - 2 * c) + k1) + u[7] * (c * c * a + k2) - u[8] * (c * a * a + k2);
 }
 
-void render_zienkiewicz(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions&, Field& out) {
+void render_zienkiewicz(const Mesh& mesh, int domain_width, int domain_height, const RenderOptions& options, Field& out) {
   const Topology topo = build_topology(mesh);
-  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+  const PixelMapping map(domain_width, domain_height, out.width, out.height, options.fit_n, options.fit_d);
   const int nc = mesh.value_count;
   std::vector<std::vector<Gradient>> gradients;
   for (int c = 0; c < nc; ++c) gradients.push_back(vertex_gradients(mesh, topo, c));

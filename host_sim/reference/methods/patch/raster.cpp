@@ -55,7 +55,7 @@ std::vector<std::uint32_t> triangles_by_cell(const Mesh& mesh) {
 
 void bilinear_prefill(const Mesh& mesh, const Topology& topo, const std::vector<std::uint32_t>& order,
                       int domain_width, int domain_height, const RenderOptions& options, Field& out) {
-  bool exact = out.width == domain_width && out.height == domain_height;
+  bool exact = out.width == domain_width && out.height == domain_height && options.fit_n == options.fit_d;
   for (std::size_t v = 0; v < mesh.vertex_count() && exact; ++v) {
     const double x = mesh.points[v].x * patch_subpixel_scale, y = mesh.points[v].y * patch_subpixel_scale;
     exact = std::fabs(mesh.points[v].x) <= max_patch_coordinate &&

@@ -398,7 +398,7 @@ void render_patches(std::string_view method, const Mesh& mesh, int domain_width,
                     Rasterize&& rasterize) {
   const bool thesis = is_thesis_variant(method, options.variant);
   const Topology topo = build_topology(mesh);
-  const PixelMapping map(domain_width, domain_height, out.width, out.height);
+  const PixelMapping map(domain_width, domain_height, out.width, out.height, options.fit_n, options.fit_d);
   const std::vector<std::uint32_t> order = triangles_by_cell(mesh);
   bilinear_prefill(mesh, topo, order, domain_width, domain_height, options, out);
   PatchCanvas canvas(out);
