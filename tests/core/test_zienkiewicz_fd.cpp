@@ -145,6 +145,83 @@ TEST_CASE("CubicSteps::skip equals repeated steps") {
   }
 }
 
+TEST_CASE("CubicSteps::high_bytes equals clamped high words of repeated steps") {
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 2000; ++i) {
+    // Values near the [0, 255] range in the high word, and anywhere.
+    const uint64_t v = i % 2 ? rng() : (uint64_t(rng() % 300) << 32) - (uint64_t(20) << 32) + (rng() >> 32);
+    CubicSteps s{v, rng() >> (i % 3 ? 24 : 0), rng() >> (i % 5 ? 30 : 0), rng() >> (i % 7 ? 36 : 0)};
+    if (i % 4 == 0) s.d1 = ~s.d1;  // negative differences
+    const int32_t count = int32_t(rng() % 40);
+    CubicSteps t = s;
+    uint8_t out[40];
+    s.high_bytes(out, count);
+    for (int32_t k = 0; k < count; ++k) {
+      const int32_t h = int32_t(int64_t(t.v) >> 32);
+      REQUIRE(int(out[k]) == (h < 0 ? 0 : (h > 255 ? 255 : h)));
+      t.step();
+    }
+    REQUIRE(s.v == t.v);
+    REQUIRE(s.d1 == t.d1);
+    REQUIRE(s.d2 == t.d2);
+    REQUIRE(s.d3 == t.d3);
+  }
+}
+
+TEST_CASE("eval_narrow equals eval_wide within its coefficient budget") {
+  std::mt19937_64 rng(11);
+  constexpr int64_t max = ZienkiewiczChannel::max_narrow_coefficient;
+  ZienkiewiczChannel z{};
+  int64_t* p[10] = {&z.p00, &z.p01, &z.p02, &z.p03, &z.p10, &z.p11, &z.p12, &z.p20, &z.p21, &z.p30};
+  // Weights as the shader forms them (int32 q2_30 >> 15: |w| <= 2^16), the extremes included.
+  const int32_t extremes[] = {-(1 << 16), (1 << 16) - 1, 1 << 15, -1, 0, 1};
+  for (int i = 0; i < 200000; ++i) {
+    for (int64_t* q : p) {
+      const uint64_t r = rng();
+      *q = r % 3 == 0 ? (r & 8 ? max : -max) : int64_t(r % uint64_t(2 * max + 1)) - max;
+    }
+    REQUIRE(z.fits_narrow());
+    const int32_t a = i % 3 ? int32_t(uint32_t(rng())) >> 15 : extremes[rng() % 6];
+    const int32_t b = i % 5 ? int32_t(uint32_t(rng())) >> 15 : extremes[rng() % 6];
+    REQUIRE(int64_t(z.eval_narrow(a, b)) == z.eval_wide(a, b));
+  }
+  // All coefficients at the limit with the same sign: the largest partial sums.
+  for (int64_t sign : {1, -1})
+    for (int32_t w : {-(1 << 16), 1 << 15, (1 << 16) - 1}) {
+      for (int64_t* q : p) *q = sign * max;
+      REQUIRE(z.fits_narrow());
+      REQUIRE(int64_t(z.eval_narrow(w, w)) == z.eval_wide(w, w));
+    }
+  for (int64_t* q : p) {
+    const int64_t keep = *q;
+    *q = max + 1;
+    CHECK_FALSE(z.fits_narrow());
+    *q = -max - 1;
+    CHECK_FALSE(z.fits_narrow());
+    *q = keep;
+  }
+}
+
+TEST_CASE("steps_at equals the polynomials of 2^-32 coefficients evaluated in 128-bit arithmetic") {
+  // The value's Horner steps on p 2^24 with floor(x w / 2^30), as the documentation states them.
+  std::mt19937_64 rng(13);
+  auto m = [](i128 x, int32_t w) { return int64_t((x * w) >> 30); };
+  for (int i = 0; i < 20000; ++i) {
+    ZienkiewiczChannel z{};
+    int64_t* p[10] = {&z.p00, &z.p01, &z.p02, &z.p03, &z.p10, &z.p11, &z.p12, &z.p20, &z.p21, &z.p30};
+    const int64_t max = ZienkiewiczChannel::max_fd_coefficient - 1;
+    for (int64_t* q : p) *q = int64_t(rng() % uint64_t(2 * max + 1)) - max;
+    const int32_t da = int32_t(rng() % (2u << 20)) - (1 << 20), db = int32_t(rng() % (2u << 20)) - (1 << 20);
+    REQUIRE(z.setup_rows(da, db));
+    const int32_t a = int32_t(rng() % (1u << 30)), b = int32_t(rng() % (1u << 30));
+    const CubicSteps s = z.steps_at(a, b, 3);
+    auto f = [](int64_t c) { return i128(c) << 24; };
+    const int64_t pb = int64_t(f(z.p00) + m(f(z.p01) + m(f(z.p02) + m(f(z.p03), b), b), b));
+    const int64_t pa = int64_t(f(z.p10) + m(f(z.p11) + m(f(z.p12), b), b) + m(f(z.p20) + m(f(z.p21), b) + m(f(z.p30), a), a));
+    REQUIRE(s.v == uint64_t(pb + m(pa, a)));
+  }
+}
+
 TEST_CASE("forward-differenced rows equal the exact cubic within the documented bound") {
   std::mt19937 rng(17);
   double worst = 0;  // largest error over the bound

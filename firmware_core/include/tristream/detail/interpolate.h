@@ -55,6 +55,23 @@ struct CubicSteps {
     d1 += d2;
     d2 += d3;
   }
+  // The bytes clamp(int32(v / 2^32), 0, 255) of this and the next count - 1 steps, into out;
+  // leaves the steps `count` steps on. Its own loop over locals, one channel at a time: the
+  // state (eight words) then stays in the registers of a Cortex-M4, as three channels' (24) cannot.
+  __attribute__((noinline)) void high_bytes(uint8_t* out, int32_t count) {
+    uint64_t value = v, first = d1, second = d2;
+    const uint64_t third = d3;
+    for (int32_t i = 0; i < count; ++i) {
+      const int32_t h = int32_t(uint32_t(value >> 32));
+      out[i] = uint8_t(h < 0 ? 0 : (h > 255 ? 255 : h));
+      value += first;
+      first += second;
+      second += third;
+    }
+    v = value;
+    d1 = first;
+    d2 = second;
+  }
   // k steps at once: v(k) = v + k d1 + C(k,2) d2 + C(k,3) d3, and so on; exactly what k calls of
   // step() give (integer identities, modulo 2^64).
   void skip(uint32_t k) {
@@ -85,8 +102,8 @@ struct ZienkiewiczChannel {
   // Coefficients p (q24_8) must be below this in magnitude (2^20 grey levels) for forward
   // differencing; the bit budget below rests on it.
   static constexpr int64_t max_fd_coefficient = int64_t(1) << 28;
-  // Forward-difference polynomials in 2^-32 grey: value P (cubic), D1 (quadratic), D2 (linear), D3.
-  int64_t f00, f01, f02, f03, f10, f11, f12, f20, f21, f30;
+  // Forward-difference polynomials in 2^-32 grey: D1 (quadratic), D2 (linear), D3; the value's
+  // are p * 2^24, formed where used (not stored: 80 bytes a channel less of the stack).
   int64_t g00, g01, g02, g10, g11, g20;
   int64_t h00, h01, h10;
   int64_t d3;
@@ -140,6 +157,32 @@ struct ZienkiewiczChannel {
     return int32_t(f > INT32_MAX ? INT32_MAX : (f < INT32_MIN ? INT32_MIN : f));
   }
 
+  // eval_wide in 32 bits, for coefficients with |p| <= max_narrow_coefficient (fits_narrow) and
+  // any a, b read from int32 q2_30 weights shifted to q17_15 (so |a|, |b| <= 2^16): the same
+  // truncating Horner steps t' = p + floor(w t / 2^15) on 32 x 32 -> 64 products (SMULL on
+  // Cortex-M4, against three multiplies a 64-bit product), so the same value when every partial
+  // sum fits int32. With |w| <= 2^16, |floor(w t / 2^15)| <= 2 |t| + 1, and the partial sums of
+  // eval_wide's Horner scheme are then at most 49 P + 24 (narrow_eval_bound; tested against
+  // eval_wide at the limits).
+  static constexpr int32_t max_narrow_coefficient = int32_t(1) << 25;
+  static constexpr int64_t narrow_eval_bound(int64_t p) { return 49 * p + 24; }
+  bool fits_narrow() const {
+    // |c| <= max as one unsigned comparison, as fits_rows.
+    auto out = [](int64_t c) {
+      return uint32_t(uint64_t(c) + uint64_t(max_narrow_coefficient) > uint64_t(2 * max_narrow_coefficient));
+    };
+    return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
+             out(p30));
+  }
+  int32_t eval_narrow(int32_t a, int32_t b) const {
+    constexpr int s = q17_15::frac_bits;
+    auto m = [](int32_t w, int32_t t) { return int32_t((int64_t(w) * t) >> s); };
+    const int32_t pb = int32_t(p00) + m(b, int32_t(p01) + m(b, int32_t(p02) + m(b, int32_t(p03))));
+    const int32_t pa = int32_t(p10) + m(b, int32_t(p11) + m(b, int32_t(p12))) +
+                       m(a, int32_t(p20) + m(b, int32_t(p21)) + m(a, int32_t(p30)));
+    return pb + m(a, pa);
+  }
+
   // Whether the coefficients are within the forward-difference bit budget.
   bool fits_rows() const {
     // |c| < max as one unsigned comparison: c + max - 1 in [0, 2 max - 2] (added modulo 2^64, so
@@ -179,10 +222,6 @@ struct ZienkiewiczChannel {
     const int64_t c3 = mul_q30(mul_q30(p30 * A + p21 * B, int32_t(A)), int32_t(A)) +
                        mul_q30(mul_q30(p12 * A + p03 * B, int32_t(B)), int32_t(B));
     auto round_down = [](int64_t v) { return (v + (int64_t(1) << (down - 1))) >> down; };
-    constexpr int64_t to_value = int64_t(1) << lift;
-    f00 = p00 * to_value, f01 = p01 * to_value, f02 = p02 * to_value, f03 = p03 * to_value;
-    f10 = p10 * to_value, f11 = p11 * to_value, f12 = p12 * to_value;
-    f20 = p20 * to_value, f21 = p21 * to_value, f30 = p30 * to_value;
     // P(a + m da, b + m db) = P + c1 m + c2 m^2 + c3 m^3.
     g00 = round_down(r00 + s00 + c3), g10 = round_down(r10 + s10), g01 = round_down(r01 + s01);
     g20 = round_down(r20), g11 = round_down(r11), g02 = round_down(r02);
@@ -198,8 +237,15 @@ struct ZienkiewiczChannel {
   // coefficients' rounding).
   CubicSteps steps_at(int32_t a, int32_t b, int order) const {
     CubicSteps s;
-    const int64_t pb = f00 + mul_q30(f01 + mul_q30(f02 + mul_q30(f03, b), b), b);
-    const int64_t pa = f10 + mul_q30(f11 + mul_q30(f12, b), b) + mul_q30(f20 + mul_q30(f21, b) + mul_q30(f30, a), a);
+    // The value's coefficients in 2^-32 grey (p is q24_8; |p| < 2^28 by the budget, so below 2^52).
+    // The innermost products as floor(p 2^24 w / 2^30) = floor(p w / 2^6): one 32 x 32 -> 64
+    // product, p fitting int32.
+    constexpr int lift = value_frac_bits - q24_8::frac_bits;
+    static_assert(max_fd_coefficient <= INT32_MAX, "coefficients of forward-differenced triangles fit int32");
+    auto f = [](int64_t p) { return int64_t(uint64_t(p) << lift); };
+    auto fw = [](int64_t p, int32_t w) { return (int64_t(int32_t(p)) * w) >> (q2_30::frac_bits - lift); };
+    const int64_t pb = f(p00) + mul_q30(f(p01) + mul_q30(f(p02) + fw(p03, b), b), b);
+    const int64_t pa = f(p10) + mul_q30(f(p11) + fw(p12, b), b) + mul_q30(f(p20) + fw(p21, b) + fw(p30, a), a);
     s.v = uint64_t(pb + mul_q30(pa, a));
     // Every field written (0 beyond the order), so callers' arrays need no zeroing first.
     s.d1 = order >= 1 ? uint64_t(g00 + mul_q30(g01 + mul_q30(g02, b), b) +
@@ -210,6 +256,11 @@ struct ZienkiewiczChannel {
     return s;
   }
 };
+
+static_assert(ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) +
+                      (1 << (q24_8::frac_bits - 1)) <=
+                  INT32_MAX,
+              "narrow evaluation (and its rounding offset) fits int32");
 
 // Rows at least this long (the row's whole covered length, independent of tiling) of triangles
 // of at least this area (pixels) are forward-differenced; other rows are evaluated pixel by pixel
