@@ -50,15 +50,14 @@ struct ZienkiewiczShader {
     fd_state = a2 >= zienkiewicz_fd_min_area2 ? 0 : -1;
     // Each channel's values and gradients loaded where its setup uses them (no staging arrays of
     // all channels, which kept the compiler spilling registers to the stack).
+    bool fits = true;
     for (int c = 0; c < Channels; ++c) {
       const int32_t v3[3] = {load_u16(values[0] + 2 * c), load_u16(values[1] + 2 * c), load_u16(values[2] + 2 * c)};
       const int32_t g6[6] = {load_i32(gradients[0] + 8 * c), load_i32(gradients[0] + 8 * c + 4),
                              load_i32(gradients[1] + 8 * c), load_i32(gradients[1] + 8 * c + 4),
                              load_i32(gradients[2] + 8 * c), load_i32(gradients[2] + 8 * c + 4)};
-      ch[c].setup(dx, dy, v3, g6);
+      fits &= ch[c].setup(dx, dy, v3, g6);
     }
-    bool fits = true;
-    for (int c = 0; c < Channels; ++c) fits &= ch[c].fits_narrow();
     narrow = fits;
   }
   // Forward differencing set up on the first row that uses it; false for a small triangle or one

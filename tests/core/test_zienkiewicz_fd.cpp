@@ -202,6 +202,59 @@ TEST_CASE("eval_narrow equals eval_wide within its coefficient budget") {
   }
 }
 
+TEST_CASE("the coefficients in 32 bits equal those in 64 bits within max_narrow_derivative") {
+  std::mt19937_64 rng(19);
+  constexpr int32_t max = ZienkiewiczChannel::max_narrow_derivative;
+  for (int i = 0; i < 200000; ++i) {
+    int32_t u[9];
+    for (int k = 0; k < 9; ++k) {
+      const bool value = k % 3 == 0;  // u1, u4, u7: q8_8 vertex values
+      const uint64_t r = rng();
+      u[k] = value ? int32_t(r % 65536) : (r % 4 == 0 ? (r & 16 ? max : -max) : int32_t(r % (2u * max + 1)) - max);
+    }
+    ZienkiewiczChannel n{}, w{};
+    n.expand<int32_t>(u[0], u[1], u[2], u[3], u[4], u[5], u[6], u[7], u[8]);
+    w.expand<int64_t>(u[0], u[1], u[2], u[3], u[4], u[5], u[6], u[7], u[8]);
+    REQUIRE(n.fits_narrow());
+    const int64_t pn[10] = {n.p00, n.p01, n.p02, n.p03, n.p10, n.p11, n.p12, n.p20, n.p21, n.p30};
+    const int64_t pw[10] = {w.p00, w.p01, w.p02, w.p03, w.p10, w.p11, w.p12, w.p20, w.p21, w.p30};
+    for (int k = 0; k < 10; ++k) REQUIRE(pn[k] == pw[k]);
+  }
+}
+
+TEST_CASE("setup takes the 32-bit coefficients only for small edge derivatives, with the same result") {
+  std::mt19937_64 rng(37);
+  int narrow_cases = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Edges up to 2^15 (fx), gradients up to 2^27 (q19_12): derivatives from tiny to 2^35.
+    const int shift = int(rng() % 16);
+    int32_t dx[3], dy[3], v3[3], g[6];
+    for (int k = 0; k < 3; ++k) {
+      dx[k] = (int32_t(rng() % 65536) - 32768) >> shift;
+      dy[k] = (int32_t(rng() % 65536) - 32768) >> shift;
+      v3[k] = int32_t(rng() % 65536);
+    }
+    for (int32_t& gk : g) gk = (int32_t(rng() % (1u << 28)) - (1 << 27)) >> int(rng() % 20);
+    ZienkiewiczChannel z{};
+    const bool narrow = z.setup(dx, dy, v3, g);
+    REQUIRE(narrow == z.fits_narrow());
+    narrow_cases += narrow;
+    // The same coefficients from the derivatives in 64 bits.
+    constexpr int down = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
+    auto dot = [&](int e, int v) {
+      return (int64_t(dx[e]) * g[2 * v] + int64_t(dy[e]) * g[2 * v + 1] + (int64_t(1) << (down - 1))) >> down;
+    };
+    ZienkiewiczChannel w{};
+    w.expand<int64_t>(v3[0], dot(0, 0), dot(0, 1), v3[1], dot(1, 1), dot(1, 2), v3[2], dot(2, 2), dot(2, 0));
+    const int64_t pz[10] = {z.p00, z.p01, z.p02, z.p03, z.p10, z.p11, z.p12, z.p20, z.p21, z.p30};
+    const int64_t pw[10] = {w.p00, w.p01, w.p02, w.p03, w.p10, w.p11, w.p12, w.p20, w.p21, w.p30};
+    for (int k = 0; k < 10; ++k) REQUIRE(pz[k] == pw[k]);
+  }
+  // Narrow and wide triangles both occur.
+  CHECK(narrow_cases > 2000);
+  CHECK(narrow_cases < 18000);
+}
+
 TEST_CASE("steps_at equals the polynomials of 2^-32 coefficients evaluated in 128-bit arithmetic") {
   // The value's Horner steps on p 2^24 with floor(x w / 2^30), as the documentation states them.
   std::mt19937_64 rng(13);

@@ -109,8 +109,8 @@ struct ZienkiewiczChannel {
   int64_t d3;
 
   // dx, dy: domain-space edge vectors AB, BC, CA in position_fx; values q8_8; gradients q19_12
-  // (gx, gy per vertex).
-  void setup(const int32_t* edge_dx, const int32_t* edge_dy, const int32_t* values, const int32_t* gradients) {
+  // (gx, gy per vertex). Returns fits_narrow().
+  bool setup(const int32_t* edge_dx, const int32_t* edge_dy, const int32_t* values, const int32_t* gradients) {
     constexpr int shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
     static_assert(shift >= 1, "edge derivative needs at least one bit to round away");
     auto dot = [&](int edge, int vertex) {
@@ -118,10 +118,29 @@ struct ZienkiewiczChannel {
           int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
       return (d + (int64_t(1) << (shift - 1))) >> shift;
     };
-    const int64_t u1 = values[0], u4 = values[1], u7 = values[2];
     const int64_t u2 = dot(0, 0), u3 = dot(0, 1);  // AB . gA, AB . gB
     const int64_t u5 = dot(1, 1), u6 = dot(1, 2);  // BC . gB, BC . gC
     const int64_t u8 = dot(2, 2), u9 = dot(2, 0);  // CA . gC, CA . gA
+    // |u| <= max_narrow_derivative as one unsigned comparison (as fits_rows).
+    auto small = [](int64_t u) {
+      return uint32_t(uint64_t(u) + uint64_t(max_narrow_derivative) <= uint64_t(2 * max_narrow_derivative));
+    };
+    if (small(u2) & small(u3) & small(u5) & small(u6) & small(u8) & small(u9)) {
+      expand<int32_t>(values[0], int32_t(u2), int32_t(u3), values[1], int32_t(u5), int32_t(u6), values[2],
+                      int32_t(u8), int32_t(u9));
+      return true;
+    }
+    expand<int64_t>(values[0], u2, u3, values[1], u5, u6, values[2], u8, u9);
+    return fits_narrow();
+  }
+  // Edge derivatives (and values, below 2^16) up to this in magnitude give coefficients within
+  // max_narrow_coefficient, formed in 32 bits: every sum of expand is at most 20 max |u| (p21 and
+  // p12: t = 6 u7 - k111 with |k111| <= 9 max |u|, plus 5 max |u|).
+  static constexpr int32_t max_narrow_derivative = int32_t(1) << 20;
+  // The coefficients p from the vertex values u1, u4, u7 (q8_8) and the edge derivatives
+  // (q24_8) in T: int64_t for any inputs, int32_t (the same integers) within max_narrow_derivative.
+  template <typename T>
+  void expand(T u1, T u2, T u3, T u4, T u5, T u6, T u7, T u8, T u9) {
     // Homogeneous cubic in (a, b, c) with the control values k300 = u1, k030 = u4, k003 = u7,
     // k210 = 3 u1 + u2, k201 = 3 u1 - u9, k120 = 3 u4 - u3, k021 = 3 u4 + u5, k102 = 3 u7 + u8,
     // k012 = 3 u7 - u6 and k111 below, then c = 1 - a - b, expanded and simplified (exact integer
@@ -130,8 +149,8 @@ struct ZienkiewiczChannel {
     // p20 = 3 k003 - 2 k102 + k201, p12 = -3 k003 + 2 k012 - k021 + k102 - k111 + k120,
     // p11 = 6 k003 - 2 k012 - 2 k102 + k111, p10 = -3 k003 + k102, p03 = -k003 + k012 - k021 + k030,
     // p02 = 3 k003 - 2 k012 + k021, p01 = -3 k003 + k012, p00 = k003.
-    const int64_t k111 = 2 * (u1 + u4 + u7) + (u2 - u3 + u5 - u6 + u8 - u9) / 2;
-    const int64_t t = 6 * u7 - k111;
+    const T k111 = 2 * (u1 + u4 + u7) + (u2 - u3 + u5 - u6 + u8 - u9) / 2;
+    const T t = 6 * u7 - k111;
     p30 = 2 * (u7 - u1) + u8 + u9;
     p21 = t + u2 - u6 + 2 * u8 + u9;
     p20 = 3 * (u1 - u7) - 2 * u8 - u9;
@@ -261,6 +280,9 @@ static_assert(ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narr
                       (1 << (q24_8::frac_bits - 1)) <=
                   INT32_MAX,
               "narrow evaluation (and its rounding offset) fits int32");
+static_assert(20 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <= ZienkiewiczChannel::max_narrow_coefficient &&
+                  (int64_t(1) << 16) <= ZienkiewiczChannel::max_narrow_derivative,
+              "coefficients from narrow derivatives and q8_8 values are narrow");
 
 // Rows at least this long (the row's whole covered length, independent of tiling) of triangles
 // of at least this area (pixels) are forward-differenced; other rows are evaluated pixel by pixel
