@@ -29,7 +29,7 @@ struct ZienkiewiczShader {
   ZienkiewiczChannel ch[Channels];
   BarycentricStepper steps;
   int fd_state = 0;  // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
-  bool narrow = false;  // every channel fits ZienkiewiczChannel::eval_narrow
+  bool narrow = false;  // every channel fits ZienkiewiczChannel::eval_narrow (zienkiewicz_narrow_forms)
 
   void begin(const TriangleView& tv, const TriangleSetup& s) {
     const int64_t a2 = s.area2;
@@ -83,8 +83,8 @@ struct ZienkiewiczShader {
     }
     // The weights at x0 directly: the same sums modulo 2^32 as at xs plus (x0 - xs) steps.
     steps.at(x0, y, &a, &b);
-    if (narrow) {
-      per_pixel<true>(y, x0, x1, a, b);
+    if (zienkiewicz_narrow_forms && narrow) {
+      per_pixel<zienkiewicz_narrow_forms>(y, x0, x1, a, b);
     } else {
       per_pixel<false>(y, x0, x1, a, b);
     }
@@ -92,11 +92,10 @@ struct ZienkiewiczShader {
   // Pixels x0..x1 of row y evaluated one by one from the weights a, b at x0; Narrow: every
   // channel's coefficients fit ZienkiewiczChannel::eval_narrow (the same values in 32 bits).
   template <bool Narrow>
-  void per_pixel(int32_t y, int32_t x0, int32_t x1, uint32_t a, uint32_t b) {
+  __attribute__((always_inline)) void per_pixel(int32_t y, int32_t x0, int32_t x1, uint32_t a, uint32_t b) {
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
     constexpr int32_t half = 1 << (q24_8::frac_bits - 1);
     auto* p = writer.at(x0, y);
-    const uint32_t da = steps.dadx, db = steps.dbdx;  // locals: the pixel stores could alias the members
     for (int32_t x = x0; x <= x1; ++x) {
       const int32_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;
       if constexpr (Writer::takes_rounded) {
@@ -120,8 +119,8 @@ struct ZienkiewiczShader {
         writer.put(p, x, y, q8);
       }
       p += bpp;
-      a += da;
-      b += db;
+      a += steps.dadx;
+      b += steps.dbdx;
     }
   }
   // Pixels x0..x1 of row y by forward differencing from the weights a, b at xs.

@@ -236,7 +236,9 @@ TEST_CASE("setup takes the 32-bit coefficients only for small edge derivatives, 
     }
     for (int32_t& gk : g) gk = (int32_t(rng() % (1u << 28)) - (1 << 27)) >> int(rng() % 20);
     ZienkiewiczChannel z{};
-    const bool narrow = z.setup(dx, dy, v3, g);
+    const bool narrow = z.setup<true>(dx, dy, v3, g);
+    ZienkiewiczChannel z64{};
+    CHECK_FALSE(z64.setup<false>(dx, dy, v3, g));
     REQUIRE(narrow == z.fits_narrow());
     narrow_cases += narrow;
     // The same coefficients from the derivatives in 64 bits.
@@ -248,7 +250,9 @@ TEST_CASE("setup takes the 32-bit coefficients only for small edge derivatives, 
     w.expand<int64_t>(v3[0], dot(0, 0), dot(0, 1), v3[1], dot(1, 1), dot(1, 2), v3[2], dot(2, 2), dot(2, 0));
     const int64_t pz[10] = {z.p00, z.p01, z.p02, z.p03, z.p10, z.p11, z.p12, z.p20, z.p21, z.p30};
     const int64_t pw[10] = {w.p00, w.p01, w.p02, w.p03, w.p10, w.p11, w.p12, w.p20, w.p21, w.p30};
+    const int64_t p64[10] = {z64.p00, z64.p01, z64.p02, z64.p03, z64.p10, z64.p11, z64.p12, z64.p20, z64.p21, z64.p30};
     for (int k = 0; k < 10; ++k) REQUIRE(pz[k] == pw[k]);
+    for (int k = 0; k < 10; ++k) REQUIRE(p64[k] == pw[k]);
   }
   // Narrow and wide triangles both occur.
   CHECK(narrow_cases > 2000);

@@ -61,6 +61,7 @@ struct CubicSteps {
   __attribute__((noinline)) void high_bytes(uint8_t* out, int32_t count) {
     uint64_t value = v, first = d1, second = d2;
     const uint64_t third = d3;
+#pragma GCC unroll 2
     for (int32_t i = 0; i < count; ++i) {
       const int32_t h = int32_t(uint32_t(value >> 32));
       out[i] = uint8_t(h < 0 ? 0 : (h > 255 ? 255 : h));
@@ -81,6 +82,11 @@ struct CubicSteps {
     d2 += k1 * d3;
   }
 };
+
+// Whether ZienkiewiczChannel's 32-bit forms (eval_narrow, the 32-bit expansion in setup) are used:
+// where a 64-bit product is not one instruction (no 128-bit type: Cortex-M). On 64-bit hosts the
+// 64-bit forms are as fast and the checks that choose would only cost.
+constexpr bool zienkiewicz_narrow_forms = !TS_USE_INT128;
 
 // Zienkiewicz (docs/CONVENTIONS.md) as a cubic polynomial in the barycentric weights (a, b) of vertices
 // 0 and 1: f = sum p[i][j] a^i b^j, coefficients in q24_8 from the vertex values and the edge
@@ -109,7 +115,8 @@ struct ZienkiewiczChannel {
   int64_t d3;
 
   // dx, dy: domain-space edge vectors AB, BC, CA in position_fx; values q8_8; gradients q19_12
-  // (gx, gy per vertex). Returns fits_narrow().
+  // (gx, gy per vertex). Returns fits_narrow() with the 32-bit forms (Narrow), else false.
+  template <bool Narrow = zienkiewicz_narrow_forms>
   bool setup(const int32_t* edge_dx, const int32_t* edge_dy, const int32_t* values, const int32_t* gradients) {
     constexpr int shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
     static_assert(shift >= 1, "edge derivative needs at least one bit to round away");
@@ -121,17 +128,19 @@ struct ZienkiewiczChannel {
     const int64_t u2 = dot(0, 0), u3 = dot(0, 1);  // AB . gA, AB . gB
     const int64_t u5 = dot(1, 1), u6 = dot(1, 2);  // BC . gB, BC . gC
     const int64_t u8 = dot(2, 2), u9 = dot(2, 0);  // CA . gC, CA . gA
-    // |u| <= max_narrow_derivative as one unsigned comparison (as fits_rows).
-    auto small = [](int64_t u) {
-      return uint32_t(uint64_t(u) + uint64_t(max_narrow_derivative) <= uint64_t(2 * max_narrow_derivative));
-    };
-    if (small(u2) & small(u3) & small(u5) & small(u6) & small(u8) & small(u9)) {
-      expand<int32_t>(values[0], int32_t(u2), int32_t(u3), values[1], int32_t(u5), int32_t(u6), values[2],
-                      int32_t(u8), int32_t(u9));
-      return true;
+    if constexpr (Narrow) {
+      // |u| <= max_narrow_derivative as one unsigned comparison (as fits_rows).
+      auto small = [](int64_t u) {
+        return uint32_t(uint64_t(u) + uint64_t(max_narrow_derivative) <= uint64_t(2 * max_narrow_derivative));
+      };
+      if (small(u2) & small(u3) & small(u5) & small(u6) & small(u8) & small(u9)) {
+        expand<int32_t>(values[0], int32_t(u2), int32_t(u3), values[1], int32_t(u5), int32_t(u6), values[2],
+                        int32_t(u8), int32_t(u9));
+        return true;
+      }
     }
     expand<int64_t>(values[0], u2, u3, values[1], u5, u6, values[2], u8, u9);
-    return fits_narrow();
+    return Narrow && fits_narrow();
   }
   // Edge derivatives (and values, below 2^16) up to this in magnitude give coefficients within
   // max_narrow_coefficient, formed in 32 bits: every sum of expand is at most 20 max |u| (p21 and
@@ -261,7 +270,7 @@ struct ZienkiewiczChannel {
     // product, p fitting int32.
     constexpr int lift = value_frac_bits - q24_8::frac_bits;
     static_assert(max_fd_coefficient <= INT32_MAX, "coefficients of forward-differenced triangles fit int32");
-    auto f = [](int64_t p) { return int64_t(uint64_t(p) << lift); };
+    auto f = [](int64_t p) { return int64_t(int32_t(p)) * (int64_t(1) << lift); };
     auto fw = [](int64_t p, int32_t w) { return (int64_t(int32_t(p)) * w) >> (q2_30::frac_bits - lift); };
     const int64_t pb = f(p00) + mul_q30(f(p01) + mul_q30(f(p02) + fw(p03, b), b), b);
     const int64_t pa = f(p10) + mul_q30(f(p11) + fw(p12, b), b) + mul_q30(f(p20) + fw(p21, b) + fw(p30, a), a);
