@@ -19,6 +19,20 @@
 namespace tristream::core::detail {
 namespace {
 
+// A channel's q8_8 value of vertex k (at offset 2 c from the vertex's first) and its q19_12
+// gradient component j (gx, gy of vertex j / 2; offset 8 c), read in place for
+// ZienkiewiczChannel::setup. One type for every shader: one setup in the code.
+struct VertexValues {
+  const uint8_t* const* vertex;
+  int offset;
+  int32_t operator[](int k) const { return load_u16(vertex[k] + offset); }
+};
+struct VertexGradients {
+  const uint8_t* const* vertex;
+  int offset;
+  int32_t operator[](int j) const { return load_i32(vertex[j >> 1] + offset + 4 * (j & 1)); }
+};
+
 template <int Channels, typename Writer>
 struct ZienkiewiczShader {
   const BlobLayer* layer;
@@ -40,7 +54,7 @@ struct ZienkiewiczShader {
     const uint8_t* gradients[3];
     for (int k = 0; k < 3; ++k) {
       const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
-      const uint8_t* pn = layer->positions + 4 * size_t(tv.v[(k + 1) % 3]);
+      const uint8_t* pn = layer->positions + 4 * size_t(tv.v[k == 2 ? 0 : k + 1]);
       dx[k] = int32_t(load_u16(pn)) - int32_t(load_u16(pk));
       dy[k] = int32_t(load_u16(pn + 2)) - int32_t(load_u16(pk + 2));
       const size_t first = size_t(tv.v[k]) * per_vertex + first_channel;
@@ -48,14 +62,12 @@ struct ZienkiewiczShader {
       gradients[k] = layer->gradients + 8 * first;
     }
     fd_state = a2 >= zienkiewicz_fd_min_area2 ? 0 : -1;
-    // Each channel's values and gradients loaded where its setup uses them (no staging arrays of
-    // all channels, which kept the compiler spilling registers to the stack).
+    // Each channel's values and gradients read from the blob where its setup uses them (no
+    // staging arrays).
     bool fits = true;
     for (int c = 0; c < Channels; ++c) {
-      const int32_t v3[3] = {load_u16(values[0] + 2 * c), load_u16(values[1] + 2 * c), load_u16(values[2] + 2 * c)};
-      const int32_t g6[6] = {load_i32(gradients[0] + 8 * c), load_i32(gradients[0] + 8 * c + 4),
-                             load_i32(gradients[1] + 8 * c), load_i32(gradients[1] + 8 * c + 4),
-                             load_i32(gradients[2] + 8 * c), load_i32(gradients[2] + 8 * c + 4)};
+      const VertexValues v3{values, 2 * c};
+      const VertexGradients g6{gradients, 8 * c};
       fits &= ch[c].setup(dx, dy, v3, g6);
     }
     narrow = fits;
@@ -92,7 +104,7 @@ struct ZienkiewiczShader {
   // Pixels x0..x1 of row y evaluated one by one from the weights a, b at x0; Narrow: every
   // channel's coefficients fit ZienkiewiczChannel::eval_narrow (the same values in 32 bits).
   template <bool Narrow>
-  __attribute__((always_inline)) void per_pixel(int32_t y, int32_t x0, int32_t x1, uint32_t a, uint32_t b) {
+  void per_pixel(int32_t y, int32_t x0, int32_t x1, uint32_t a, uint32_t b) {
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
     constexpr int32_t half = 1 << (q24_8::frac_bits - 1);
     auto* p = writer.at(x0, y);
