@@ -25,12 +25,14 @@ namespace {
 struct VertexValues {
   const uint8_t* const* vertex;
   int offset;
-  int32_t operator[](int k) const { return load_u16(vertex[k] + offset); }
+  __attribute__((always_inline)) int32_t operator[](int k) const { return load_u16(vertex[k] + offset); }
 };
 struct VertexGradients {
   const uint8_t* const* vertex;
   int offset;
-  int32_t operator[](int j) const { return load_i32(vertex[j >> 1] + offset + 4 * (j & 1)); }
+  __attribute__((always_inline)) int32_t operator[](int j) const {
+    return load_i32(vertex[j >> 1] + offset + 4 * (j & 1));
+  }
 };
 
 template <int Channels, typename Writer>

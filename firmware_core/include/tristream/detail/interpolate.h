@@ -130,7 +130,8 @@ struct ZienkiewiczChannel {
   TS_ZIENKIEWICZ_SETUP_INLINE bool setup(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values, const Gradients& gradients) {
     constexpr int shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
     static_assert(shift >= 1, "edge derivative needs at least one bit to round away");
-    auto dot = [&](int edge, int vertex) {
+    // Inlined (-Os would call it, and the readers, once per product).
+    auto dot = [&](int edge, int vertex) __attribute__((always_inline)) {
       const int64_t d =
           int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
       return (d + (int64_t(1) << (shift - 1))) >> shift;
@@ -212,7 +213,7 @@ struct ZienkiewiczChannel {
     return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
              out(p30));
   }
-  int32_t eval_narrow(int32_t a, int32_t b) const {
+  __attribute__((always_inline)) int32_t eval_narrow(int32_t a, int32_t b) const {  // -Os: not a call a pixel
     constexpr int s = q17_15::frac_bits;
     auto m = [](int32_t w, int32_t t) { return int32_t((int64_t(w) * t) >> s); };
     const int32_t pb = int32_t(p00) + m(b, int32_t(p01) + m(b, int32_t(p02) + m(b, int32_t(p03))));
