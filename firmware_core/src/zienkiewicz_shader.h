@@ -19,6 +19,22 @@
 namespace tristream::core::detail {
 namespace {
 
+// A channel's q8_8 value of vertex k (at offset 2 c from the vertex's first) and its q19_12
+// gradient component j (gx, gy of vertex j / 2; offset 8 c), read in place for
+// ZienkiewiczChannel::setup. One type for every shader: one setup in the code.
+struct VertexValues {
+  const uint8_t* const* vertex;
+  int offset;
+  __attribute__((always_inline)) int32_t operator[](int k) const { return load_u16(vertex[k] + offset); }
+};
+struct VertexGradients {
+  const uint8_t* const* vertex;
+  int offset;
+  __attribute__((always_inline)) int32_t operator[](int j) const {
+    return load_i32(vertex[j >> 1] + offset + 4 * (j & 1));
+  }
+};
+
 template <int Channels, typename Writer>
 struct ZienkiewiczShader {
   const BlobLayer* layer;
@@ -29,6 +45,7 @@ struct ZienkiewiczShader {
   ZienkiewiczChannel ch[Channels];
   BarycentricStepper steps;
   int fd_state = 0;  // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
+  bool narrow = false;  // every channel fits ZienkiewiczChannel::eval_narrow (zienkiewicz_narrow_forms)
 
   void begin(const TriangleView& tv, const TriangleSetup& s) {
     const int64_t a2 = s.area2;
@@ -39,7 +56,7 @@ struct ZienkiewiczShader {
     const uint8_t* gradients[3];
     for (int k = 0; k < 3; ++k) {
       const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
-      const uint8_t* pn = layer->positions + 4 * size_t(tv.v[(k + 1) % 3]);
+      const uint8_t* pn = layer->positions + 4 * size_t(tv.v[k == 2 ? 0 : k + 1]);
       dx[k] = int32_t(load_u16(pn)) - int32_t(load_u16(pk));
       dy[k] = int32_t(load_u16(pn + 2)) - int32_t(load_u16(pk + 2));
       const size_t first = size_t(tv.v[k]) * per_vertex + first_channel;
@@ -47,15 +64,15 @@ struct ZienkiewiczShader {
       gradients[k] = layer->gradients + 8 * first;
     }
     fd_state = a2 >= zienkiewicz_fd_min_area2 ? 0 : -1;
-    // Each channel's values and gradients loaded where its setup uses them (no staging arrays of
-    // all channels, which kept the compiler spilling registers to the stack).
+    // Each channel's values and gradients read from the blob where its setup uses them (no
+    // staging arrays).
+    bool fits = true;
     for (int c = 0; c < Channels; ++c) {
-      const int32_t v3[3] = {load_u16(values[0] + 2 * c), load_u16(values[1] + 2 * c), load_u16(values[2] + 2 * c)};
-      const int32_t g6[6] = {load_i32(gradients[0] + 8 * c), load_i32(gradients[0] + 8 * c + 4),
-                             load_i32(gradients[1] + 8 * c), load_i32(gradients[1] + 8 * c + 4),
-                             load_i32(gradients[2] + 8 * c), load_i32(gradients[2] + 8 * c + 4)};
-      ch[c].setup(dx, dy, v3, g6);
+      const VertexValues v3{values, 2 * c};
+      const VertexGradients g6{gradients, 8 * c};
+      fits &= ch[c].setup(dx, dy, v3, g6);
     }
+    narrow = fits;
   }
   // Forward differencing set up on the first row that uses it; false for a small triangle or one
   // outside the bit budget (then every row is evaluated per pixel).
@@ -80,23 +97,39 @@ struct ZienkiewiczShader {
     }
     // The weights at x0 directly: the same sums modulo 2^32 as at xs plus (x0 - xs) steps.
     steps.at(x0, y, &a, &b);
+    if (zienkiewicz_narrow_forms && narrow) {
+      per_pixel<zienkiewicz_narrow_forms>(y, x0, x1, a, b);
+    } else {
+      per_pixel<false>(y, x0, x1, a, b);
+    }
+  }
+  // Pixels x0..x1 of row y evaluated one by one from the weights a, b at x0; Narrow: every
+  // channel's coefficients fit ZienkiewiczChannel::eval_narrow (the same values in 32 bits).
+  template <bool Narrow>
+  void per_pixel(int32_t y, int32_t x0, int32_t x1, uint32_t a, uint32_t b) {
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
+    constexpr int32_t half = 1 << (q24_8::frac_bits - 1);
     auto* p = writer.at(x0, y);
     for (int32_t x = x0; x <= x1; ++x) {
-      const int64_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;
+      const int32_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;
       if constexpr (Writer::takes_rounded) {
-        // Rounded and clamped in 64 bits (as to_u8 of the int32-clamped value); the writer's
-        // clamp then folds away, and values are rarely out of range.
+        // Rounded and clamped here (as to_u8 of the int32-clamped value); the writer's clamp then
+        // folds away, and values are rarely out of range.
         int32_t r[Channels];
         for (int c = 0; c < Channels; ++c) {
-          int64_t v = (ch[c].eval_wide(a15, b15) + (1 << (q24_8::frac_bits - 1))) >> q24_8::frac_bits;
-          if (uint64_t(v) > 255) v = v < 0 ? 0 : 255;
-          r[c] = int32_t(v);
+          if constexpr (Narrow) {
+            int32_t v = (ch[c].eval_narrow(a15, b15) + half) >> q24_8::frac_bits;
+            r[c] = v < 0 ? 0 : (v > 255 ? 255 : v);
+          } else {
+            int64_t v = (ch[c].eval_wide(a15, b15) + half) >> q24_8::frac_bits;
+            if (uint64_t(v) > 255) v = v < 0 ? 0 : 255;
+            r[c] = int32_t(v);
+          }
         }
         writer.put_rounded(p, x, y, r);
       } else {
         int32_t q8[Channels];
-        for (int c = 0; c < Channels; ++c) q8[c] = ch[c].eval(a15, b15);
+        for (int c = 0; c < Channels; ++c) q8[c] = Narrow ? ch[c].eval_narrow(a15, b15) : ch[c].eval(a15, b15);
         writer.put(p, x, y, q8);
       }
       p += bpp;
@@ -138,7 +171,26 @@ struct ZienkiewiczShader {
       return;
     }
 #endif
-    if constexpr (Writer::takes_rounded) {
+    if constexpr (Writer::takes_rounded && Channels == 3) {
+      // Rounding to nearest folded into the values (exact: the differences are unchanged). Each
+      // channel's rounded bytes of up to `piece` pixels in a loop of its own (CubicSteps::high_bytes),
+      // then the pixels: the same values as stepping the three channels together.
+      constexpr int32_t piece = 32;
+      zienkiewicz_row_chunks<3>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),
+                                [&](int32_t n, int32_t end, CubicSteps* s) {
+                                  uint8_t bytes[3][piece];
+                                  while (n <= end) {
+                                    const int32_t count = end - n + 1 < piece ? end - n + 1 : piece;
+                                    for (int c = 0; c < 3; ++c) s[c].high_bytes(bytes[c], count);
+                                    for (int32_t i = 0; i < count; ++i) {
+                                      const int32_t r[3] = {bytes[0][i], bytes[1][i], bytes[2][i]};
+                                      writer.put_rounded(p, xs + n + i, y, r);
+                                      p += step;
+                                    }
+                                    n += count;
+                                  }
+                                });
+    } else if constexpr (Writer::takes_rounded) {
       // Rounding to nearest folded into the values (exact: the differences are unchanged).
       zienkiewicz_row<Channels>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),
                                 [&](int32_t n, const CubicSteps* s) {

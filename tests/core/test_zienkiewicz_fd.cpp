@@ -145,6 +145,140 @@ TEST_CASE("CubicSteps::skip equals repeated steps") {
   }
 }
 
+TEST_CASE("CubicSteps::high_bytes equals clamped high words of repeated steps") {
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 2000; ++i) {
+    // Values near the [0, 255] range in the high word, and anywhere.
+    const uint64_t v = i % 2 ? rng() : (uint64_t(rng() % 300) << 32) - (uint64_t(20) << 32) + (rng() >> 32);
+    CubicSteps s{v, rng() >> (i % 3 ? 24 : 0), rng() >> (i % 5 ? 30 : 0), rng() >> (i % 7 ? 36 : 0)};
+    if (i % 4 == 0) s.d1 = ~s.d1;  // negative differences
+    const int32_t count = int32_t(rng() % 40);
+    CubicSteps t = s;
+    uint8_t out[40];
+    s.high_bytes(out, count);
+    for (int32_t k = 0; k < count; ++k) {
+      const int32_t h = int32_t(int64_t(t.v) >> 32);
+      REQUIRE(int(out[k]) == (h < 0 ? 0 : (h > 255 ? 255 : h)));
+      t.step();
+    }
+    REQUIRE(s.v == t.v);
+    REQUIRE(s.d1 == t.d1);
+    REQUIRE(s.d2 == t.d2);
+    REQUIRE(s.d3 == t.d3);
+  }
+}
+
+TEST_CASE("eval_narrow equals eval_wide within its coefficient budget") {
+  std::mt19937_64 rng(11);
+  constexpr int64_t max = ZienkiewiczChannel::max_narrow_coefficient;
+  ZienkiewiczChannel z{};
+  int64_t* p[10] = {&z.p00, &z.p01, &z.p02, &z.p03, &z.p10, &z.p11, &z.p12, &z.p20, &z.p21, &z.p30};
+  // Weights as the shader forms them (int32 q2_30 >> 15: |w| <= 2^16), the extremes included.
+  const int32_t extremes[] = {-(1 << 16), (1 << 16) - 1, 1 << 15, -1, 0, 1};
+  for (int i = 0; i < 200000; ++i) {
+    for (int64_t* q : p) {
+      const uint64_t r = rng();
+      *q = r % 3 == 0 ? (r & 8 ? max : -max) : int64_t(r % uint64_t(2 * max + 1)) - max;
+    }
+    REQUIRE(z.fits_narrow());
+    const int32_t a = i % 3 ? int32_t(uint32_t(rng())) >> 15 : extremes[rng() % 6];
+    const int32_t b = i % 5 ? int32_t(uint32_t(rng())) >> 15 : extremes[rng() % 6];
+    REQUIRE(int64_t(z.eval_narrow(a, b)) == z.eval_wide(a, b));
+  }
+  // All coefficients at the limit with the same sign: the largest partial sums.
+  for (int64_t sign : {1, -1})
+    for (int32_t w : {-(1 << 16), 1 << 15, (1 << 16) - 1}) {
+      for (int64_t* q : p) *q = sign * max;
+      REQUIRE(z.fits_narrow());
+      REQUIRE(int64_t(z.eval_narrow(w, w)) == z.eval_wide(w, w));
+    }
+  for (int64_t* q : p) {
+    const int64_t keep = *q;
+    *q = max + 1;
+    CHECK_FALSE(z.fits_narrow());
+    *q = -max - 1;
+    CHECK_FALSE(z.fits_narrow());
+    *q = keep;
+  }
+}
+
+TEST_CASE("the coefficients in 32 bits equal those in 64 bits within max_narrow_derivative") {
+  std::mt19937_64 rng(19);
+  constexpr int32_t max = ZienkiewiczChannel::max_narrow_derivative;
+  for (int i = 0; i < 200000; ++i) {
+    int32_t u[9];
+    for (int k = 0; k < 9; ++k) {
+      const bool value = k % 3 == 0;  // u1, u4, u7: q8_8 vertex values
+      const uint64_t r = rng();
+      u[k] = value ? int32_t(r % 65536) : (r % 4 == 0 ? (r & 16 ? max : -max) : int32_t(r % (2u * max + 1)) - max);
+    }
+    ZienkiewiczChannel n{}, w{};
+    n.expand<int32_t>(u[0], u[1], u[2], u[3], u[4], u[5], u[6], u[7], u[8]);
+    w.expand<int64_t>(u[0], u[1], u[2], u[3], u[4], u[5], u[6], u[7], u[8]);
+    REQUIRE(n.fits_narrow());
+    const int64_t pn[10] = {n.p00, n.p01, n.p02, n.p03, n.p10, n.p11, n.p12, n.p20, n.p21, n.p30};
+    const int64_t pw[10] = {w.p00, w.p01, w.p02, w.p03, w.p10, w.p11, w.p12, w.p20, w.p21, w.p30};
+    for (int k = 0; k < 10; ++k) REQUIRE(pn[k] == pw[k]);
+  }
+}
+
+TEST_CASE("setup takes the 32-bit coefficients only for small edge derivatives, with the same result") {
+  std::mt19937_64 rng(37);
+  int narrow_cases = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Edges up to 2^15 (fx), gradients up to 2^27 (q19_12): derivatives from tiny to 2^35.
+    const int shift = int(rng() % 16);
+    int32_t dx[3], dy[3], v3[3], g[6];
+    for (int k = 0; k < 3; ++k) {
+      dx[k] = (int32_t(rng() % 65536) - 32768) >> shift;
+      dy[k] = (int32_t(rng() % 65536) - 32768) >> shift;
+      v3[k] = int32_t(rng() % 65536);
+    }
+    for (int32_t& gk : g) gk = (int32_t(rng() % (1u << 28)) - (1 << 27)) >> int(rng() % 20);
+    ZienkiewiczChannel z{};
+    const bool narrow = z.setup<true>(dx, dy, v3, g);
+    ZienkiewiczChannel z64{};
+    CHECK_FALSE(z64.setup<false>(dx, dy, v3, g));
+    REQUIRE(narrow == z.fits_narrow());
+    narrow_cases += narrow;
+    // The same coefficients from the derivatives in 64 bits.
+    constexpr int down = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
+    auto dot = [&](int e, int v) {
+      return (int64_t(dx[e]) * g[2 * v] + int64_t(dy[e]) * g[2 * v + 1] + (int64_t(1) << (down - 1))) >> down;
+    };
+    ZienkiewiczChannel w{};
+    w.expand<int64_t>(v3[0], dot(0, 0), dot(0, 1), v3[1], dot(1, 1), dot(1, 2), v3[2], dot(2, 2), dot(2, 0));
+    const int64_t pz[10] = {z.p00, z.p01, z.p02, z.p03, z.p10, z.p11, z.p12, z.p20, z.p21, z.p30};
+    const int64_t pw[10] = {w.p00, w.p01, w.p02, w.p03, w.p10, w.p11, w.p12, w.p20, w.p21, w.p30};
+    const int64_t p64[10] = {z64.p00, z64.p01, z64.p02, z64.p03, z64.p10, z64.p11, z64.p12, z64.p20, z64.p21, z64.p30};
+    for (int k = 0; k < 10; ++k) REQUIRE(pz[k] == pw[k]);
+    for (int k = 0; k < 10; ++k) REQUIRE(p64[k] == pw[k]);
+  }
+  // Narrow and wide triangles both occur.
+  CHECK(narrow_cases > 2000);
+  CHECK(narrow_cases < 18000);
+}
+
+TEST_CASE("steps_at equals the polynomials of 2^-32 coefficients evaluated in 128-bit arithmetic") {
+  // The value's Horner steps on p 2^24 with floor(x w / 2^30), as the documentation states them.
+  std::mt19937_64 rng(13);
+  auto m = [](i128 x, int32_t w) { return int64_t((x * w) >> 30); };
+  for (int i = 0; i < 20000; ++i) {
+    ZienkiewiczChannel z{};
+    int64_t* p[10] = {&z.p00, &z.p01, &z.p02, &z.p03, &z.p10, &z.p11, &z.p12, &z.p20, &z.p21, &z.p30};
+    const int64_t max = ZienkiewiczChannel::max_fd_coefficient - 1;
+    for (int64_t* q : p) *q = int64_t(rng() % uint64_t(2 * max + 1)) - max;
+    const int32_t da = int32_t(rng() % (2u << 20)) - (1 << 20), db = int32_t(rng() % (2u << 20)) - (1 << 20);
+    REQUIRE(z.setup_rows(da, db));
+    const int32_t a = int32_t(rng() % (1u << 30)), b = int32_t(rng() % (1u << 30));
+    const CubicSteps s = z.steps_at(a, b, 3);
+    auto f = [](int64_t c) { return i128(c) << 24; };
+    const int64_t pb = int64_t(f(z.p00) + m(f(z.p01) + m(f(z.p02) + m(f(z.p03), b), b), b));
+    const int64_t pa = int64_t(f(z.p10) + m(f(z.p11) + m(f(z.p12), b), b) + m(f(z.p20) + m(f(z.p21), b) + m(f(z.p30), a), a));
+    REQUIRE(s.v == uint64_t(pb + m(pa, a)));
+  }
+}
+
 TEST_CASE("forward-differenced rows equal the exact cubic within the documented bound") {
   std::mt19937 rng(17);
   double worst = 0;  // largest error over the bound

@@ -240,15 +240,20 @@ class PreinvRoundingDivider {
 };
 
 // floor(x * y / 2^30) for |x| < 2^61 and any int32 y (a q2_30 weight): the 96-bit product from
-// a 32 x 32 -> 64 product of x's high word and one of its low word, so no 128-bit type is needed
-// (the same result everywhere; the native 128-bit product where there is one).
-inline int64_t mul_q30_portable(int64_t x, int32_t y) {
-  const int64_t hi = (x >> 32) * y;             // |hi| < 2^29 * 2^31
-  const int64_t lo = int64_t(uint32_t(x)) * y;  // |lo| < 2^32 * 2^31
-  return int64_t(uint64_t(hi) << 2) + (lo >> 30);
+// two signed 32 x 32 -> 64 products, so no 128-bit type is needed (the same result everywhere; the
+// native 128-bit product where there is one). x = xh 2^32 + xl with xl its low word read as
+// signed (xh takes the borrow, |xh| <= 2^29): x y = (xh y + floor(xl y / 2^32)) 2^32 + u with
+// 0 <= u < 2^32, the first a multiply-accumulate (SMULL, then SMLAL on Cortex-M4). Always
+// inlined (-Os would call it for each product of a row's restart).
+__attribute__((always_inline)) inline int64_t mul_q30_portable(int64_t x, int32_t y) {
+  const int32_t xl = int32_t(uint32_t(x));
+  const int32_t xh = int32_t(x >> 32) + int32_t(uint32_t(x) >> 31);
+  const int64_t low = int64_t(xl) * y;
+  const int64_t high = int64_t(xh) * y + (low >> 32);  // floor(x y / 2^32)
+  return int64_t(uint64_t(high) << 2) | int64_t(uint32_t(low) >> 30);
 }
 
-inline int64_t mul_q30(int64_t x, int32_t y) {
+__attribute__((always_inline)) inline int64_t mul_q30(int64_t x, int32_t y) {
 #if TS_USE_INT128
   __extension__ typedef __int128 i128;
   return int64_t((i128(x) * y) >> 30);

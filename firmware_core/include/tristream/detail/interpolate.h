@@ -58,6 +58,24 @@ struct CubicSteps {
     d1 += d2;
     d2 += d3;
   }
+  // The bytes clamp(int32(v / 2^32), 0, 255) of this and the next count - 1 steps, into out;
+  // leaves the steps `count` steps on. Its own loop over locals, one channel at a time: the
+  // state (eight words) then stays in the registers of a Cortex-M4, as three channels' (24) cannot.
+  __attribute__((noinline)) void high_bytes(uint8_t* out, int32_t count) {
+    uint64_t value = v, first = d1, second = d2;
+    const uint64_t third = d3;
+#pragma GCC unroll 2
+    for (int32_t i = 0; i < count; ++i) {
+      const int32_t h = int32_t(uint32_t(value >> 32));
+      out[i] = uint8_t(h < 0 ? 0 : (h > 255 ? 255 : h));
+      value += first;
+      first += second;
+      second += third;
+    }
+    v = value;
+    d1 = first;
+    d2 = second;
+  }
   // k steps at once: v(k) = v + k d1 + C(k,2) d2 + C(k,3) d3, and so on; exactly what k calls of
   // step() give (integer identities, modulo 2^64).
   void skip(uint32_t k) {
@@ -67,6 +85,20 @@ struct CubicSteps {
     d2 += k1 * d3;
   }
 };
+
+// Whether ZienkiewiczChannel's 32-bit forms (eval_narrow, the 32-bit expansion in setup) are used:
+// where a 64-bit product is not one instruction (no 128-bit type: Cortex-M). On 64-bit hosts the
+// 64-bit forms are as fast and the checks that choose would only cost.
+constexpr bool zienkiewicz_narrow_forms = !TS_USE_INT128;
+
+// ZienkiewiczChannel::setup inlined into each shader's begin (its loads and the triangle's edges
+// then stay in registers: 2.5 % of the cycles of a 40,000-triangle frame on Cortex-M4, 5 % of the
+// x86-64 instructions), except where the code is optimized for size (-Os: one copy).
+#if defined(__OPTIMIZE_SIZE__)
+#define TS_ZIENKIEWICZ_SETUP_INLINE inline
+#else
+#define TS_ZIENKIEWICZ_SETUP_INLINE inline __attribute__((always_inline))
+#endif
 
 // Zienkiewicz (docs/CONVENTIONS.md) as a cubic polynomial in the barycentric weights (a, b) of vertices
 // 0 and 1: f = sum p[i][j] a^i b^j, coefficients in q24_8 from the vertex values and the edge
@@ -88,26 +120,54 @@ struct ZienkiewiczChannel {
   // Coefficients p (q24_8) must be below this in magnitude (2^20 grey levels) for forward
   // differencing; the bit budget below rests on it.
   static constexpr int64_t max_fd_coefficient = int64_t(1) << 28;
-  // Forward-difference polynomials in 2^-32 grey: value P (cubic), D1 (quadratic), D2 (linear), D3.
+  // Forward-difference polynomials in 2^-32 grey: D1 (quadratic), D2 (linear), D3; the value's
+  // are p * 2^24, stored only on 64-bit hosts (a load is cheaper than a shift there; on Cortex-M
+  // formed where used, 80 bytes a channel less of the stack).
+#if TS_USE_INT128
   int64_t f00, f01, f02, f03, f10, f11, f12, f20, f21, f30;
+#endif
   int64_t g00, g01, g02, g10, g11, g20;
   int64_t h00, h01, h10;
   int64_t d3;
 
   // dx, dy: domain-space edge vectors AB, BC, CA in position_fx; values q8_8; gradients q19_12
-  // (gx, gy per vertex).
-  void setup(const int32_t* edge_dx, const int32_t* edge_dy, const int32_t* values, const int32_t* gradients) {
+  // (gx, gy per vertex; values[k] and gradients[j] for k < 3, j < 6: arrays, or readers of the
+  // blob's bytes). Returns fits_narrow() with the 32-bit forms (Narrow), else false.
+  template <bool Narrow = zienkiewicz_narrow_forms, typename Values, typename Gradients>
+  TS_ZIENKIEWICZ_SETUP_INLINE bool setup(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values, const Gradients& gradients) {
     constexpr int shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
     static_assert(shift >= 1, "edge derivative needs at least one bit to round away");
-    auto dot = [&](int edge, int vertex) {
+    // Inlined (-Os would call it, and the readers, once per product).
+    auto dot = [&](int edge, int vertex) __attribute__((always_inline)) {
       const int64_t d =
           int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
       return (d + (int64_t(1) << (shift - 1))) >> shift;
     };
-    const int64_t u1 = values[0], u4 = values[1], u7 = values[2];
     const int64_t u2 = dot(0, 0), u3 = dot(0, 1);  // AB . gA, AB . gB
     const int64_t u5 = dot(1, 1), u6 = dot(1, 2);  // BC . gB, BC . gC
     const int64_t u8 = dot(2, 2), u9 = dot(2, 0);  // CA . gC, CA . gA
+    if constexpr (Narrow) {
+      // |u| <= max_narrow_derivative as one unsigned comparison (as fits_rows).
+      auto small = [](int64_t u) {
+        return uint32_t(uint64_t(u) + uint64_t(max_narrow_derivative) <= uint64_t(2 * max_narrow_derivative));
+      };
+      if (small(u2) & small(u3) & small(u5) & small(u6) & small(u8) & small(u9)) {
+        expand<int32_t>(values[0], int32_t(u2), int32_t(u3), values[1], int32_t(u5), int32_t(u6), values[2],
+                        int32_t(u8), int32_t(u9));
+        return true;
+      }
+    }
+    expand<int64_t>(values[0], u2, u3, values[1], u5, u6, values[2], u8, u9);
+    return Narrow && fits_narrow();
+  }
+  // Edge derivatives (and values, below 2^16) up to this in magnitude give coefficients within
+  // max_narrow_coefficient, formed in 32 bits: every sum of expand is at most 20 max |u| (p21 and
+  // p12: t = 6 u7 - k111 with |k111| <= 9 max |u|, plus 5 max |u|).
+  static constexpr int32_t max_narrow_derivative = int32_t(1) << 20;
+  // The coefficients p from the vertex values u1, u4, u7 (q8_8) and the edge derivatives
+  // (q24_8) in T: int64_t for any inputs, int32_t (the same integers) within max_narrow_derivative.
+  template <typename T>
+  void expand(T u1, T u2, T u3, T u4, T u5, T u6, T u7, T u8, T u9) {
     // Homogeneous cubic in (a, b, c) with the control values k300 = u1, k030 = u4, k003 = u7,
     // k210 = 3 u1 + u2, k201 = 3 u1 - u9, k120 = 3 u4 - u3, k021 = 3 u4 + u5, k102 = 3 u7 + u8,
     // k012 = 3 u7 - u6 and k111 below, then c = 1 - a - b, expanded and simplified (exact integer
@@ -116,8 +176,8 @@ struct ZienkiewiczChannel {
     // p20 = 3 k003 - 2 k102 + k201, p12 = -3 k003 + 2 k012 - k021 + k102 - k111 + k120,
     // p11 = 6 k003 - 2 k012 - 2 k102 + k111, p10 = -3 k003 + k102, p03 = -k003 + k012 - k021 + k030,
     // p02 = 3 k003 - 2 k012 + k021, p01 = -3 k003 + k012, p00 = k003.
-    const int64_t k111 = 2 * (u1 + u4 + u7) + (u2 - u3 + u5 - u6 + u8 - u9) / 2;
-    const int64_t t = 6 * u7 - k111;
+    const T k111 = 2 * (u1 + u4 + u7) + (u2 - u3 + u5 - u6 + u8 - u9) / 2;
+    const T t = 6 * u7 - k111;
     p30 = 2 * (u7 - u1) + u8 + u9;
     p21 = t + u2 - u6 + 2 * u8 + u9;
     p20 = 3 * (u1 - u7) - 2 * u8 - u9;
@@ -141,6 +201,32 @@ struct ZienkiewiczChannel {
   int32_t eval(int64_t a, int64_t b) const {
     const int64_t f = eval_wide(a, b);
     return int32_t(f > INT32_MAX ? INT32_MAX : (f < INT32_MIN ? INT32_MIN : f));
+  }
+
+  // eval_wide in 32 bits, for coefficients with |p| <= max_narrow_coefficient (fits_narrow) and
+  // any a, b read from int32 q2_30 weights shifted to q17_15 (so |a|, |b| <= 2^16): the same
+  // truncating Horner steps t' = p + floor(w t / 2^15) on 32 x 32 -> 64 products (SMULL on
+  // Cortex-M4, against three multiplies a 64-bit product), so the same value when every partial
+  // sum fits int32. With |w| <= 2^16, |floor(w t / 2^15)| <= 2 |t| + 1, and the partial sums of
+  // eval_wide's Horner scheme are then at most 49 P + 24 (narrow_eval_bound; tested against
+  // eval_wide at the limits).
+  static constexpr int32_t max_narrow_coefficient = int32_t(1) << 25;
+  static constexpr int64_t narrow_eval_bound(int64_t p) { return 49 * p + 24; }
+  bool fits_narrow() const {
+    // |c| <= max as one unsigned comparison, as fits_rows.
+    auto out = [](int64_t c) {
+      return uint32_t(uint64_t(c) + uint64_t(max_narrow_coefficient) > uint64_t(2 * max_narrow_coefficient));
+    };
+    return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
+             out(p30));
+  }
+  __attribute__((always_inline)) int32_t eval_narrow(int32_t a, int32_t b) const {  // -Os: not a call a pixel
+    constexpr int s = q17_15::frac_bits;
+    auto m = [](int32_t w, int32_t t) { return int32_t((int64_t(w) * t) >> s); };
+    const int32_t pb = int32_t(p00) + m(b, int32_t(p01) + m(b, int32_t(p02) + m(b, int32_t(p03))));
+    const int32_t pa = int32_t(p10) + m(b, int32_t(p11) + m(b, int32_t(p12))) +
+                       m(a, int32_t(p20) + m(b, int32_t(p21)) + m(a, int32_t(p30)));
+    return pb + m(a, pa);
   }
 
   // Whether the coefficients are within the forward-difference bit budget.
@@ -182,10 +268,12 @@ struct ZienkiewiczChannel {
     const int64_t c3 = mul_q30(mul_q30(p30 * A + p21 * B, int32_t(A)), int32_t(A)) +
                        mul_q30(mul_q30(p12 * A + p03 * B, int32_t(B)), int32_t(B));
     auto round_down = [](int64_t v) { return (v + (int64_t(1) << (down - 1))) >> down; };
+#if TS_USE_INT128
     constexpr int64_t to_value = int64_t(1) << lift;
     f00 = p00 * to_value, f01 = p01 * to_value, f02 = p02 * to_value, f03 = p03 * to_value;
     f10 = p10 * to_value, f11 = p11 * to_value, f12 = p12 * to_value;
     f20 = p20 * to_value, f21 = p21 * to_value, f30 = p30 * to_value;
+#endif
     // P(a + m da, b + m db) = P + c1 m + c2 m^2 + c3 m^3.
     g00 = round_down(r00 + s00 + c3), g10 = round_down(r10 + s10), g01 = round_down(r01 + s01);
     g20 = round_down(r20), g11 = round_down(r11), g02 = round_down(r02);
@@ -201,8 +289,20 @@ struct ZienkiewiczChannel {
   // coefficients' rounding).
   CubicSteps steps_at(int32_t a, int32_t b, int order) const {
     CubicSteps s;
-    const int64_t pb = f00 + mul_q30(f01 + mul_q30(f02 + mul_q30(f03, b), b), b);
-    const int64_t pa = f10 + mul_q30(f11 + mul_q30(f12, b), b) + mul_q30(f20 + mul_q30(f21, b) + mul_q30(f30, a), a);
+    // The value's coefficients in 2^-32 grey (p is q24_8; |p| < 2^28 by the budget, so below 2^52).
+    // The innermost products as floor(p 2^24 w / 2^30) = floor(p w / 2^6): one 32 x 32 -> 64
+    // product, p fitting int32.
+    constexpr int lift = value_frac_bits - q24_8::frac_bits;
+    static_assert(max_fd_coefficient <= INT32_MAX, "coefficients of forward-differenced triangles fit int32");
+    auto fw = [](int64_t p, int32_t w) { return (int64_t(int32_t(p)) * w) >> (q2_30::frac_bits - lift); };
+#if TS_USE_INT128
+    const int64_t pb = f00 + mul_q30(f01 + mul_q30(f02 + fw(p03, b), b), b);
+    const int64_t pa = f10 + mul_q30(f11 + fw(p12, b), b) + mul_q30(f20 + fw(p21, b) + fw(p30, a), a);
+#else
+    auto f = [](int64_t p) { return int64_t(int32_t(p)) * (int64_t(1) << lift); };
+    const int64_t pb = f(p00) + mul_q30(f(p01) + mul_q30(f(p02) + fw(p03, b), b), b);
+    const int64_t pa = f(p10) + mul_q30(f(p11) + fw(p12, b), b) + mul_q30(f(p20) + fw(p21, b) + fw(p30, a), a);
+#endif
     s.v = uint64_t(pb + mul_q30(pa, a));
     // Every field written (0 beyond the order), so callers' arrays need no zeroing first.
     s.d1 = order >= 1 ? uint64_t(g00 + mul_q30(g01 + mul_q30(g02, b), b) +
@@ -213,6 +313,14 @@ struct ZienkiewiczChannel {
     return s;
   }
 };
+
+static_assert(ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) +
+                      (1 << (q24_8::frac_bits - 1)) <=
+                  INT32_MAX,
+              "narrow evaluation (and its rounding offset) fits int32");
+static_assert(20 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <= ZienkiewiczChannel::max_narrow_coefficient &&
+                  (int64_t(1) << 16) <= ZienkiewiczChannel::max_narrow_derivative,
+              "coefficients from narrow derivatives and q8_8 values are narrow");
 
 // Rows at least this long (the row's whole covered length, independent of tiling) of triangles
 // of at least this area (pixels) are forward-differenced; other rows are evaluated pixel by pixel
