@@ -8,6 +8,7 @@
 
 #include "common/errors.h"
 #include "geometry/mesh_check.h"
+#include "tristream/compressed_blob.h"
 #include "tristream/detail/bytes.h"
 
 namespace tristream {
@@ -121,8 +122,33 @@ UnpackedBlob unpack_blob(const core::Blob& blob, std::string_view name) {
   return out;
 }
 
+std::vector<std::uint8_t> expand_compressed_or_throw(std::span<const std::uint8_t> bytes, std::string_view name,
+                                                     std::size_t* workspace_bytes) {
+  core::CompressedBlob blob;
+  core::BlobError error;
+  core::Status s = core::open_compressed_blob(bytes.data(), bytes.size(), &blob, &error);
+  std::vector<std::uint8_t> out, workspace;
+  if (s == core::Status::ok) {
+    out.assign(core::expanded_blob_size(blob), 0);
+    workspace.assign(std::max<std::size_t>(core::expand_workspace_size(blob), 1), 0);
+    s = core::expand_compressed_blob(blob, out.data(), out.size(), workspace.data(), workspace.size(), &error);
+  }
+  if (s != core::Status::ok)
+    throw DataError(std::string(name) + ": byte " + std::to_string(error.offset) + ": " + core::status_text(s));
+  if (workspace_bytes) *workspace_bytes = core::expand_workspace_size(blob);
+  return out;
+}
+
+std::vector<std::uint8_t> v1_blob_bytes(std::span<const std::uint8_t> bytes, std::string_view name) {
+  if (core::is_compressed_blob(bytes.data(), bytes.size())) return expand_compressed_or_throw(bytes, name);
+  return {bytes.begin(), bytes.end()};
+}
+
 UnpackedBlob unpack_blob(std::span<const std::uint8_t> bytes, std::string_view name) {
-  return unpack_blob(open_blob_or_throw(bytes, name), name);
+  if (!core::is_compressed_blob(bytes.data(), bytes.size())) return unpack_blob(open_blob_or_throw(bytes, name), name);
+  const std::vector<std::uint8_t> v1 = expand_compressed_or_throw(bytes, name);
+  const std::string expanded = std::string(name) + " (expanded to v1)";
+  return unpack_blob(open_blob_or_throw(v1, expanded), expanded);
 }
 
 }  // namespace tristream

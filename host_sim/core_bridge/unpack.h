@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "core_bridge/pack.h"
 #include "model/triangulation.h"
@@ -34,8 +35,23 @@ struct UnpackedBlob {
 // reader cannot see (a blob variant without in-place v1 sections).
 UnpackedBlob unpack_blob(const core::Blob& blob, std::string_view name = "blob");
 
-// open_blob, then unpack_blob; an invalid blob throws DataError "<name>: byte N: <status>".
+// open_blob, then unpack_blob; an invalid blob throws DataError "<name>: byte N: <status>". A
+// compressed blob is expanded first (expand_compressed_or_throw); the checks of the mesh then name
+// byte offsets of its expansion, "<name> (expanded to v1): byte N: ...".
 UnpackedBlob unpack_blob(std::span<const std::uint8_t> bytes, std::string_view name = "blob");
+
+// A compressed blob (magic "TSTC", tristream/compressed_blob.h) expanded into the v1 blob it
+// stands for by the core's own expand_compressed_blob, in buffers of expanded_blob_size and
+// expand_workspace_size bytes; the v1 blob renders bit-identically (its vertices are renumbered in
+// raster order). Throws DataError "<name>: byte N: <status>" with the offset the decoder reports
+// when open_compressed_blob or the stream refuses the bytes. `workspace_bytes`, when given,
+// receives the ring the expansion needed (expand_workspace_size).
+std::vector<std::uint8_t> expand_compressed_or_throw(std::span<const std::uint8_t> bytes, std::string_view name,
+                                                     std::size_t* workspace_bytes = nullptr);
+
+// The bytes of a v1 blob: a compressed blob's expansion (expand_compressed_or_throw), anything
+// else as it is (for open_blob to judge).
+std::vector<std::uint8_t> v1_blob_bytes(std::span<const std::uint8_t> bytes, std::string_view name);
 
 // Opens `bytes` as a blob; throws DataError "<name>: byte N: <status>" when open_blob refuses it.
 core::Blob open_blob_or_throw(std::span<const std::uint8_t> bytes, std::string_view name);

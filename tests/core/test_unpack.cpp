@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: MIT
 // Reading a blob back into a mesh (core_bridge/unpack.h): pack -> unpack -> pack gives the same
 // bytes for every kind of blob; the mesh read back is the packed one at the blob's precision; a blob
-// open_blob refuses, or one whose mesh the reference could not draw, is a DataError with its byte.
+// open_blob refuses, or one whose mesh the reference could not draw, is a DataError with its byte; a
+// compressed blob reads back as the v1 blob it was made from, triangle by triangle.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <string>
 
 #include "common/errors.h"
+#include "core_bridge/compress.h"
 #include "core_bridge/unpack.h"
 #include "core_support.h"
 #include "io/tri_file.h"
+#include "tristream/compressed_blob.h"
 
 using namespace tristream;
 using namespace tristream::testing;
@@ -39,6 +42,77 @@ std::string message_of(const std::vector<std::uint8_t>& blob) {
 }
 
 }  // namespace
+
+TEST_CASE("a compressed blob reads back as its v1 blob: the same triangles, corners and gradients") {
+  const std::vector<Triangulation> cases = {
+      single_mesh(random_subpixel_mesh(64, 40, 120, 7, true, 1), 64, 40, ColorSpace::grey),
+      layered(ColorSpace::ycbcr, 21),
+      read_tri_file(std::string(TRISTREAM_SOURCE_DIR) + "/data/demo/kodim23.rgb.tri"),
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k)
+    for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) {
+      INFO("case " << k << ", " << to_string(m));
+      const std::vector<std::uint8_t> v1 = pack_blob(cases[k], m);
+      const std::vector<std::uint8_t> tstc = compress_blob(v1);
+      REQUIRE(core::is_compressed_blob(tstc.data(), tstc.size()));
+      const std::vector<std::uint8_t> expanded = v1_blob_bytes(tstc, "c.bin");
+      CHECK(expanded.size() == v1.size());
+      CHECK(v1_blob_bytes(v1, "v.bin") == v1);
+      CHECK(repack(expanded) == expanded);
+      const UnpackedBlob a = unpack_blob(v1, "v.bin"), b = unpack_blob(tstc, "c.bin");
+      CHECK(b.method == a.method);
+      REQUIRE(b.tri.layers.size() == a.tri.layers.size());
+      CHECK(b.tri.space == a.tri.space);
+      for (std::size_t l = 0; l < a.tri.layers.size(); ++l) {
+        const Mesh &p = a.tri.layers[l], &q = b.tri.layers[l];
+        CHECK(q.name == p.name);
+        REQUIRE(q.vertex_count() == p.vertex_count());
+        REQUIRE(q.triangles.size() == p.triangles.size());
+        // Triangles keep the v1 order and first corner; only the vertex numbering changes.
+        for (std::size_t t = 0; t < p.triangles.size(); ++t)
+          for (int c = 0; c < 3; ++c) {
+            const std::uint32_t i = p.triangles[t].v[c], j = q.triangles[t].v[c];
+            CHECK(q.points[j].x == p.points[i].x);
+            CHECK(q.points[j].y == p.points[i].y);
+            for (std::size_t n = 0; n < std::size_t(p.value_count); ++n) {
+              CHECK(q.value(j, int(n)) == p.value(i, int(n)));
+              if (m == core::Method::zienkiewicz)
+                for (int g = 0; g < 2; ++g)
+                  CHECK(b.gradients[l][2 * (j * p.value_count + n) + g] ==
+                        a.gradients[l][2 * (i * p.value_count + n) + g]);
+            }
+          }
+      }
+    }
+}
+
+TEST_CASE("a damaged compressed blob is a DataError with the byte offset the decoder reports") {
+  const std::vector<std::uint8_t> tstc =
+      compress_blob(pack_blob(single_mesh(random_subpixel_mesh(64, 40, 120, 7, true, 1), 64, 40, ColorSpace::grey),
+                              core::Method::bilinear));
+  std::vector<std::uint8_t> version = tstc;
+  version[4] = 9;
+  CHECK(message_of(version) == "b.bin: byte 4: unsupported blob version");
+  CHECK(message_of({tstc.begin(), tstc.begin() + 60}) == "b.bin: byte 60: blob truncated");
+  // Every byte of the stream flipped: refused with the offset where the decoder stood when a
+  // check failed (never before the flipped byte, which it has to read first, never past the end),
+  // or read back (a flip the stream's checks cannot see, still a drawable mesh), never out of bounds.
+  const std::size_t stream = core::compressed_header_size + core::compressed_layer_entry_size;
+  int refused = 0;
+  for (std::size_t at = stream; at < tstc.size(); ++at) {
+    std::vector<std::uint8_t> bad = tstc;
+    bad[at] ^= 0xFF;
+    const std::string e = message_of(bad);
+    if (e.empty()) continue;
+    ++refused;
+    INFO("flipped byte " << at << ": " << e);
+    REQUIRE(e.rfind("b.bin: byte ", 0) == 0);
+    const std::size_t offset = std::stoul(e.substr(12));
+    CHECK(offset >= at);
+    CHECK(offset <= tstc.size());
+  }
+  CHECK(refused > 0);
+}
 
 TEST_CASE("pack -> unpack -> pack gives the same bytes") {
   std::vector<Triangulation> cases = {

@@ -122,6 +122,8 @@ class QuickRunTest(unittest.TestCase):
                                 "--quick"], capture_output=True, text=True, timeout=600)
             self.assertEqual(p.returncode, 0, p.stderr)
             self.assertIn("median blob bytes / codec bytes", p.stdout)
+            self.assertRegex(p.stdout, r"colour\s+all\s+compressed\s+/ jpeg\s+[0-9.]+x")
+            self.assertRegex(p.stdout, r"colour\s+all\s+v1\s+/ jpeg\s+[0-9.]+x")
             with open(Path(out) / "rd.csv", newline="") as f:
                 rows = list(csv.DictReader(f))
             self.assertEqual(Path(out, "rd.png").read_bytes()[:8], b"\x89PNG\r\n\x1a\n")
@@ -137,6 +139,10 @@ class QuickRunTest(unittest.TestCase):
                 self.assertLess(float(r[f"{codec}_psnr"]), target + 1.0, codec)  # equal PSNR, not far above
                 self.assertAlmostEqual(float(r[f"v1_over_{codec}"]), int(r["v1_bytes"]) / int(r[f"{codec}_bytes"]),
                                        places=3)
+                self.assertAlmostEqual(float(r[f"compressed_over_{codec}"]),
+                                       int(r["compressed_bytes"]) / int(r[f"{codec}_bytes"]), places=3)
+            self.assertEqual(r["compressed_render"], "identical")
+            self.assertLess(int(r["compressed_bytes"]), int(r["v1_bytes"]))
         # The blob's PSNR is the core's render as trisim measures it.
         with tempfile.TemporaryDirectory() as tmp:
             image = REPO / "data/demo/kodim23.png"
@@ -148,6 +154,33 @@ class QuickRunTest(unittest.TestCase):
             p = subprocess.run([str(BIN / "trisim"), "compare", f"{tmp}/x.bin", "--original", str(image), "--json"],
                                check=True, capture_output=True, text=True)
             self.assertAlmostEqual(json.loads(p.stdout)["psnr"], float(rows[0]["psnr_blob"]), places=3)
+
+
+@unittest.skipUnless(TOOLS, f"triencode, tripack and trisim not found in {BIN} (set TRISTREAM_BIN)")
+class CompressedRenderTest(unittest.TestCase):
+    """A compressed blob whose render differs from the v1 blob's, or that trisim cannot open, fails
+    its case (here through a trisim wrapper that draws TSTC blobs differently or refuses them)."""
+
+    def case_with(self, tstc_render):
+        with tempfile.TemporaryDirectory() as tmp:
+            for tool in ("triencode", "tripack"):
+                os.symlink(BIN / tool, Path(tmp) / tool)
+            wrapper = Path(tmp) / "trisim"
+            wrapper.write_text("#!/bin/bash\n"
+                               f'if [ "$1" = render ] && [ "$(head -c 4 "$2")" = TSTC ]; then {tstc_render}; fi\n'
+                               f'exec {BIN / "trisim"} "$@"\n')
+            wrapper.chmod(0o755)
+            return rd.measure((str(REPO / "data/demo/kodim23.png"), "kodim23", 0.5, tmp, True))
+
+    def test_a_different_render_fails(self):
+        row = self.case_with(f'exec {BIN / "trisim"} render "$2" --engine reference -m natural "${{@:3}}"')
+        self.assertEqual(row["status"], "failed")
+        self.assertIn("the compressed blob renders differently from the v1 blob", row["error"])
+
+    def test_a_blob_trisim_refuses_fails(self):
+        row = self.case_with('echo "trisim: $2: byte 0: bad magic" >&2; exit 65')
+        self.assertEqual(row["status"], "failed")
+        self.assertIn("trisim render of the compressed blob: exit 65", row["error"])
 
 
 if __name__ == "__main__":

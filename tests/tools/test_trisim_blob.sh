@@ -3,7 +3,8 @@
 # trisim render|compare|bench of a blob (tripack's output) as well as a .tri: the core draws the
 # blob's own bytes (the same pixels as the .tri packed for that method), compare measures it
 # against the reference of the mesh read back and against an original, bad blobs exit 65 naming
-# the byte.
+# the byte. A compressed blob (tripack --compress) is expanded by the core and then draws the v1
+# blob's pixels; a damaged one exits 65 with the byte offset the decoder reports.
 # Usage: test_trisim_blob.sh BIN_DIR SOURCE_DIR
 set -uo pipefail
 bin=$1
@@ -88,6 +89,31 @@ for engine in core reference; do
 done
 grep -q '"ram_bytes":' "$tmp/out" && { echo "FAIL: bench --engine reference reports RAM"; failures=$((failures + 1)); }
 
+# Compressed blobs: render (any format, tiling, engine), compare and bench as the v1 blob.
+for m in bilinear zienkiewicz; do
+  expect 0 "" "$bin/tripack" "$tri" -m $m --compress -o "$tmp/$m-c.bin"
+  check "tripack --compress writes TSTC" test "$(head -c 4 "$tmp/$m-c.bin")" = TSTC
+  expect 0 "" "$bin/trisim" render "$tmp/$m-c.bin" -o "$tmp/tstc-$m.png"
+  same "render of the compressed $m blob = the v1 blob's" "$tmp/tstc-$m.png" "$tmp/blob-$m.png"
+  same "render of the compressed $m blob = core render of the .tri" "$tmp/tstc-$m.png" "$tmp/tri-$m.png"
+  expect 0 "" "$bin/trisim" render "$tmp/$m-c.bin" --format rgb565be --tile 5 --dither --raw -o "$tmp/tstc-$m.raw"
+  same "raw RGB565 frame of the compressed $m blob" "$tmp/tstc-$m.raw" "$tmp/tri-$m.raw"
+  expect 0 "" "$bin/trisim" render "$tmp/$m-c.bin" --engine reference --method clough-tocher -o "$tmp/tstc-ref.png"
+  same "reference render of the compressed $m blob's mesh" "$tmp/tstc-ref.png" "$tmp/tri-ref.png"
+done
+expect 64 "packed for zienkiewicz" "$bin/trisim" render "$tmp/zienkiewicz-c.bin" --method bilinear -o "$tmp/x.png"
+expect 0 "" "$bin/tripack" "$demo/kodim23.grey.tri" --compress -o "$tmp/grey-c.bin"
+for engine in core reference; do
+  expect 0 "" "$bin/trisim" compare "$tmp/grey.bin" --engine $engine --original "$demo/kodim23.png" --json
+  sed 's/"ms":[0-9.e+-]*,//' "$tmp/out" >"$tmp/blob.json"
+  expect 0 "" "$bin/trisim" compare "$tmp/grey-c.bin" --engine $engine --original "$demo/kodim23.png" --json
+  sed 's/"ms":[0-9.e+-]*,//' "$tmp/out" >"$tmp/tstc.json"
+  same "compare of the compressed grey blob = the v1 blob's ($engine)" "$tmp/tstc.json" "$tmp/blob.json"
+done
+expect 0 "" "$bin/trisim" bench "$tmp/grey-c.bin" --runs 2 --json
+grep -q '"pixels":393216' "$tmp/out" && grep -q '"expand_bytes":[1-9]' "$tmp/out" && passes=$((passes + 1)) ||
+  { echo "FAIL: bench of a compressed blob: $(cat "$tmp/out")"; failures=$((failures + 1)); }
+
 # Bad blobs: exit 65, the file and the byte offset open_blob reports.
 poke() {  # poke <file> <offset> <octal byte>
   printf "\\$3" | dd of="$1" bs=1 seek="$2" conv=notrunc status=none
@@ -104,6 +130,28 @@ for cmd in render compare bench; do
   expect 65 "short.bin: byte 8: blob truncated" "$bin/trisim" $cmd "$tmp/short.bin" "${out[@]}"
   expect 65 "magic-only.bin: byte 4: blob truncated" "$bin/trisim" $cmd "$tmp/magic-only.bin" "${out[@]}"
 done
+# Damaged compressed blobs: the header's offset, or the offset where the decoder stood when a
+# check failed: never before the damaged byte (it has to be read first), never past the end.
+cp "$tmp/grey-c.bin" "$tmp/version-c.bin"
+poke "$tmp/version-c.bin" 4 011
+head -c 60 "$tmp/grey-c.bin" >"$tmp/short-c.bin"
+head -c 5000 "$tmp/grey-c.bin" >"$tmp/cut-c.bin"
+for cmd in render compare bench; do
+  out=(-o "$tmp/x.png")
+  [ $cmd = render ] || out=()
+  expect 65 "version-c.bin: byte 4: unsupported blob version" "$bin/trisim" $cmd "$tmp/version-c.bin" "${out[@]}"
+  expect 65 "short-c.bin: byte 60: blob truncated" "$bin/trisim" $cmd "$tmp/short-c.bin" "${out[@]}"
+  expect 65 "cut-c.bin: byte 8: blob truncated" "$bin/trisim" $cmd "$tmp/cut-c.bin" "${out[@]}"
+done
+for at in 100 1000 5000 15000; do
+  cp "$tmp/grey-c.bin" "$tmp/flip-c.bin"
+  poke "$tmp/flip-c.bin" $at 125
+  expect 65 "flip-c.bin: byte " "$bin/trisim" render "$tmp/flip-c.bin" -o "$tmp/x.png"
+  offset=$(sed -n 's/.*flip-c\.bin: byte \([0-9]*\):.*/\1/p' "$tmp/err")
+  check "damage at $at reported at byte $offset, from $at to the end" \
+    test -n "$offset" -a "${offset:-0}" -ge "$at" -a "${offset:-0}" -le "$(wc -c <"$tmp/grey-c.bin")"
+done
+
 # A vertex pushed outside the domain (the first x of the positions, which follow the 64-byte
 # header and the 32-byte layer entry).
 cp "$tmp/bilinear.bin" "$tmp/outside.bin"

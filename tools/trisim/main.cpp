@@ -25,6 +25,7 @@
 #include "io/tri_file.h"
 #include "metrics/metrics.h"
 #include "reference/render.h"
+#include "tristream/compressed_blob.h"
 
 using namespace tristream;
 
@@ -54,8 +55,9 @@ std::vector<std::string> method_names() {
 void add_render_options(CLI::App* cmd, RenderRequest& req) {
   req.command = cmd;
   cmd->add_option("input", req.input,
-                  "Triangulation file (.tri) or blob (tripack -o x.bin; told apart by its first bytes): a blob "
-                  "is rendered by the core with its own method unless --engine reference is given")
+                  "Triangulation file (.tri) or blob (tripack -o x.bin, v1 or --compress; told apart by its first "
+                  "bytes): a blob is rendered by the core with its own method unless --engine reference is given "
+                  "(a compressed blob is first expanded into its v1 blob)")
       ->required();
   cmd->add_option("-m,--method", req.method, "Interpolation method")
       ->check(CLI::IsMember(method_names()))
@@ -110,11 +112,14 @@ void check_engine_options(const RenderRequest& req) {
     throw UsageError("--dither: applies to --format rgb565le and rgb565be only");
 }
 
-// What the input file holds: a .tri, or a blob whose bytes the core renders as they are.
+// What the input file holds: a .tri, or a blob whose bytes the core renders as they are (a
+// compressed blob once expanded into its v1 blob by the core's expand_compressed_blob).
 struct Input {
   Triangulation tri;  // for a blob: its size and colour space, and with the mesh read back (unpack_blob) when needed
-  std::vector<std::uint8_t> blob;  // the file's bytes when it is a blob, else empty
+  std::vector<std::uint8_t> blob;  // the v1 blob's bytes when the file is a blob, else empty
   core::Method blob_method = core::Method::bilinear;
+  bool compressed = false;           // the file is a compressed blob (TSTC) and `blob` its expansion
+  std::size_t expand_workspace = 0;  // compressed: the ring the expansion needed (expand_workspace_size)
   bool is_blob() const { return !blob.empty(); }
 };
 
@@ -128,11 +133,17 @@ Input read_input(const std::string& path, bool need_mesh) {
     in.tri = parse_tri(text, path);
     return in;
   }
-  in.blob.assign(bytes.begin(), bytes.end());
-  const core::Blob blob = open_blob_or_throw(in.blob, path);
+  in.compressed = core::is_compressed_blob(bytes.data(), bytes.size());
+  if (in.compressed)
+    in.blob = expand_compressed_or_throw(bytes, path, &in.expand_workspace);
+  else
+    in.blob.assign(bytes.begin(), bytes.end());
+  // Offsets of the checks below are in the file, or for a compressed blob in its expansion.
+  const std::string name = in.compressed ? path + " (expanded to v1)" : path;
+  const core::Blob blob = open_blob_or_throw(in.blob, name);
   in.blob_method = blob.method;
   if (need_mesh) {
-    in.tri = unpack_blob(blob, path).tri;
+    in.tri = unpack_blob(blob, name).tri;
   } else {
     in.tri.width = blob.width;
     in.tri.height = blob.height;
@@ -530,6 +541,8 @@ int run_bench(BenchCommand& c) {
       j["tile"] = c.req.tile;
       j["format"] = c.req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : c.req.format;
       j["ram_bytes"] = core_renderer->tile_buffer_bytes() + core_renderer->workspace_bytes();
+      // A compressed blob is timed as its v1 expansion, made once before the runs in this RAM.
+      if (in.compressed) j["expand_bytes"] = in.blob.size() + in.expand_workspace;
     }
     std::printf("%s\n", j.dump().c_str());
   } else {
