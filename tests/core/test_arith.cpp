@@ -152,12 +152,16 @@ TEST_CASE("PreinvRoundingDivider equals round_div wherever 0 < 2d < 2^32 and |2n
   REQUIRE(!PreinvRoundingDivider::fits(0));
   for (std::int64_t d : divisors) {
     const PreinvRoundingDivider round(d);
-    // Around 0, the ties, and on both sides of a quotient of 2^32 (x = +-D 2^32, where the divider
-    // changes method), and the ends of the range.
-    const std::int64_t big = 2 * d * (std::int64_t(1) << 32);
-    const std::int64_t specials[] = {0, 1, -1, d, -d, d - 1, -d + 1, d / 2, -d / 2, (big - d) / 2, (big - d) / 2 - 1,
-                                     (big - d) / 2 + 1, (-big - d) / 2, (-big - d) / 2 + 1, (-big - d) / 2 - 1,
-                                     (x_max - d) / 2, (-x_max - d) / 2 + 1};
+    // Around 0, the ties, the ends of the range, and on both sides of a quotient of 2^32 (x = +-D
+    // 2^32, where the divider changes method; inside the range |x| < 2^62 only for D < 2^30).
+    std::vector<std::int64_t> specials = {0, 1, -1, d, -d, d - 1, -d + 1, d / 2, -d / 2, (x_max - d) / 2,
+                                          (-x_max - d) / 2 + 1};
+    if (d < (std::int64_t(1) << 29)) {
+      const std::int64_t big = 2 * d * (std::int64_t(1) << 32);
+      for (std::int64_t n : {(big - d) / 2, (big - d) / 2 - 1, (big - d) / 2 + 1, (-big - d) / 2, (-big - d) / 2 + 1,
+                             (-big - d) / 2 - 1})
+        specials.push_back(n);
+    }
     for (std::int64_t n : specials) {
       INFO("n " << n << " d " << d);
       REQUIRE(round(n) == round_div(n, d));
@@ -172,12 +176,14 @@ TEST_CASE("PreinvRoundingDivider equals round_div wherever 0 < 2d < 2^32 and |2n
       const std::int64_t n = (k * 2 * d - d) / 2;
       if ((k * 2 * d - d) % 2 == 0) REQUIRE(round(n) == round_div(n, d));
     }
-    // The corrections: x = q D + r with r at the ends of [0, D) for quotients across [0, 2^32),
-    // where an estimate one off is caught by the remainder tests (2n + d = x needs x - d even).
+    // The corrections: x = q D + r with r at the ends of [0, D) for quotients across [0, 2^32)
+    // (within |x| < 2^62), where an estimate one off is caught by the remainder tests (2n + d = x
+    // needs x - d even).
+    const std::int64_t q_max = (x_max - 2 * d) / (2 * d);
     for (int i = 0; i < 200; ++i) {
-      const std::int64_t q = std::int64_t(rng() >> (32 + rng() % 32));
+      const std::int64_t q = std::int64_t(rng() >> (32 + rng() % 32)) % (q_max + 1);
       for (std::int64_t r : {std::int64_t(0), std::int64_t(1), 2 * d - 2, 2 * d - 1}) {
-        for (std::int64_t x : {q * 2 * d + r, -(q * 2 * d + r)}) {
+        for (std::int64_t x : {q * (2 * d) + r, -(q * (2 * d) + r)}) {
           if ((x - d) % 2 != 0) continue;
           const std::int64_t n = (x - d) / 2;
           INFO("n " << n << " d " << d);
