@@ -101,10 +101,10 @@ struct StreamModels {
   // top_far, context: how the previous triangle's second and third were coded (6 classes).
   Prob top[6][8];
   IntModel top_far;
-  Prob pick_second[3][8];   // second vertex: a recent candidate (0..5) or new (7); context: first's step
-  Prob pick_third[9][8];    // third vertex likewise; context: second's class (new, 0, other) x step
-  UintModel second[3];      // a new second: index - first - 1, context: previous new second's class
-  UintModel third[3];       // a new third: index - second - 1, context: this triangle's second's class
+  Prob pick_second[3][8];   // second vertex: a recent candidate (0..5) or gap-coded (7); context: first's step
+  Prob pick_third[9][8];    // third vertex likewise; context: second's class (gap-coded, 0, other) x step
+  UintModel second[3];      // a gap-coded second: index - first - 1, context: the previous one's class
+  UintModel third[3];       // a gap-coded third: index - second - 1, context: this triangle's second's class
   Prob lift;                // a corner far ahead is decoded into a pinned slot
   UintModel lift_gap;       // its raster pixel gap to the last vertex of the ring
   Prob rotation[2];
