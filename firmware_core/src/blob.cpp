@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "tristream/blob.h"
 
+#include "blob_header.h"
 #include "tristream/detail/bytes.h"
 #include "tristream/fixed_point.h"
 
@@ -130,35 +131,21 @@ Status open_blob(const void* bytes, size_t size, Blob* out, BlobError* error) {
   Checker c{b, 0, error};
   if (size < blob_header_size) return c.fail(Status::truncated, uint32_t(size));
   if (b[0] != 'T' || b[1] != 'S' || b[2] != 'T' || b[3] != 'B') return c.fail(Status::bad_magic, 0);
-  if (load_u16(b + 4) != blob_version) return c.fail(Status::bad_version, 4);
-  if (load_u16(b + 6) != blob_header_size) return c.fail(Status::bad_header, 6);
-  const uint32_t total = load_u32(b + 8);
-  if (total < blob_header_size || total > size) return c.fail(Status::truncated, 8);
-  c.size = total;
-  if (b[20] != config::subpixel_bits) return c.fail(Status::config_mismatch, 20);
-  if (b[21] != config::gradient_frac_bits) return c.fail(Status::config_mismatch, 21);
-  if (load_u32(b + 24) != blob_config_hash()) return c.fail(Status::config_mismatch, 24);
+  detail::SharedHeader h;
+  uint32_t at = 0;
+  const Status shared = detail::check_shared_header(b, size, blob_version, blob_header_size, &h, &at);
+  if (shared != Status::ok) return c.fail(shared, at);
+  c.size = h.total;
 
   Blob blob;
   blob.bytes = b;
-  blob.size = total;
-  blob.width = load_u16(b + 12);
-  blob.height = load_u16(b + 14);
-  if (blob.width < 2 || blob.width > config::max_dimension) return c.fail(Status::too_large, 12);
-  if (blob.height < 2 || blob.height > config::max_dimension) return c.fail(Status::too_large, 14);
-  if (b[16] > 2) return c.fail(Status::bad_header, 16);
-  blob.space = ColorSpace(b[16]);
-  if (b[17] > 1) return c.fail(Status::bad_header, 17);
-  blob.method = Method(b[17]);
-  blob.layer_count = b[18];
-  blob.values_per_vertex = b[19];
-  const int channels = blob.space == ColorSpace::grey ? 1 : 3;
-  const bool single = blob.layer_count == 1 && blob.values_per_vertex == channels;
-  const bool layered = channels == 3 && blob.layer_count == 3 && blob.values_per_vertex == 1;
-  if (!single) {
-    if (!layered) return c.fail(Status::bad_header, blob.layer_count == 1 || blob.layer_count == 3 ? 19 : 18);
-  }
-  if (load_u16(b + 22) != 0) return c.fail(Status::bad_header, 22);
+  blob.size = h.total;
+  blob.width = h.width;
+  blob.height = h.height;
+  blob.space = h.space;
+  blob.method = h.method;
+  blob.layer_count = h.layer_count;
+  blob.values_per_vertex = h.values_per_vertex;
   for (uint32_t k = 36; k < blob_header_size; ++k)
     if (b[k] != 0) return c.fail(Status::bad_header, k);
   const uint32_t table = load_u32(b + 28);

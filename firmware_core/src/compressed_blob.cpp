@@ -3,6 +3,7 @@
 // (docs/COMPRESSED_BLOB.md is the format; this file is its only reader).
 #include "tristream/compressed_blob.h"
 
+#include "blob_header.h"
 #include "range_decoder.h"
 #include "tristream/detail/bytes.h"
 
@@ -69,37 +70,25 @@ Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out,
   const Fail fail{error};
   if (size < compressed_header_size) return fail(Status::truncated, uint32_t(size));
   if (!is_compressed_blob(b, size)) return fail(Status::bad_magic, 0);
-  if (load_u16(b + 4) != compressed_version) return fail(Status::bad_version, 4);
-  if (load_u16(b + 6) != compressed_header_size) return fail(Status::bad_header, 6);
-  const uint32_t total = load_u32(b + 8);
-  if (total < compressed_header_size || total > size) return fail(Status::truncated, 8);
-  if (b[20] != config::subpixel_bits) return fail(Status::config_mismatch, 20);
-  if (b[21] != config::gradient_frac_bits) return fail(Status::config_mismatch, 21);
-  if (load_u32(b + 24) != blob_config_hash()) return fail(Status::config_mismatch, 24);
+  detail::SharedHeader h;
+  uint32_t at = 0;
+  const Status shared = detail::check_shared_header(b, size, compressed_version, compressed_header_size, &h, &at);
+  if (shared != Status::ok) return fail(shared, at);
   CompressedBlob blob;
   blob.bytes = b;
-  blob.size = total;
-  blob.width = load_u16(b + 12);
-  blob.height = load_u16(b + 14);
-  if (blob.width < 2 || blob.width > config::max_dimension) return fail(Status::too_large, 12);
-  if (blob.height < 2 || blob.height > config::max_dimension) return fail(Status::too_large, 14);
-  if (b[16] > 2) return fail(Status::bad_header, 16);
-  blob.space = ColorSpace(b[16]);
-  if (b[17] > 1) return fail(Status::bad_header, 17);
-  blob.method = Method(b[17]);
-  blob.layer_count = b[18];
-  blob.values_per_vertex = b[19];
-  const int channels = blob.space == ColorSpace::grey ? 1 : 3;
-  const bool single = blob.layer_count == 1 && blob.values_per_vertex == channels;
-  const bool layered = channels == 3 && blob.layer_count == 3 && blob.values_per_vertex == 1;
-  if (!single && !layered) return fail(Status::bad_header, blob.layer_count == 1 || blob.layer_count == 3 ? 19 : 18);
-  if (load_u16(b + 22) != 0) return fail(Status::bad_header, 22);
+  blob.size = h.total;
+  blob.width = h.width;
+  blob.height = h.height;
+  blob.space = h.space;
+  blob.method = h.method;
+  blob.layer_count = h.layer_count;
+  blob.values_per_vertex = h.values_per_vertex;
   if (load_u32(b + 28) != compressed_header_size) return fail(Status::bad_section, 28);
   blob.max_triangle_height = load_u32(b + 32);
   for (uint32_t k = 36; k < compressed_header_size; ++k)
     if (b[k] != 0) return fail(Status::bad_header, k);
   uint32_t next_stream = compressed_header_size + blob.layer_count * compressed_layer_entry_size;
-  if (next_stream > total) return fail(Status::truncated, 28);
+  if (next_stream > h.total) return fail(Status::truncated, 28);
   for (uint32_t l = 0; l < blob.layer_count; ++l) {
     const uint32_t e = compressed_header_size + l * compressed_layer_entry_size;
     CompressedLayer& layer = blob.layers[l];
@@ -115,7 +104,7 @@ Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out,
     if (layer.triangle_count < 1 || layer.triangle_count > blob_max_triangles) return fail(Status::too_large, e + 4);
     // Streams in layer order, each of at least the 4 bytes the decoder starts with.
     if (layer.stream_offset < next_stream || layer.stream_bytes < 4 ||
-        uint64_t(layer.stream_offset) + layer.stream_bytes > total)
+        uint64_t(layer.stream_offset) + layer.stream_bytes > h.total)
       return fail(Status::bad_section, e + 8);
     if (layer.window < 3 || layer.window > layer.vertex_count) return fail(Status::bad_header, e + 16);
     if (layer.pinned > layer.vertex_count) return fail(Status::bad_header, e + 20);
