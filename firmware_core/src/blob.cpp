@@ -31,7 +31,7 @@ const char* status_text(Status s) {
     case Status::tile_buffer_too_small: return "tile buffer too small (see tile_buffer_size)";
     case Status::workspace_too_small: return "workspace too small (see workspace_size)";
     case Status::stopped: return "stopped by the sink";
-    case Status::not_compiled: return "pixel format or method not compiled into this core (config.h)";
+    case Status::not_compiled: return "pixel format, method, colour space or layering not compiled into this core (config.h)";
   }
   return "unknown status";
 }

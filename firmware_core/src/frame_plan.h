@@ -47,7 +47,8 @@ inline Status plan_frame(const Blob& blob, const RenderParams& p, FramePlan* r) 
   if (r->tile_w > r->view.width()) r->tile_w = r->view.width();
   if (r->tile_h > r->view.height()) r->tile_h = r->view.height();
   if (bytes_per_pixel(p.format) == 0) return Status::bad_params;
-  if (!(config::pixel_formats >> int(p.format) & 1) || !(config::methods >> int(blob.method) & 1))
+  if (!(config::pixel_formats >> int(p.format) & 1) || !(config::methods >> int(blob.method) & 1) ||
+      !(config::color_spaces >> int(blob.space) & 1) || (blob.layer_count > 1 && !config::layered))
     return Status::not_compiled;
   r->format = p.format;
   if (p.fit != Fit::stretch && p.fit != Fit::inside && p.fit != Fit::fill) return Status::bad_params;

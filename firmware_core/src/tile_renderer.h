@@ -102,29 +102,41 @@ void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, Ac
   const bool grey = blob.space == ColorSpace::grey;
   fill_background<F>(base, stride, rect, p, grey);
   constexpr int bpp = bytes_per_pixel(F);
+  // Only the colour spaces and layering compiled in (plan_frame rejects the others).
+  constexpr uint32_t spaces = config::color_spaces;
   if (F == PixelFormat::coverage8 || !layered(blob)) {
     if (F == PixelFormat::coverage8 && layered(blob)) {
-      const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
-      for (int l = 0; l < blob.layer_count; ++l) draw_with<1>(blob, l, 0, sets[l], map, rect, w, bpp);
+      if constexpr (config::layered) {
+        const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
+        for (int l = 0; l < blob.layer_count; ++l) draw_with<1>(blob, l, 0, sets[l], map, rect, w, bpp);
+      }
     } else if (grey) {
-      const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
-      draw_with<1>(blob, 0, 0, sets[0], map, rect, w, bpp);
+      if constexpr (spaces & 1) {
+        const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
+        draw_with<1>(blob, 0, 0, sets[0], map, rect, w, bpp);
+      }
     } else if (blob.space == ColorSpace::ycbcr) {
-      const DirectWriter<F, 3, true> w{base, stride, rect, p.dither};
-      draw_with<3>(blob, 0, 0, sets[0], map, rect, w, bpp);
+      if constexpr (spaces & 4) {
+        const DirectWriter<F, 3, true> w{base, stride, rect, p.dither};
+        draw_with<3>(blob, 0, 0, sets[0], map, rect, w, bpp);
+      }
     } else {
-      const DirectWriter<F, 3, false> w{base, stride, rect, p.dither};
-      draw_with<3>(blob, 0, 0, sets[0], map, rect, w, bpp);
+      if constexpr (spaces & 2) {
+        const DirectWriter<F, 3, false> w{base, stride, rect, p.dither};
+        draw_with<3>(blob, 0, 0, sets[0], map, rect, w, bpp);
+      }
     }
     return;
   }
-  const int32_t n = rect.width() * rect.height() * 3;
-  for (int32_t i = 0; i < n; ++i) scratch[i] = scratch_empty;
-  for (int l = 0; l < blob.layer_count; ++l) {
-    const ScratchWriter w{scratch, rect.width(), rect, l};
-    draw_with<1>(blob, l, 0, sets[l], map, rect, w, 3);
+  if constexpr (config::layered) {
+    const int32_t n = rect.width() * rect.height() * 3;
+    for (int32_t i = 0; i < n; ++i) scratch[i] = scratch_empty;
+    for (int l = 0; l < blob.layer_count; ++l) {
+      const ScratchWriter w{scratch, rect.width(), rect, l};
+      draw_with<1>(blob, l, 0, sets[l], map, rect, w, 3);
+    }
+    convert_scratch<F>(scratch, base, stride, rect, p, blob.space == ColorSpace::ycbcr);
   }
-  convert_scratch<F>(scratch, base, stride, rect, p, blob.space == ColorSpace::ycbcr);
 }
 
 using TileRenderer = void (*)(const Blob&, const RenderParams&, const Mapping&, ActiveSet*, const Rect&, uint8_t*,

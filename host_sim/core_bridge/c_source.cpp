@@ -42,11 +42,18 @@ std::string comment_safe(std::string s) {
 
 std::size_t round_up(std::size_t n, std::size_t to) { return (n + to - 1) / to * to; }
 
-// The compile-time refusals: a core of another precision, without the blob's method or without
-// the descriptor's format.
+// The compile-time refusals: a core of another precision, without the blob's method, colour space
+// or layering, or without the descriptor's format.
 std::string guard(const core::Blob& blob, const CBlobSpec& spec) {
   const int method_bit = blob.method == core::Method::zienkiewicz ? 2 : 1;
   const std::string method = blob.method == core::Method::zienkiewicz ? "zienkiewicz" : "bilinear";
+  const std::string space = blob.space == core::ColorSpace::grey  ? "grey"
+                            : blob.space == core::ColorSpace::rgb ? "RGB"
+                                                                  : "YCbCr";
+  const std::string layers =
+      blob.layer_count > 1 ? "#if !TS_LAYERED\n#error \"" + spec.symbol +
+                                 ": the blob has a mesh per channel, which this core leaves out (TS_LAYERED)\"\n#endif\n"
+                           : std::string();
   const std::string format(format_name(spec.format));
   char format_bit[16];
   std::snprintf(format_bit, sizeof format_bit, "0x%02X", 1u << unsigned(spec.format));
@@ -57,7 +64,9 @@ std::string guard(const core::Blob& blob, const CBlobSpec& spec) {
          "#endif\n#if !(TS_METHODS & " + std::to_string(method_bit) + ")\n#error \"" + spec.symbol +
          ": the blob is " + method + ", which this core leaves out (TS_METHODS)\"\n#endif\n"
          "#if !(TS_PIXEL_FORMATS & " + format_bit + ")\n#error \"" + spec.symbol + ": the descriptor is for " +
-         format + ", which this core leaves out (TS_PIXEL_FORMATS)\"\n#endif\n";
+         format + ", which this core leaves out (TS_PIXEL_FORMATS)\"\n#endif\n"
+         "#if !(TS_COLOR_SPACES & " + std::to_string(1 << int(blob.space)) + ")\n#error \"" + spec.symbol +
+         ": the blob is " + space + ", which this core leaves out (TS_COLOR_SPACES)\"\n#endif\n" + layers;
 }
 
 }  // namespace

@@ -3,9 +3,9 @@
 // bit. A mismatch writes <name>.diff.png (changed pixels white on black) to the working
 // directory. The same source runs on x86-64 and, cross-compiled, as a 32-bit ARM binary under
 // qemu-arm (firmware_core/cross/run-golden-qemu.sh). Update: see tests/golden/README.md.
-// Also built against a core with one pixel format and one method (test_core_golden_config):
-// there the cases of that format and method must still match, and every other case must be
-// refused with Status::not_compiled.
+// Also built against a core with one pixel format, one method, one colour space and one mesh per
+// blob (test_core_golden_config): there the cases it has must still match, and every other case
+// must be refused with Status::not_compiled.
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -50,8 +50,12 @@ TEST_CASE("golden renders are unchanged") {
     REQUIRE(!blob.empty());
     golden::Pixels got;
     const bool bilinear = std::string(c.method) == "bilinear";
-    const bool compiled =
-        (core::config::pixel_formats >> int(c.format) & 1) && (core::config::methods >> (bilinear ? 0 : 1) & 1);
+    core::Blob opened;
+    REQUIRE(core::open_blob(blob.data(), blob.size(), &opened) == core::Status::ok);
+    const bool compiled = (core::config::pixel_formats >> int(c.format) & 1) &&
+                          (core::config::methods >> (bilinear ? 0 : 1) & 1) &&
+                          (core::config::color_spaces >> int(opened.space) & 1) &&
+                          (opened.layer_count == 1 || core::config::layered);
     if (!compiled) {
       CHECK(golden::render(c, blob, &got) == core::Status::not_compiled);
       continue;

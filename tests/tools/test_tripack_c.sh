@@ -100,8 +100,15 @@ refuses() {
 refuses "the blob is zienkiewicz, which this core leaves out (TS_METHODS)" -DTS_METHODS=1
 refuses "the descriptor is for rgb565be, which this core leaves out (TS_PIXEL_FORMATS)" -DTS_PIXEL_FORMATS=0x04
 refuses "another tristream core configuration" -DTS_SUBPIXEL_BITS=3
-if "$cc" -std=c99 "${cflags[@]}" -DTS_METHODS=2 -DTS_PIXEL_FORMATS=0x08 -c "$tmp/z.c" -o "$tmp/z.o" 2>"$tmp/err"; then pass
-else fail "z.c does not compile against a core with exactly its method and format: $(cat "$tmp/err")"; fi
+refuses "the blob is RGB, which this core leaves out (TS_COLOR_SPACES)" -DTS_COLOR_SPACES=0x5
+"$tripack" "$src/tests/golden/ycbcr-layers.tri" -o "$tmp/z.c" -m zienkiewicz -f rgb565be >/dev/null || fail "tripack layers"
+refuses "the blob has a mesh per channel, which this core leaves out (TS_LAYERED)" -DTS_LAYERED=0
+refuses "the blob is YCbCr, which this core leaves out (TS_COLOR_SPACES)" -DTS_COLOR_SPACES=0x3
+if "$cc" -std=c99 "${cflags[@]}" -DTS_METHODS=2 -DTS_PIXEL_FORMATS=0x08 -DTS_COLOR_SPACES=0x4 -c "$tmp/z.c" -o "$tmp/z.o" 2>"$tmp/err"; then pass
+else fail "the layered z.c does not compile against a core with exactly its method, format and colour space: $(cat "$tmp/err")"; fi
+"$tripack" "$tri" -o "$tmp/z.c" -m zienkiewicz -f rgb565be >/dev/null || fail "tripack zienkiewicz"
+if "$cc" -std=c99 "${cflags[@]}" -DTS_METHODS=2 -DTS_PIXEL_FORMATS=0x08 -DTS_COLOR_SPACES=0x2 -DTS_LAYERED=0 -c "$tmp/z.c" -o "$tmp/z.o" 2>"$tmp/err"; then pass
+else fail "z.c does not compile against a core with exactly its method, format and colour space: $(cat "$tmp/err")"; fi
 
 # Placement: the bytes in the named section with the asked alignment (objdump: 2**6 = 64).
 if "$cc" -std=c99 "${cflags[@]}" -DTS_BLOB_SECTION='".tsblob"' -DTS_BLOB_ALIGN=64 -c "$tmp/z.c" -o "$tmp/placed.o" 2>"$tmp/err"; then

@@ -47,6 +47,19 @@
 #define TS_METHODS 0x3
 #endif
 
+/* Colour spaces compiled in, one bit per ColorSpace value: bit 0 grey, bit 1 RGB, bit 2 YCbCr;
+   and 1 to compile in blobs of one mesh per channel (three layers, `--color separate`), 0 for
+   blobs of one mesh only. Each colour space and the layered path is its own copy of the
+   rasterizer and shader for each format and method: firmware that shows one kind of picture
+   keeps one copy. A blob of a colour space or layering left out gives Status::not_compiled when
+   rendered. */
+#ifndef TS_COLOR_SPACES
+#define TS_COLOR_SPACES 0x7
+#endif
+#ifndef TS_LAYERED
+#define TS_LAYERED 1
+#endif
+
 /* 1: SSE2 on x86-64 hosts: the covered columns of small triangles four columns at a time, the
    tile cull eight triangles at a time, and the RGB pixels of bilinear spans and of
    forward-differenced zienkiewicz rows with the three channels in vector lanes; 0: column by
@@ -84,11 +97,15 @@ inline constexpr int gradient_frac_bits = TS_GRADIENT_FRAC_BITS;
 inline constexpr int32_t max_gradient = TS_MAX_GRADIENT;
 inline constexpr uint32_t pixel_formats = TS_PIXEL_FORMATS;
 inline constexpr uint32_t methods = TS_METHODS;
+inline constexpr uint32_t color_spaces = TS_COLOR_SPACES;
+inline constexpr bool layered = TS_LAYERED != 0;
 
 static_assert(subpixel_bits >= 0 && subpixel_bits <= 8, "sub-pixel bits out of the supported range");
 static_assert(max_dimension >= 2 && max_dimension <= 4096, "max dimension out of the supported range");
 static_assert(pixel_formats != 0 && pixel_formats <= 0x3F, "TS_PIXEL_FORMATS: bits 0..5, at least one");
 static_assert(methods != 0 && methods <= 0x3, "TS_METHODS: bits 0..1, at least one");
+static_assert(color_spaces != 0 && color_spaces <= 0x7, "TS_COLOR_SPACES: bits 0..2, at least one");
+static_assert(TS_LAYERED == 0 || TS_LAYERED == 1, "TS_LAYERED: 0 or 1");
 static_assert(gradient_frac_bits >= 0 && gradient_frac_bits <= 16, "gradient fraction bits out of range");
 static_assert(int64_t(max_gradient) << gradient_frac_bits < (int64_t(1) << 31), "gradients must fit int32");
 

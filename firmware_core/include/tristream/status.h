@@ -24,7 +24,7 @@ enum class [[nodiscard]] Status : uint8_t {
   unsorted,             // triangles not sorted by their top row
   bad_params,           // render parameters invalid (size, viewport, tile, format)
   tile_buffer_too_small,  // tile buffer smaller than tile_buffer_size() says
-  not_compiled,         // pixel format or method left out of this build (TS_PIXEL_FORMATS, TS_METHODS)
+  not_compiled,         // pixel format, method, colour space or layering left out of this build (config.h)
   workspace_too_small,  // workspace smaller than workspace_size() says (checked before the first tile)
   stopped,              // the sink stopped the frame (FrameSink returned false)
 };
