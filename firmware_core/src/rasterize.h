@@ -86,12 +86,22 @@ bool rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
     }
   }
   if (first > last) return done;
-  SpanStepper spans;
+#if TS_USE_SSE2
+  SpanStepper spans;  // three bounds in lanes
   spans.init(edges, first);
+#else
+  SplitSpanStepper spans;  // two bounds per row in registers
+  spans.init(edges, tv.y, first);
+#endif
   bool started = false;
   for (int32_t y = first; y <= last; ++y, spans.next_row()) {
     int32_t xs = 1, xe = 0;
+#if TS_USE_SSE2
     if (y >= r0 && y <= r1) spans.span(&xs, &xe);
+#else
+    spans.begin_row(y);
+    if (y >= r0 && y <= r1) spans.span(y, &xs, &xe);
+#endif
     for (int k = 0; k < corner_count; ++k) {
       const Corner& c = corners[k];
       if (c.y != y) continue;
