@@ -150,10 +150,15 @@ struct BandStore {
 
   // Moves triangle `from` to slot `to` < from (the slots do not overlap).
   void move(uint32_t from, uint32_t to) {
+    // Copies of constant sizes, which compilers inline (a call per block costs more than its bytes).
     memcpy(positions + 12 * size_t(to), positions + 12 * size_t(from), 12);
-    const size_t vb = 6 * size_t(values_per_vertex);
-    memcpy(values + vb * to, values + vb * from, vb);
-    if (has_gradients) memcpy(gradients + 4 * vb * to, gradients + 4 * vb * from, 4 * vb);
+    if (values_per_vertex == 1) {
+      memcpy(values + 6 * size_t(to), values + 6 * size_t(from), 6);
+      if (has_gradients) memcpy(gradients + 24 * size_t(to), gradients + 24 * size_t(from), 24);
+    } else {
+      memcpy(values + 18 * size_t(to), values + 18 * size_t(from), 18);
+      if (has_gradients) memcpy(gradients + 72 * size_t(to), gradients + 72 * size_t(from), 72);
+    }
     const uint8_t* f = triangles + size_t(blob_triangle_size) * from;
     write_triangle(to, uint16_t(f[6] | (f[7] << 8)));
   }

@@ -94,7 +94,16 @@ Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& para
 
 Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
                       size_t* bytes, BlobError* error) {
-  if (!bytes || !scratch) return Status::null_argument;
+  if (!bytes) return Status::null_argument;
+  CompressedWorkspace figures;
+  const Status s = workspace_size(blob, params, scratch, scratch_bytes, &figures, error);
+  if (s == Status::ok) *bytes = figures.bytes;
+  return s;
+}
+
+Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
+                      CompressedWorkspace* figures, BlobError* error) {
+  if (!figures || !scratch) return Status::null_argument;
   const Blob view = header_view(blob);
   detail::FramePlan r;
   Status s = detail::plan_frame(view, params, &r);
@@ -146,9 +155,11 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
     }
   }
   if (most > detail::band_store_max_triangles) return Status::too_large;
-  *bytes = 8 + detail::scratch_bytes(view, r, r.format) + fixed +
-           size_t(blob.layer_count) *
-               detail::band_store_bytes(most, blob.values_per_vertex, blob.method == Method::zienkiewicz);
+  figures->channel_scratch = detail::scratch_bytes(view, r, r.format);
+  figures->decoders = fixed;
+  figures->live_triangles = most;
+  figures->band_store = detail::band_store_bytes(most, blob.values_per_vertex, blob.method == Method::zienkiewicz);
+  figures->bytes = 8 + figures->channel_scratch + fixed + size_t(blob.layer_count) * figures->band_store;
   return Status::ok;
 }
 

@@ -74,7 +74,8 @@ CoreRenderer::CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions
     st = core::measure_scratch_size(compressed_blob_, params_, &scratch_bytes);
     if (st != core::Status::ok) throw UsageError(std::string("render options: ") + core::status_text(st));
     std::vector<std::uint8_t> scratch(scratch_bytes);
-    st = core::workspace_size(compressed_blob_, params_, scratch.data(), scratch.size(), &work_bytes, &error);
+    st = core::workspace_size(compressed_blob_, params_, scratch.data(), scratch.size(), &stream_workspace_, &error);
+    work_bytes = stream_workspace_.bytes;
     if (st != core::Status::ok && st != core::Status::bad_params && st != core::Status::not_compiled)
       throw data_error(st);
   }

@@ -51,11 +51,14 @@ class CoreRenderer {
   // For a compressed blob: its header fields and no layers.
   const core::Blob& blob() const { return blob_; }
   bool compressed() const { return compressed_; }
+  // For a compressed blob: the terms of its workspace (workspace_size).
+  const core::CompressedWorkspace& stream_workspace() const { return stream_workspace_; }
 
  private:
   core::Blob blob_;
   core::CompressedBlob compressed_blob_;
   bool compressed_ = false;
+  core::CompressedWorkspace stream_workspace_;
   core::RenderParams params_;
   std::vector<std::uint8_t> tile_;
   std::vector<std::uint8_t> workspace_;

@@ -101,6 +101,16 @@ Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& para
 // its status and `error` the decoder's byte offset. C above 21,845 (u16 indices) is too_large.
 Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
                       size_t* bytes, BlobError* error = nullptr);
+// The terms of that workspace (bytes == 8 + channel_scratch + decoders + layers x band_store).
+struct CompressedWorkspace {
+  size_t bytes = 0;
+  size_t channel_scratch = 0;
+  size_t decoders = 0;          // per layer: the decoder object, the held triangle, its ring
+  size_t band_store = 0;        // per layer, for live_triangles
+  uint32_t live_triangles = 0;  // C: the most live triangles of a layer in one band
+};
+Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
+                      CompressedWorkspace* figures, BlobError* error = nullptr);
 // Renders a compressed blob from its streams. The decoders, rings and the channel scratch are
 // checked before the first tile; a band's live triangles only when the band is reached, so with
 // less workspace than workspace_size a frame can stop after some tiles with workspace_too_small,
