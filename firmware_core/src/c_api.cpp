@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "tristream/tristream.h"
 
+#include "tristream/compressed_blob.h"
 #include "tristream/render.h"
 
 namespace core = tristream::core;
 
 static_assert(sizeof(core::Blob) <= sizeof(ts_blob), "ts_blob must hold a core::Blob");
 static_assert(alignof(core::Blob) <= alignof(ts_blob), "ts_blob must be aligned for a core::Blob");
+static_assert(sizeof(core::CompressedBlob) <= sizeof(ts_compressed_blob), "ts_compressed_blob must hold a core::CompressedBlob");
+static_assert(alignof(core::CompressedBlob) <= alignof(ts_compressed_blob),
+              "ts_compressed_blob must be aligned for a core::CompressedBlob");
 
 // Every C status name is the value of its C++ enumerator, and none is missing.
 #define TS_SAME_STATUS(c_name, cxx_name) \
@@ -35,6 +39,7 @@ TS_SAME_STATUS(TS_STOPPED, stopped)
 namespace {
 
 const core::Blob* view(const ts_blob* b) { return reinterpret_cast<const core::Blob*>(b); }
+const core::CompressedBlob* view(const ts_compressed_blob* b) { return reinterpret_cast<const core::CompressedBlob*>(b); }
 
 // The C formats start at 1 (0 is TS_FORMAT_UNSET); coverage counts, a test aid, have none.
 constexpr core::PixelFormat c_formats[] = {core::PixelFormat::l8, core::PixelFormat::rgb888,
@@ -151,6 +156,59 @@ ts_status ts_render_frame(const ts_blob* blob, const ts_params* params, const ts
   b.workspace_bytes = buffers->workspace_size;
   FrameSinkAdapter adapter{sink, context};
   return ts_status(core::render(*view(blob), p, b, forward_frame, &adapter));
+}
+
+ts_status ts_open_compressed(const void* bytes, size_t size, ts_compressed_blob* blob, uint32_t* error_offset) {
+  if (!blob) return ts_status(core::Status::null_argument);
+  core::BlobError error;
+  core::CompressedBlob* out = reinterpret_cast<core::CompressedBlob*>(blob);
+  *out = core::CompressedBlob{};
+  const core::Status s = core::open_compressed_blob(bytes, size, out, &error);
+  if (error_offset) *error_offset = error.offset;
+  return ts_status(s);
+}
+
+ts_status ts_compressed_tile_buffer_size(const ts_compressed_blob* blob, const ts_params* params, size_t* bytes) {
+  core::RenderParams p;
+  if (!blob) return ts_status(core::Status::null_argument);
+  if (!convert(params, &p)) return ts_status(core::Status::bad_params);
+  return ts_status(core::tile_buffer_size(*view(blob), p, bytes));
+}
+
+ts_status ts_compressed_scratch_size(const ts_compressed_blob* blob, const ts_params* params, size_t* bytes) {
+  core::RenderParams p;
+  if (!blob) return ts_status(core::Status::null_argument);
+  if (!convert(params, &p)) return ts_status(core::Status::bad_params);
+  return ts_status(core::measure_scratch_size(*view(blob), p, bytes));
+}
+
+ts_status ts_compressed_workspace_size(const ts_compressed_blob* blob, const ts_params* params, void* scratch,
+                                       size_t scratch_size, size_t* bytes, uint32_t* error_offset) {
+  core::RenderParams p;
+  if (!blob) return ts_status(core::Status::null_argument);
+  if (!convert(params, &p)) return ts_status(core::Status::bad_params);
+  core::BlobError error;
+  const core::Status s = core::workspace_size(*view(blob), p, scratch, scratch_size, bytes, &error);
+  if (error_offset) *error_offset = error.offset;
+  return ts_status(s);
+}
+
+ts_status ts_render_compressed(const ts_compressed_blob* blob, const ts_params* params, const ts_buffers* buffers,
+                               ts_frame_sink sink, void* context, uint32_t* error_offset) {
+  core::RenderParams p;
+  if (!blob || !buffers || !sink) return ts_status(core::Status::null_argument);
+  if (!convert(params, &p)) return ts_status(core::Status::bad_params);
+  core::RenderBuffers b;
+  b.tile[0] = buffers->tile[0];
+  b.tile[1] = buffers->tile[1];
+  b.tile_bytes = buffers->tile_size;
+  b.workspace = buffers->workspace;
+  b.workspace_bytes = buffers->workspace_size;
+  FrameSinkAdapter adapter{sink, context};
+  core::BlobError error;
+  const core::Status s = core::render(*view(blob), p, b, forward_frame, &adapter, &error);
+  if (error_offset) *error_offset = error.offset;
+  return ts_status(s);
 }
 
 const char* ts_status_text(ts_status status) { return core::status_text(core::Status(status)); }

@@ -34,9 +34,24 @@ void collect(void* context, const core::Tile* tile) {
 
 CoreRenderer::CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions& o, std::string_view name) {
   core::BlobError error;
-  const core::Status s = core::open_blob(blob.data(), blob.size(), &blob_, &error);
-  if (s != core::Status::ok)
-    throw DataError(std::string(name) + ": byte " + std::to_string(error.offset) + ": " + core::status_text(s));
+  compressed_ = core::is_compressed_blob(blob.data(), blob.size());
+  const core::Status s = compressed_ ? core::open_compressed_blob(blob.data(), blob.size(), &compressed_blob_, &error)
+                                     : core::open_blob(blob.data(), blob.size(), &blob_, &error);
+  auto data_error = [&](core::Status st) {
+    return DataError(std::string(name) + ": byte " + std::to_string(error.offset) + ": " + core::status_text(st));
+  };
+  if (s != core::Status::ok) throw data_error(s);
+  if (compressed_) {
+    const core::CompressedBlob& c = compressed_blob_;
+    blob_.bytes = c.bytes;
+    blob_.size = c.size;
+    blob_.width = c.width;
+    blob_.height = c.height;
+    blob_.space = c.space;
+    blob_.method = c.method;
+    blob_.layer_count = c.layer_count;
+    blob_.values_per_vertex = c.values_per_vertex;
+  }
   auto dimension = [](int v, const char* what) {
     if (v < 0 || v > core::config::max_dimension)
       throw UsageError(std::string(what) + " must be 0 to " + std::to_string(core::config::max_dimension));
@@ -53,7 +68,17 @@ CoreRenderer::CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions
   for (auto& c : params_.background) c = o.background;
   std::size_t tile_bytes = 0, work_bytes = 0;
   core::Status st = core::tile_buffer_size(blob_, params_, &tile_bytes);
-  if (st == core::Status::ok) st = core::workspace_size(blob_, params_, &work_bytes);
+  if (st == core::Status::ok && !compressed_) st = core::workspace_size(blob_, params_, &work_bytes);
+  if (st == core::Status::ok && compressed_) {
+    std::size_t scratch_bytes = 0;
+    st = core::measure_scratch_size(compressed_blob_, params_, &scratch_bytes);
+    if (st != core::Status::ok) throw UsageError(std::string("render options: ") + core::status_text(st));
+    std::vector<std::uint8_t> scratch(scratch_bytes);
+    st = core::workspace_size(compressed_blob_, params_, scratch.data(), scratch.size(), &stream_workspace_, &error);
+    work_bytes = stream_workspace_.bytes;
+    if (st != core::Status::ok && st != core::Status::bad_params && st != core::Status::not_compiled)
+      throw data_error(st);
+  }
   if (st != core::Status::ok) throw UsageError(std::string("render options: ") + core::status_text(st));
   tile_.assign(tile_bytes, 0);
   workspace_.assign(work_bytes, 0);
@@ -71,8 +96,11 @@ void CoreRenderer::render(CoreFrame& frame) {
   frame.bytes.resize(std::size_t(frame.width) * frame.height * bpp);
   frame.tiles = 0;
   Assembly a{&frame, view, bpp};
-  const core::Status s = core::render(blob_, params_, tile_.data(), tile_.size(), workspace_.data(),
-                                      workspace_.size(), collect, &a);
+  const core::Status s =
+      compressed_ ? core::render(compressed_blob_, params_, tile_.data(), tile_.size(), workspace_.data(),
+                                 workspace_.size(), collect, &a)
+                  : core::render(blob_, params_, tile_.data(), tile_.size(), workspace_.data(), workspace_.size(),
+                                 collect, &a);
   if (s != core::Status::ok) throw DataError(std::string("core render failed: ") + core::status_text(s));
 }
 

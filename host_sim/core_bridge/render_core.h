@@ -9,6 +9,7 @@
 
 #include "model/image.h"
 #include "model/triangulation.h"
+#include "tristream/compressed_blob.h"
 #include "tristream/render.h"
 
 namespace tristream {
@@ -40,15 +41,24 @@ class CoreRenderer {
   // Opens (validates) the blob, which must outlive the renderer (it is read in place), and
   // sizes tile buffer and workspace. Throws DataError
   // ("<name>: byte N: <status>") for an invalid blob and UsageError for invalid options.
+  // A compressed blob (TSTC) is rendered from its streams band by band (render.h); its
+  // workspace_size decodes every stream once here, so a damaged one is refused here.
   CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions& options, std::string_view name = "blob");
   // Renders one frame into `frame` (resized on first use).
   void render(CoreFrame& frame);
   std::size_t tile_buffer_bytes() const { return tile_.size(); }
   std::size_t workspace_bytes() const { return workspace_.size(); }
+  // For a compressed blob: its header fields and no layers.
   const core::Blob& blob() const { return blob_; }
+  bool compressed() const { return compressed_; }
+  // For a compressed blob: the terms of its workspace (workspace_size).
+  const core::CompressedWorkspace& stream_workspace() const { return stream_workspace_; }
 
  private:
   core::Blob blob_;
+  core::CompressedBlob compressed_blob_;
+  bool compressed_ = false;
+  core::CompressedWorkspace stream_workspace_;
   core::RenderParams params_;
   std::vector<std::uint8_t> tile_;
   std::vector<std::uint8_t> workspace_;

@@ -24,6 +24,7 @@
 #include "bench_protocol.h"
 #include "common/errors.h"
 #include "common/tool_main.h"
+#include "core_bridge/compress.h"
 #include "core_bridge/core_stack.h"
 #include "core_bridge/pack.h"
 #include "io/atomic_file.h"
@@ -192,6 +193,7 @@ double round2(double v) { return std::round(v * 100) / 100; }
 struct Row {
   std::string mesh, output, tiling, method, opt;
   bool dither;
+  bool compressed;
   double cycles_per_pixel;
   std::uint32_t stack;
 };
@@ -209,7 +211,7 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
                   const std::string& method, const std::string& opt, bool dither) -> const Row* {
     for (const Row& r : rows)
       if (r.mesh == mesh && r.output == out && r.tiling == tiling && r.method == method && r.opt == opt &&
-          r.dither == dither)
+          r.dither == dither && !r.compressed)
         return &r;
     return nullptr;
   };
@@ -233,7 +235,7 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
         if (!b2 && !z2 && !bs && !zs) continue;
         std::uint32_t s2 = 0, ss = 0;  // the largest stack of the row, per optimisation level
         for (const Row& r : rows)
-          if (r.mesh == mesh && r.output == out && r.tiling == t.name) {
+          if (r.mesh == mesh && r.output == out && r.tiling == t.name && !r.compressed) {
             std::uint32_t& s = r.opt == "O2" ? s2 : ss;
             s = std::max(s, r.stack);
           }
@@ -243,11 +245,26 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
                     cell(zs).c_str(), ratio(z2, b2).c_str(), ratio(bs, b2).c_str(), ratio(zs, z2).c_str(),
                     ratio(b2d, b2).c_str(), ratio(z2d, z2).c_str(), bytes(s2).c_str(), bytes(ss).c_str());
       }
+  // The compressed blobs against the v1 blobs of the same meshes (rendered from the streams).
+  bool any = false;
+  for (const Row& r : rows) any |= r.compressed;
+  if (!any) return;
+  std::printf("\nCompressed blob rendered from its streams against its v1 blob, cycles per pixel (ratio)\n");
+  std::printf("%-9s %-8s %-8s %-12s %-3s %-6s | %8s %10s %6s | %s\n", "mesh", "output", "tiling", "method", "opt",
+              "dither", "v1", "compressed", "ratio", "stack v1 compressed");
+  for (const Row& c : rows) {
+    if (!c.compressed) continue;
+    const Row* v = find(c.mesh, c.output, c.tiling, c.method, c.opt, c.dither);
+    std::printf("%-9s %-8s %-8s %-12s %-3s %-6s | %8s %10s %6s | %u %u\n", c.mesh.c_str(), c.output.c_str(),
+                c.tiling.c_str(), c.method.c_str(), c.opt.c_str(), c.dither ? "on" : "off", cell(v).c_str(),
+                cell(&c).c_str(), ratio(&c, v).c_str(), v ? unsigned(v->stack) : 0u, unsigned(c.stack));
+  }
 }
 
 int run(const std::string& elf_dir, const std::vector<std::string>& meshes, const std::vector<std::string>& methods,
         const std::vector<std::string>& opts, const std::vector<std::string>& dithers,
-        const std::vector<std::string>& outputs, const std::vector<std::string>& tiling_names, bool check_counts,
+        const std::vector<std::string>& outputs, const std::vector<std::string>& tiling_names,
+        const std::vector<std::string>& blob_kinds, bool check_counts,
         bool check_stack, int profile, const std::string& address_profile) {
   std::string address_lines;  // --profile-addresses: "configuration address cycles" per block
   std::vector<Tiling> tilings;
@@ -259,6 +276,8 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
     if (o != "O2" && o != "Os") throw UsageError("unknown optimisation '" + o + "' (expected O2 or Os)");
   for (const std::string& d : dithers)
     if (d != "off" && d != "on") throw UsageError("dither '" + d + "': expected off or on");
+  for (const std::string& k : blob_kinds)
+    if (k != "v1" && k != "compressed") throw UsageError("blob '" + k + "': expected v1 or compressed");
   std::map<std::string, Program> programs;
   auto program = [&](const std::string& opt, const std::string& method) -> Program& {
     const std::string key = opt + "_" + method;
@@ -279,21 +298,28 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
   for (const std::string& mesh_name : meshes) {
     const Triangulation tri = make_mesh(mesh_name);
     for (const std::string& method : methods) {
-      const std::vector<std::uint8_t> blob = pack_blob(tri, parse_core_method(method), mesh_name);
-      if (blob.size() > rom_size) throw DataError(mesh_name + ": blob larger than the emulated flash for blobs");
+      const std::vector<std::uint8_t> v1_blob = pack_blob(tri, parse_core_method(method), mesh_name);
+      if (v1_blob.size() > rom_size) throw DataError(mesh_name + ": blob larger than the emulated flash for blobs");
+      const std::vector<std::uint8_t>& blob = v1_blob;
       core::Blob opened;
       if (core::open_blob(blob.data(), blob.size(), &opened) != core::Status::ok)
         throw DataError(mesh_name + ": the host core rejects the packed blob");
       std::uint64_t triangles = 0;
       for (int l = 0; l < opened.layer_count; ++l) triangles += opened.layers[l].triangle_count;
+      // The same mesh compressed by the host compressor: its pixels are checked against the v1
+      // blob's host render (they must be bit-identical).
+      const std::vector<std::uint8_t> compressed_blob = compress_blob(v1_blob, mesh_name);
+      for (const std::string& kind : blob_kinds)
       for (std::size_t oi = 0; oi < sizes.size(); ++oi)
         for (const Tiling& t : tilings)
           for (const std::string& opt : opts)
             for (const std::string& d : dithers) {
+              const bool is_compressed = kind == "compressed";
+              const std::vector<std::uint8_t>& run_blob = is_compressed ? compressed_blob : v1_blob;
               Program& prog = program(opt, method);
               bench_params p{};
               p.blob_address = rom_base;
-              p.blob_size = std::uint32_t(blob.size());
+              p.blob_size = std::uint32_t(run_blob.size());
               p.output_width = std::uint16_t(sizes[oi].w);
               p.output_height = std::uint16_t(sizes[oi].h);
               p.tile_width = std::uint16_t(t.w);
@@ -304,6 +330,8 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
               const std::string out_name = std::to_string(ow) + "x" + std::to_string(oh);
               json j;
               j["mesh"] = mesh_name;
+              j["blob"] = kind;
+              j["blob_bytes"] = run_blob.size();
               j["triangles"] = triangles;
               j["domain"] = std::to_string(opened.width) + "x" + std::to_string(opened.height);
               j["output"] = out_name;
@@ -313,7 +341,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
               j["opt"] = opt;
               j["format"] = "rgb565be";
               j["dither"] = p.dither != 0;
-              const Outcome o = run_on(*prog.emu, prog.elf, blob, p);
+              const Outcome o = run_on(*prog.emu, prog.elf, run_blob, p);
               if (!o.ran) {
                 j["skipped"] = o.skipped;
                 std::printf("%s\n", j.dump().c_str());
@@ -349,12 +377,13 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
               j["pixels_equal_host"] = m4 == host;
               all_equal &= m4 == host;
               if (check_stack) {
-                const bool within = o.stack_bytes <= core_stack_bytes(opened.method);
+                const bool within = o.stack_bytes <= (is_compressed ? core_compressed_stack_bytes(opened.method)
+                                                                    : core_stack_bytes(opened.method));
                 j["stack_within_core_stack_bytes"] = within;
                 stacks_within &= within;
               }
               if (check_counts) {
-                const Outcome slow = run_on(*prog.checker, prog.elf, blob, p);
+                const Outcome slow = run_on(*prog.checker, prog.elf, run_blob, p);
                 const Counts& s = slow.counts.counted;
                 const bool same = s.instructions == c.instructions && s.cycles == c.cycles &&
                                   slow.counts.excluded.instructions == o.counts.excluded.instructions &&
@@ -374,8 +403,8 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
                 j["profile_percent"] = top;
               }
               if (!address_profile.empty()) {
-                const std::string name = mesh_name + " " + out_name + " " + t.name + " " + method + " " + opt +
-                                         (p.dither ? " dither" : " plain");
+                const std::string name = mesh_name + (is_compressed ? " compressed " : " ") + out_name + " " + t.name +
+                                         " " + method + " " + opt + (p.dither ? " dither" : " plain");
                 const std::vector<std::uint64_t>& b = o.counts.block_runs;
                 char line[96];
                 for (std::size_t i = 0; i < b.size(); ++i) {
@@ -390,8 +419,8 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
               }
               std::printf("%s\n", j.dump().c_str());
               std::fflush(stdout);
-              rows.push_back({mesh_name, out_name, t.name, method, opt, p.dither != 0, per(c.cycles, pixels),
-                              o.stack_bytes});
+              rows.push_back({mesh_name, out_name, t.name, method, opt, p.dither != 0, is_compressed,
+                              per(c.cycles, pixels), o.stack_bytes});
             }
     }
   }
@@ -400,11 +429,14 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
     if (std::find(out_names.begin(), out_names.end(), r.output) == out_names.end()) out_names.push_back(r.output);
   print_summary(rows, meshes, out_names, tilings);
   for (const std::string& method : methods) {
-    std::uint32_t most = 0;
+    std::uint32_t most = 0, most_compressed = 0;
     for (const Row& r : rows)
-      if (r.method == method) most = std::max(most, r.stack);
+      if (r.method == method) (r.compressed ? most_compressed : most) = std::max(r.compressed ? most_compressed : most, r.stack);
     std::printf("largest stack high-water mark, %s: %u bytes (core_stack_bytes: %zu)\n", method.c_str(), most,
                 core_stack_bytes(parse_core_method(method)));
+    if (most_compressed)
+      std::printf("largest stack high-water mark, %s, compressed: %u bytes (core_compressed_stack_bytes: %zu)\n",
+                  method.c_str(), most_compressed, core_compressed_stack_bytes(parse_core_method(method)));
   }
   if (!all_equal) std::fprintf(stderr, "bench_mcu: the emulated M4 differs from the host (pixels or counts)\n");
   if (!stacks_within)
@@ -459,7 +491,7 @@ int main(int argc, char** argv) {
   std::string elf_dir;
   std::vector<std::string> meshes = mesh_names(), methods = {"bilinear", "zienkiewicz"}, opts = {"O2", "Os"},
                            dithers = {"off", "on"}, outputs = {"native", "320x240"},
-                           tilings = {"tiles32", "bands16", "frame"};
+                           tilings = {"tiles32", "bands16", "frame"}, blob_kinds = {"v1", "compressed"};
   bool check_counts = false, check_stack = false;
   int profile = 0;
   std::string address_profile;
@@ -470,6 +502,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--dither", dithers, "off, on")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--outputs", outputs, "native or WxH")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--tilings", tilings, "tiles32, bands16, frame (the frame where it fits the RAM)")
+      ->delimiter(',')
+      ->capture_default_str();
+  run_cmd->add_option("--blobs", blob_kinds,
+                      "v1, compressed (the same mesh compressed by the host, rendered from its streams)")
       ->delimiter(',')
       ->capture_default_str();
   run_cmd->add_flag("--check-counts", check_counts,
@@ -484,6 +520,7 @@ int main(int argc, char** argv) {
   cal_cmd->add_option("elf", cal_elf, "calibrate.elf")->required();
   return run_tool("bench_mcu", app, argc, argv, [&]() -> int {
     if (*cal_cmd) return calibrate(cal_elf);
-    return run(elf_dir, meshes, methods, opts, dithers, outputs, tilings, check_counts, check_stack, profile, address_profile);
+    return run(elf_dir, meshes, methods, opts, dithers, outputs, tilings, blob_kinds, check_counts, check_stack, profile,
+               address_profile);
   });
 }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "common/errors.h"
@@ -103,6 +104,9 @@ int main(int argc, char** argv) {
         throw std::logic_error("compressed blob refused at byte " + std::to_string(error.offset) + ": " +
                                core::status_text(s));
     }
+    // The compressed blob rendered from its streams, at the same options.
+    std::optional<CoreRenderer> stream;
+    if (req.compress) stream.emplace(compressed, o, req.input);
     const std::string symbol = req.symbol.empty() ? blob_symbol_of(req.output) : req.symbol;
     if (req.compress && ext == ".bin") {
       write_file_atomically(req.output,
@@ -132,6 +136,7 @@ int main(int argc, char** argv) {
     // The stack is the Cortex-M4 figure make bench-mcu measured (core_bridge/core_stack.h).
     const std::size_t stack = core_stack_bytes(sizes.blob().method);
     const std::size_t ram = sizes.tile_buffer_bytes() + sizes.workspace_bytes() + stack;
+    const std::size_t stream_stack = core_compressed_stack_bytes(sizes.blob().method);
     const int out_w = req.width ? req.width : sizes.blob().width, out_h = req.height ? req.height : sizes.blob().height;
     const BufferBounds bound = buffer_upper_bounds(sizes.blob(), o.format, out_w, out_h, o.tile_width, o.tile_height);
     if (req.json) {
@@ -156,6 +161,15 @@ int main(int argc, char** argv) {
         j["expanded_bytes"] = core::expanded_blob_size(cblob);
         j["decoder_ring_bytes"] = core::expand_workspace_size(cblob);
         j["decoder_state_bytes"] = sizeof(core::LayerDecoder);
+        const core::CompressedWorkspace& f = stream->stream_workspace();
+        j["stream_render"] = {{"tile_buffer_bytes", stream->tile_buffer_bytes()},
+                              {"workspace_bytes", f.bytes},
+                              {"decoders_bytes", f.decoders},
+                              {"band_store_bytes", f.band_store},
+                              {"live_triangles", f.live_triangles},
+                              {"channel_scratch_bytes", f.channel_scratch},
+                              {"stack_bytes", stream_stack},
+                              {"ram_bytes", stream->tile_buffer_bytes() + f.bytes + stream_stack}};
         j["vertices"] = stats.vertices;
         j["triangles"] = stats.triangles;
         j["bits_per_vertex"] = {{"positions", stats.position_bits / n},
@@ -181,8 +195,16 @@ int main(int argc, char** argv) {
                     static_cast<unsigned long long>(stats.vertices), static_cast<unsigned long long>(stats.triangles),
                     stats.position_bits / n, stats.value_bits / n, stats.gradient_bits / n,
                     stats.connectivity_bits / n, stats.flag_bits / n, 8.0 * double(compressed.size()) / n);
-        std::printf("decoder RAM: ring %zu + state %zu bytes; expanded v1 blob %zu bytes (rendered as below)\n",
+        std::printf("decoder RAM: ring %zu + state %zu bytes; expanded v1 blob %zu bytes\n",
                     core::expand_workspace_size(cblob), sizeof(core::LayerDecoder), core::expanded_blob_size(cblob));
+        const core::CompressedWorkspace& f = stream->stream_workspace();
+        std::printf("RAM rendered from the stream for %s, %s: tile buffer %zu + workspace %zu (8 + channel scratch %zu "
+                    "+ decoders and rings %zu + %d x band store %zu for %u live triangles) + stack %zu (Cortex-M4) "
+                    "= %zu bytes\n",
+                    req.format.c_str(), tiles.c_str(), stream->tile_buffer_bytes(), f.bytes, f.channel_scratch,
+                    f.decoders, int(cblob.layer_count), f.band_store, unsigned(f.live_triangles), stream_stack,
+                    stream->tile_buffer_bytes() + f.bytes + stream_stack);
+        std::printf("RAM of its v1 blob (read in place from flash, %zu bytes):\n", blob.size());
       } else {
         std::printf("%s: blob %zu bytes (%s)\n", req.output.c_str(), blob.size(), req.method.c_str());
       }

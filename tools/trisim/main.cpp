@@ -57,7 +57,7 @@ void add_render_options(CLI::App* cmd, RenderRequest& req) {
   cmd->add_option("input", req.input,
                   "Triangulation file (.tri) or blob (tripack -o x.bin, v1 or --compress; told apart by its first "
                   "bytes): a blob is rendered by the core with its own method unless --engine reference is given "
-                  "(a compressed blob is first expanded into its v1 blob)")
+                  "(a compressed blob is rendered from its streams)")
       ->required();
   cmd->add_option("-m,--method", req.method, "Interpolation method")
       ->check(CLI::IsMember(method_names()))
@@ -113,13 +113,15 @@ void check_engine_options(const RenderRequest& req) {
 }
 
 // What the input file holds: a .tri, or a blob whose bytes the core renders as they are (a
-// compressed blob once expanded into its v1 blob by the core's expand_compressed_blob).
+// compressed blob from its streams, band by band; its v1 expansion, made by the core's
+// expand_compressed_blob, serves the mesh, the checks and bench's side-by-side v1 timing).
 struct Input {
   Triangulation tri;  // for a blob: its size and colour space, and with the mesh read back (unpack_blob) when needed
   std::vector<std::uint8_t> blob;  // the v1 blob's bytes when the file is a blob, else empty
   core::Method blob_method = core::Method::bilinear;
   bool compressed = false;           // the file is a compressed blob (TSTC) and `blob` its expansion
   std::size_t expand_workspace = 0;  // compressed: the ring the expansion needed (expand_workspace_size)
+  std::vector<std::uint8_t> compressed_bytes;  // compressed: the file's bytes, which the core renders
   bool is_blob() const { return !blob.empty(); }
 };
 
@@ -134,8 +136,10 @@ Input read_input(const std::string& path, bool need_mesh) {
     return in;
   }
   in.compressed = core::is_compressed_blob(bytes.data(), bytes.size());
-  if (in.compressed)
+  if (in.compressed) {
     in.blob = expand_compressed_or_throw(bytes, path, &in.expand_workspace);
+    in.compressed_bytes.assign(bytes.begin(), bytes.end());
+  }
   else
     in.blob.assign(bytes.begin(), bytes.end());
   // Offsets of the checks below are in the file, or for a compressed blob in its expansion.
@@ -191,7 +195,7 @@ CoreOptions core_options(const Triangulation& tri, const RenderRequest& req) {
 // The core's frame of the input: a blob's own bytes, a .tri packed for the method.
 CoreFrame core_frame(const Input& in, const RenderRequest& req) {
   if (!in.is_blob()) return render_core_frame(in.tri, req.method, core_options(in.tri, req), req.input);
-  CoreRenderer renderer(in.blob, core_options(in.tri, req), req.input);
+  CoreRenderer renderer(in.compressed ? in.compressed_bytes : in.blob, core_options(in.tri, req), req.input);
   CoreFrame frame;
   renderer.render(frame);
   return frame;
@@ -510,9 +514,24 @@ int run_bench(BenchCommand& c) {
   std::optional<CoreRenderer> core_renderer;
   CoreFrame frame;
   std::vector<std::uint8_t> blob;  // read in place by the core: outlives core_renderer
+  std::optional<Timings> v1;       // a compressed blob: the same frames from its v1 expansion
+  std::size_t v1_ram = 0;
   if (c.req.engine == "core") {
-    blob = in.is_blob() ? in.blob : pack_blob(tri, parse_core_method(c.req.method), c.req.input);
+    blob = in.compressed ? in.compressed_bytes
+           : in.is_blob() ? in.blob
+                          : pack_blob(tri, parse_core_method(c.req.method), c.req.input);
     core_renderer.emplace(blob, core_options(tri, c.req), c.req.input);
+    if (in.compressed) {
+      CoreRenderer expanded(in.blob, core_options(tri, c.req), c.req.input);
+      CoreFrame v1_frame;
+      v1 = time_frames(
+          [&] {
+            expanded.render(v1_frame);
+            return v1_frame.width * v1_frame.height;
+          },
+          c.runs);
+      v1_ram = expanded.tile_buffer_bytes() + expanded.workspace_bytes();
+    }
     once = [&] {
       core_renderer->render(frame);  // tiles delivered through the sink into a frame
       return frame.width * frame.height;
@@ -541,13 +560,24 @@ int run_bench(BenchCommand& c) {
       j["tile"] = c.req.tile;
       j["format"] = c.req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : c.req.format;
       j["ram_bytes"] = core_renderer->tile_buffer_bytes() + core_renderer->workspace_bytes();
-      // A compressed blob is timed as its v1 expansion, made once before the runs in this RAM.
-      if (in.compressed) j["expand_bytes"] = in.blob.size() + in.expand_workspace;
+      // A compressed blob renders from its streams; its v1 expansion's frames are timed beside.
+      if (v1) {
+        j["v1_ms_median"] = median_of(v1->ms);
+        j["v1_cpu_ms_median"] = median_of(v1->cpu_ms);
+        j["v1_ram_bytes"] = v1_ram;
+        j["v1_blob_bytes"] = in.blob.size();
+        j["cpu_ratio_to_v1"] = cpu_median / median_of(v1->cpu_ms);
+      }
     }
     std::printf("%s\n", j.dump().c_str());
   } else {
     std::printf("%s %s: median %.3f ms per frame over %zu runs (CPU %.3f ms, fastest %.3f ms), %.1f Mpixel/s\n",
                 c.req.method.c_str(), c.req.engine.c_str(), median, t.ms.size(), cpu_median, fastest, mpix);
+    if (v1)
+      std::printf("from the stream: RAM %zu bytes; its v1 blob: median %.3f ms (CPU %.3f ms), RAM %zu bytes + blob %zu "
+                  "bytes; CPU ratio %.3f\n",
+                  core_renderer->tile_buffer_bytes() + core_renderer->workspace_bytes(), median_of(v1->ms),
+                  median_of(v1->cpu_ms), v1_ram, in.blob.size(), cpu_median / median_of(v1->cpu_ms));
   }
   return exit_ok;
 }

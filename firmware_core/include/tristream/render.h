@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "tristream/blob.h"
+#include "tristream/compressed_blob.h"
 #include "tristream/pixel_format.h"
 #include "tristream/status.h"
 #include "tristream/tile.h"
@@ -79,5 +80,45 @@ Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, s
 // The same with one or two tile buffers and a sink that may stop the frame early.
 Status render(const Blob& blob, const RenderParams& params, const RenderBuffers& buffers, FrameSink sink,
               void* context);
+
+// A compressed blob ("TSTC", compressed_blob.h) rendered from its streams band by band, in the
+// same band and tile order as a v1 blob and with bit-identical pixels: per layer a LayerDecoder
+// and its ring, and the band's live triangles (those of the stream whose rows meet the band)
+// copied into a small v1-shaped layer, all in the workspace (docs/COMPRESSED_BLOB.md, "RAM of the
+// decoder"). Its workspace is
+//   8 + scratch + sum over layers (align8(decoder) + align8(ring))
+//     + layers x band store(C), band store(C) = 12 C + align4(6 v C) + 24 v C (zienkiewicz) + 8 C
+//     + 4 ceil(C / 32)
+// (v values per vertex; the channel scratch as for a v1 blob), with C the most live triangles of a
+// layer in one band, which only a decode of the streams finds: workspace_size decodes them once
+// with `scratch` (measure_scratch_size bytes) to measure C and checks every stream to its end.
+Status tile_buffer_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes);
+// Bytes of scratch workspace_size(CompressedBlob) needs: 8 + align8(decoder) + align8(largest
+// ring) + 4 (bands + 1).
+Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes);
+// Bytes of workspace `render` needs for this blob and these parameters (exact for an 8-aligned
+// workspace: one byte less is workspace_too_small). Decodes every stream: a damaged one returns
+// its status and `error` the decoder's byte offset. C above 21,845 (u16 indices) is too_large.
+Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
+                      size_t* bytes, BlobError* error = nullptr);
+// The terms of that workspace (bytes == 8 + channel_scratch + decoders + layers x band_store).
+struct CompressedWorkspace {
+  size_t bytes = 0;
+  size_t channel_scratch = 0;
+  size_t decoders = 0;          // per layer: the decoder object, the held triangle, its ring
+  size_t band_store = 0;        // per layer, for live_triangles
+  uint32_t live_triangles = 0;  // C: the most live triangles of a layer in one band
+};
+Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
+                      CompressedWorkspace* figures, BlobError* error = nullptr);
+// Renders a compressed blob from its streams. The decoders, rings and the channel scratch are
+// checked before the first tile; a band's live triangles only when the band is reached, so with
+// less workspace than workspace_size a frame can stop after some tiles with workspace_too_small,
+// and a stream damaged past the first band stops it with the decoder's status (and `error` its
+// offset). A blob workspace_size accepted, given that many bytes, renders whole. Never allocates.
+Status render(const CompressedBlob& blob, const RenderParams& params, const RenderBuffers& buffers, FrameSink sink,
+              void* context, BlobError* error = nullptr);
+Status render(const CompressedBlob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,
+              void* workspace, size_t workspace_bytes, TileSink sink, void* context);
 
 }  // namespace tristream::core

@@ -131,6 +131,27 @@ ts_status ts_render(const ts_blob* blob, const ts_params* params, void* tile_buf
 /* The same with one or two tile buffers and a sink that may stop the frame. */
 ts_status ts_render_frame(const ts_blob* blob, const ts_params* params, const ts_buffers* buffers, ts_frame_sink sink,
                           void* context);
+/* A compressed blob ("TSTC", tripack --compress, docs/COMPRESSED_BLOB.md), rendered from its
+   streams band by band with bit-identical pixels; treat as opaque. */
+typedef struct ts_compressed_blob {
+  uint64_t storage[24];
+} ts_compressed_blob;
+
+/* Checks the header and the layer table (the streams are checked as they are decoded). */
+ts_status ts_open_compressed(const void* bytes, size_t size, ts_compressed_blob* blob, uint32_t* error_offset);
+ts_status ts_compressed_tile_buffer_size(const ts_compressed_blob* blob, const ts_params* params, size_t* bytes);
+/* Bytes of scratch ts_compressed_workspace_size needs (its measure decodes every stream once). */
+ts_status ts_compressed_scratch_size(const ts_compressed_blob* blob, const ts_params* params, size_t* bytes);
+/* Bytes of workspace the render needs (exact for an 8-aligned workspace); a damaged stream returns
+   its status and *error_offset (if not null) the decoder's byte offset. */
+ts_status ts_compressed_workspace_size(const ts_compressed_blob* blob, const ts_params* params, void* scratch,
+                                       size_t scratch_size, size_t* bytes, uint32_t* error_offset);
+/* Renders the viewport from the streams. With less workspace than ts_compressed_workspace_size a
+   frame can stop after some tiles with TS_WORKSPACE_TOO_SMALL, and a stream damaged beyond the
+   first band stops it with the decoder's status; a blob ts_compressed_workspace_size accepted,
+   given that many bytes, renders whole. */
+ts_status ts_render_compressed(const ts_compressed_blob* blob, const ts_params* params, const ts_buffers* buffers,
+                               ts_frame_sink sink, void* context, uint32_t* error_offset);
 /* A short English description of a status code. */
 const char* ts_status_text(ts_status status);
 

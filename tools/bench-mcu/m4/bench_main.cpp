@@ -2,12 +2,15 @@
 // The benchmark program for the emulated Cortex-M4: renders the blob the harness mapped, with the
 // parameters it wrote (bench_protocol.h), into buffers carved from the RAM between the static
 // data and the stack (bench.ld), and digests every tile in bench_sink. No heap, no start-up code:
-// the harness loads the segments, sets SP and calls bench_prepare, then bench_render.
+// the harness loads the segments, sets SP and calls bench_prepare, then bench_render. A compressed
+// blob (magic "TSTC") is rendered from its streams: prepare measures its workspace with the arena
+// as the measure's scratch (workspace_size decodes the streams once), render draws it.
 #include <stddef.h>
 #include <stdint.h>
 
 #include "bench_protocol.h"
 #include "tile_hash.h"
+#include "tristream/compressed_blob.h"
 #include "tristream/render.h"
 
 using namespace tristream::core;
@@ -25,6 +28,8 @@ void bench_sink(void* context, const Tile* tile);
 namespace {
 
 Blob blob;
+CompressedBlob compressed;
+bool is_compressed = false;
 RenderParams params;
 uint8_t* tile_buffer;
 uint8_t* workspace;
@@ -36,7 +41,9 @@ extern "C" void bench_prepare() {
   bench_result& r = bench_result_out;
   r = bench_result{};
   const bench_params& in = bench_params_in;
-  Status s = open_blob(reinterpret_cast<const void*>(uintptr_t(in.blob_address)), in.blob_size, &blob);
+  const void* bytes = reinterpret_cast<const void*>(uintptr_t(in.blob_address));
+  is_compressed = is_compressed_blob(bytes, in.blob_size);
+  Status s = is_compressed ? open_compressed_blob(bytes, in.blob_size, &compressed) : open_blob(bytes, in.blob_size, &blob);
   r.status = uint32_t(s);
   if (s != Status::ok) return;
   params = RenderParams{};
@@ -48,13 +55,24 @@ extern "C" void bench_prepare() {
   params.dither = in.dither != 0;
   for (int c = 0; c < 3; ++c) params.background[c] = in.background[c];
   size_t tile_bytes = 0, work_bytes = 0;
-  s = tile_buffer_size(blob, params, &tile_bytes);
-  if (s == Status::ok) s = workspace_size(blob, params, &work_bytes);
+  r.arena_bytes = uint32_t(__arena_end - __arena_start);
+  if (is_compressed) {
+    size_t scratch_bytes = 0;
+    s = tile_buffer_size(compressed, params, &tile_bytes);
+    if (s == Status::ok) s = measure_scratch_size(compressed, params, &scratch_bytes);
+    if (s == Status::ok && scratch_bytes > r.arena_bytes) {
+      r.status = BENCH_STATUS_NO_ROOM;
+      return;
+    }
+    if (s == Status::ok) s = workspace_size(compressed, params, __arena_start, scratch_bytes, &work_bytes);
+  } else {
+    s = tile_buffer_size(blob, params, &tile_bytes);
+    if (s == Status::ok) s = workspace_size(blob, params, &work_bytes);
+  }
   r.status = uint32_t(s);
   if (s != Status::ok) return;
   r.tile_buffer_bytes = uint32_t(tile_bytes);
   r.workspace_bytes = uint32_t(work_bytes);
-  r.arena_bytes = uint32_t(__arena_end - __arena_start);
   const size_t tile_rounded = (tile_bytes + 7) & ~size_t(7);
   if (tile_rounded + work_bytes > r.arena_bytes) {
     r.status = BENCH_STATUS_NO_ROOM;
@@ -79,8 +97,10 @@ extern "C" void bench_render() {
   uint32_t sp;
   __asm__ volatile("mov %0, sp" : "=r"(sp));
   r.sp_before_render = sp;
-  const Status s = render(blob, params, tile_buffer, r.tile_buffer_bytes, workspace, r.workspace_bytes, bench_sink,
-                          &digest);
+  const Status s = is_compressed ? render(compressed, params, tile_buffer, r.tile_buffer_bytes, workspace,
+                                         r.workspace_bytes, bench_sink, &digest)
+                                  : render(blob, params, tile_buffer, r.tile_buffer_bytes, workspace, r.workspace_bytes,
+                                           bench_sink, &digest);
   r.status = uint32_t(s);
   if (s != Status::ok) return;
   r.tiles = digest.tiles;

@@ -1,0 +1,268 @@
+// SPDX-License-Identifier: MIT
+// The render of a compressed blob from its streams, band by band (render.h): per band and layer,
+// the band store keeps the triangles carried over whose last row reaches the band, then takes
+// those the layer's decoder yields whose top row is at most the band's last row; the first one
+// past the band waits in the layer's stream state for the next band. The band stores are read
+// through a Blob whose layers point into them, by the same tile path as a v1 blob (this
+// translation unit has its own copy of the private headers' internal-linkage code, as render.cpp).
+#include <new>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "active_set.h"
+#include "band_store.h"
+#include "frame_plan.h"
+#include "tile_renderer.h"
+#include "tristream/compressed_blob.h"
+#include "tristream/render.h"
+#include "workspace_layout.h"
+
+namespace tristream::core {
+namespace {
+
+// A layer's decoding state, in the workspace (its ring follows it).
+struct LayerStream {
+  LayerDecoder decoder;
+  DecodedTriangle held;  // decoded and not yet taken (its top row is past the last band's)
+  uint32_t remaining = 0;  // triangles not decoded yet
+  bool has_held = false;
+};
+static_assert(alignof(LayerStream) <= 8, "the workspace sections are 8-aligned");
+
+constexpr size_t align8(size_t n) { return (n + 7) / 8 * 8; }
+
+size_t stream_bytes(const CompressedBlob& blob, int l) {
+  return align8(sizeof(LayerStream)) + align8(compressed_ring_bytes(blob, l));
+}
+
+// 8 - address mod 8 bytes (1 to 8) start every workspace: exact sizes for an 8-aligned one.
+size_t pad_of(const void* p) { return 8 - uintptr_t(p) % 8; }
+
+// The header fields of the compressed blob, no layers yet: what plan_frame and the tile path read.
+Blob header_view(const CompressedBlob& c) {
+  Blob b;
+  b.bytes = c.bytes;
+  b.size = c.size;
+  b.width = c.width;
+  b.height = c.height;
+  b.space = c.space;
+  b.method = c.method;
+  b.layer_count = c.layer_count;
+  b.values_per_vertex = c.values_per_vertex;
+  return b;
+}
+
+uint32_t band_count(const detail::FramePlan& r) {
+  return uint32_t((r.view.height() + r.tile_h - 1) / r.tile_h);
+}
+
+// Takes the layer to band [y0, y1]: drops what ended above y0, appends what starts by y1.
+Status advance(LayerStream& s, detail::BandStore& store, const detail::Mapping& map, int32_t y0, int32_t y1) {
+  store.drop_ended(map, y0);
+  for (;;) {
+    if (!s.has_held) {
+      if (s.remaining == 0) return Status::ok;
+      const Status st = s.decoder.next(&s.held);
+      if (st != Status::ok) return st;
+      --s.remaining;
+      s.has_held = true;
+    }
+    int32_t top, bottom;
+    detail::decoded_row_extent(map, s.held, &top, &bottom);
+    if (top > y1) return Status::ok;
+    s.has_held = false;
+    if (bottom < y0 || top > bottom) continue;  // above the viewport, or no row's sample points
+    if (store.count() >= store.capacity) return Status::workspace_too_small;
+    store.append(s.held);
+  }
+}
+
+}  // namespace
+
+Status tile_buffer_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes) {
+  return tile_buffer_size(header_view(blob), params, bytes);
+}
+
+Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes) {
+  if (!bytes) return Status::null_argument;
+  detail::FramePlan r;
+  const Status s = detail::plan_frame(header_view(blob), params, &r);
+  if (s != Status::ok) return s;
+  *bytes = 8 + align8(sizeof(LayerDecoder)) + align8(expand_workspace_size(blob)) + 4 * (size_t(band_count(r)) + 1);
+  return Status::ok;
+}
+
+Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
+                      size_t* bytes, BlobError* error) {
+  if (!bytes) return Status::null_argument;
+  CompressedWorkspace figures;
+  const Status s = workspace_size(blob, params, scratch, scratch_bytes, &figures, error);
+  if (s == Status::ok) *bytes = figures.bytes;
+  return s;
+}
+
+Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
+                      CompressedWorkspace* figures, BlobError* error) {
+  if (!figures || !scratch) return Status::null_argument;
+  const Blob view = header_view(blob);
+  detail::FramePlan r;
+  Status s = detail::plan_frame(view, params, &r);
+  if (s != Status::ok) return s;
+  size_t need = 0;
+  s = measure_scratch_size(blob, params, &need);
+  if (s != Status::ok) return s;
+  if (scratch_bytes < need) return Status::workspace_too_small;
+  uint8_t* at = static_cast<uint8_t*>(scratch) + pad_of(scratch);
+  LayerDecoder* decoder = new (at) LayerDecoder;
+  uint8_t* ring = at + align8(sizeof(LayerDecoder));
+  const size_t ring_bytes = align8(expand_workspace_size(blob));
+  uint32_t* live = reinterpret_cast<uint32_t*>(ring + ring_bytes);  // per band: live triangles' difference
+  const uint32_t bands = band_count(r);
+  uint32_t most = 0;
+  size_t fixed = 0;
+  for (int l = 0; l < blob.layer_count; ++l) {
+    fixed += stream_bytes(blob, l);
+    for (uint32_t b = 0; b <= bands; ++b) live[b] = 0;
+    s = decoder->begin(blob, l, ring, ring_bytes);
+    if (s != Status::ok) return s;
+    DecodedTriangle t;
+    for (uint32_t k = 0; k < blob.layers[l].triangle_count; ++k) {
+      s = decoder->next(&t);
+      if (s != Status::ok) {
+        if (error) error->offset = decoder->offset();
+        return s;
+      }
+      // Live in the bands from the one holding its top row (the first if above the viewport) to
+      // the one holding its last row, as advance() keeps it.
+      int32_t top, bottom;
+      detail::decoded_row_extent(r.map, t, &top, &bottom);
+      if (top > bottom || bottom < r.view.y0 || top >= r.view.y1) continue;
+      const int32_t last = bottom < r.view.y1 ? bottom : r.view.y1 - 1;
+      const uint32_t b0 = top <= r.view.y0 ? 0 : uint32_t((top - r.view.y0) / r.tile_h);
+      const uint32_t b1 = uint32_t((last - r.view.y0) / r.tile_h);
+      ++live[b0];
+      --live[b1 + 1];
+    }
+    s = decoder->finish();
+    if (s != Status::ok) {
+      if (error) error->offset = decoder->offset();
+      return s;
+    }
+    uint32_t n = 0;
+    for (uint32_t b = 0; b < bands; ++b) {
+      n += live[b];
+      most = n > most ? n : most;
+    }
+  }
+  if (most > detail::band_store_max_triangles) return Status::too_large;
+  figures->channel_scratch = detail::scratch_bytes(view, r, r.format);
+  figures->decoders = fixed;
+  figures->live_triangles = most;
+  figures->band_store = detail::band_store_bytes(most, blob.values_per_vertex, blob.method == Method::zienkiewicz);
+  figures->bytes = 8 + figures->channel_scratch + fixed + size_t(blob.layer_count) * figures->band_store;
+  return Status::ok;
+}
+
+Status render(const CompressedBlob& blob, const RenderParams& params, const RenderBuffers& buffers, FrameSink sink,
+              void* context, BlobError* error) {
+  void* const tile_buffer = buffers.tile[0];
+  if (!tile_buffer || !sink || (!buffers.workspace && buffers.workspace_bytes)) return Status::null_argument;
+  Blob view = header_view(blob);
+  detail::FramePlan r;
+  Status s = detail::plan_frame(view, params, &r);
+  if (s != Status::ok) return s;
+  const int bpp = bytes_per_pixel(r.format);
+  if (buffers.tile_bytes < size_t(r.tile_w) * r.tile_h * bpp) return Status::tile_buffer_too_small;
+
+  // Workspace: [1..8 bytes to 8-align][channel scratch][per layer: stream state, ring][band stores,
+  // one equal share per layer].
+  uint8_t* const ws = static_cast<uint8_t*>(buffers.workspace);
+  if (!ws) return Status::workspace_too_small;
+  const size_t scratch = detail::scratch_bytes(view, r, r.format);
+  size_t fixed = pad_of(ws) + scratch;
+  for (int l = 0; l < blob.layer_count; ++l) fixed += stream_bytes(blob, l);
+  if (buffers.workspace_bytes < fixed) return Status::workspace_too_small;
+  int16_t* scratch_ptr = scratch ? reinterpret_cast<int16_t*>(ws + pad_of(ws)) : nullptr;
+  const bool gradients = blob.method == Method::zienkiewicz;
+  const size_t share = (buffers.workspace_bytes - fixed) / blob.layer_count / 4 * 4;
+  const uint32_t capacity = detail::band_store_capacity(share, blob.values_per_vertex, gradients);
+  LayerStream* streams[3] = {nullptr, nullptr, nullptr};
+  detail::BandStore stores[3];
+  detail::ActiveSet sets[3];
+  uint8_t* at = ws + pad_of(ws) + scratch;
+  for (int l = 0; l < blob.layer_count; ++l) {
+    streams[l] = new (at) LayerStream;
+    uint8_t* ring = at + align8(sizeof(LayerStream));
+    const size_t ring_bytes = align8(compressed_ring_bytes(blob, l));
+    s = streams[l]->decoder.begin(blob, l, ring, ring_bytes);
+    if (s != Status::ok) return s;
+    streams[l]->remaining = blob.layers[l].triangle_count;
+    at = ring + ring_bytes;
+  }
+  for (int l = 0; l < blob.layer_count; ++l) {
+    stores[l].init(at + size_t(l) * share, capacity, blob.values_per_vertex, gradients, &view.layers[l]);
+    sets[l].layer = &view.layers[l];
+    sets[l].words = stores[l].words;
+    sets[l].capacity = uint32_t(detail::bitmap_bytes(capacity) * 8);
+    sets[l].view_x1 = r.view.x1;
+  }
+  const detail::TileRenderer draw = detail::tile_renderer(r.format);
+  uint8_t* const base[2] = {static_cast<uint8_t*>(tile_buffer),
+                            static_cast<uint8_t*>(buffers.tile[1] ? buffers.tile[1] : tile_buffer)};
+  int next = 0;
+  for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
+    const int32_t by1 = by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1;
+    for (int l = 0; l < blob.layer_count; ++l) {
+      s = advance(*streams[l], stores[l], r.map, by, by1 - 1);
+      if (s != Status::ok) {
+        if (error && s != Status::workspace_too_small) error->offset = streams[l]->decoder.offset();
+        return s;
+      }
+      stores[l].mark_all_live();
+      sets[l].base = 0;
+      sets[l].cursor = stores[l].count();
+    }
+    for (int32_t bx = r.view.x0; bx < r.view.x1; bx += r.tile_w) {
+      const int32_t bx1 = bx + r.tile_w < r.view.x1 ? bx + r.tile_w : r.view.x1;
+      Tile tile;
+      tile.pixels = base[next];
+      tile.stride = (params.packed_tiles ? bx1 - bx : r.tile_w) * bpp;
+      tile.rect = Rect{bx, by, bx1, by1};
+      tile.format = r.format;
+      draw(view, params, r.map, sets, tile.rect, tile.pixels, tile.stride, scratch_ptr);
+      tile.rect = Rect{bx - r.shift_x, by - r.shift_y, bx1 - r.shift_x, by1 - r.shift_y};
+      if (!sink(context, &tile)) return Status::stopped;
+      next ^= 1;
+    }
+  }
+  return Status::ok;
+}
+
+namespace {
+
+struct TileSinkAdapter {
+  TileSink sink;
+  void* context;
+};
+
+bool forward_tile(void* context, const Tile* tile) {
+  const TileSinkAdapter* a = static_cast<const TileSinkAdapter*>(context);
+  a->sink(a->context, tile);
+  return true;
+}
+
+}  // namespace
+
+Status render(const CompressedBlob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,
+              void* workspace, size_t workspace_bytes, TileSink sink, void* context) {
+  if (!sink) return Status::null_argument;
+  RenderBuffers buffers;
+  buffers.tile[0] = tile_buffer;
+  buffers.tile_bytes = tile_buffer_bytes;
+  buffers.workspace = workspace;
+  buffers.workspace_bytes = workspace_bytes;
+  TileSinkAdapter adapter{sink, context};
+  return render(blob, params, buffers, forward_tile, &adapter);
+}
+
+}  // namespace tristream::core

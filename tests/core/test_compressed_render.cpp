@@ -1,0 +1,267 @@
+// SPDX-License-Identifier: MIT
+// The render of a compressed blob from its streams, band by band (render.h): bit-identical to the
+// render of the v1 blob it was made from in every format, tiling, output size and fit; its
+// workspace_size exact; a damaged stream ends in a status in bounds (run under ASan: every buffer
+// is exactly sized).
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <string>
+
+#include "core_bridge/compress.h"
+#include "core_support.h"
+#include "io/tri_file.h"
+#include "tristream/compressed_blob.h"
+#include "tristream/render.h"
+
+using namespace tristream;
+using namespace tristream::testing;
+
+namespace {
+
+core::RenderParams params_of(const CoreOptions& o, Tiling t) {
+  core::RenderParams p;
+  p.output_width = std::uint16_t(o.width);
+  p.output_height = std::uint16_t(o.height);
+  p.fit = o.fit;
+  p.viewport = o.viewport;
+  p.tile_width = std::uint16_t(t.w);
+  p.tile_height = std::uint16_t(t.h);
+  p.format = o.format;
+  p.dither = o.dither;
+  return p;
+}
+
+struct Sizes {
+  core::Status status = core::Status::ok;
+  std::uint32_t offset = 0;
+  std::size_t scratch = 0, workspace = 0, tile = 0;
+};
+
+// measure_scratch_size, then workspace_size with exactly that scratch.
+Sizes sizes_of(const core::CompressedBlob& blob, const core::RenderParams& p) {
+  Sizes s;
+  s.status = core::tile_buffer_size(blob, p, &s.tile);
+  if (s.status == core::Status::ok) s.status = core::measure_scratch_size(blob, p, &s.scratch);
+  if (s.status != core::Status::ok) return s;
+  std::vector<std::uint8_t> scratch(s.scratch);
+  core::BlobError error;
+  s.status = core::workspace_size(blob, p, scratch.data(), scratch.size(), &s.workspace, &error);
+  s.offset = error.offset;
+  return s;
+}
+
+struct Counted {
+  int tiles = 0;
+};
+
+// Renders with a workspace of exactly `bytes` (new[] storage: 16-aligned on the test hosts).
+core::Status render_with(const core::CompressedBlob& blob, const core::RenderParams& p, std::size_t tile,
+                         std::size_t bytes, int* tiles = nullptr, core::BlobError* error = nullptr) {
+  std::vector<std::uint8_t> tiles_buffer(tile), work(bytes);
+  Counted c;
+  core::RenderBuffers b;
+  b.tile[0] = tiles_buffer.data();
+  b.tile_bytes = tile;
+  b.workspace = bytes ? work.data() : nullptr;
+  b.workspace_bytes = bytes;
+  auto sink = [](void* context, const core::Tile*) {
+    ++static_cast<Counted*>(context)->tiles;
+    return true;
+  };
+  const core::Status s = core::render(blob, p, b, sink, &c, error);
+  if (tiles) *tiles = c.tiles;
+  return s;
+}
+
+void check_same_renders(const std::vector<std::uint8_t>& v1, const std::vector<std::uint8_t>& packed,
+                        const std::vector<CoreOptions>& options, const std::vector<Tiling>& tilings) {
+  for (const CoreOptions& o : options)
+    for (const Tiling& t : tilings) {
+      CAPTURE(int(o.format), o.width, o.height, int(o.fit), t.w, t.h);
+      const CoreFrame a = core_frame(v1, o, t), b = core_frame(packed, o, t);
+      CHECK(a.tiles == b.tiles);
+      CHECK(bytes_differing(a.bytes, b.bytes) == 0);
+    }
+}
+
+std::vector<CoreOptions> every_format() {
+  std::vector<CoreOptions> out;
+  for (core::PixelFormat f : {core::PixelFormat::l8, core::PixelFormat::rgb888, core::PixelFormat::rgb565_le,
+                              core::PixelFormat::rgb565_be, core::PixelFormat::xrgb8888}) {
+    CoreOptions o;
+    o.format = f;
+    o.dither = f == core::PixelFormat::rgb565_le;
+    out.push_back(o);
+  }
+  return out;
+}
+
+// Output sizes other than the blob's, with each fit, and a viewport.
+std::vector<CoreOptions> other_outputs(int w, int h) {
+  std::vector<CoreOptions> out;
+  for (core::Fit fit : {core::Fit::stretch, core::Fit::inside, core::Fit::fill})
+    for (auto [ow, oh] : {std::pair{w * 2 + 3, h + 5}, {w / 2 + 1, h * 3 / 2}}) {
+      CoreOptions o;
+      o.width = ow;
+      o.height = oh;
+      o.fit = fit;
+      o.format = core::PixelFormat::rgb565_be;
+      out.push_back(o);
+    }
+  CoreOptions v;
+  v.viewport = core::Rect{w / 5, h / 3, w - w / 4, h - 2};
+  out.push_back(v);
+  return out;
+}
+
+// workspace_size is exact: with it the frame renders whole, with a byte less (also the scratch
+// of the measure) it is workspace_too_small.
+void check_exact_workspace(const std::vector<std::uint8_t>& packed, const Tiling& t, const CoreOptions& o = {}) {
+  core::CompressedBlob blob;
+  REQUIRE(core::open_compressed_blob(packed.data(), packed.size(), &blob) == core::Status::ok);
+  const core::RenderParams p = params_of(o, t);
+  const Sizes s = sizes_of(blob, p);
+  REQUIRE(s.status == core::Status::ok);
+  CAPTURE(t.w, t.h, s.workspace);
+  std::vector<std::uint8_t> short_scratch(s.scratch - 1);
+  std::size_t ignored = 0;
+  CHECK(core::workspace_size(blob, p, short_scratch.data(), short_scratch.size(), &ignored) ==
+        core::Status::workspace_too_small);
+  int tiles = 0;
+  CHECK(render_with(blob, p, s.tile, s.workspace, &tiles) == core::Status::ok);
+  CHECK(tiles > 0);
+  CHECK(render_with(blob, p, s.tile, s.workspace - 1) == core::Status::workspace_too_small);
+  CHECK(render_with(blob, p, s.tile, 0) == core::Status::workspace_too_small);
+}
+
+void round_trip(const std::vector<std::uint8_t>& v1, const std::vector<Tiling>& tilings, int w, int h) {
+  const std::vector<std::uint8_t> packed = compress_blob(v1, "test");
+  check_same_renders(v1, packed, every_format(), tilings);
+  check_same_renders(v1, packed, other_outputs(w, h), {{32, 32}, {13, 7}, {0, 0}});
+  for (const Tiling& t : tilings) check_exact_workspace(packed, t);
+}
+
+Triangulation layered_mesh(int w, int h, std::uint32_t seed) {
+  Triangulation t;
+  t.width = w;
+  t.height = h;
+  t.space = ColorSpace::ycbcr;
+  for (int l = 0; l < 3; ++l) t.layers.push_back(random_lattice_mesh(w, h, 30 + 20 * l, seed + l, 3));
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("a compressed blob renders from its streams as its v1 blob does: generated meshes") {
+  for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) {
+    CAPTURE(int(m));
+    SECTION("grey, with flips") {
+      round_trip(pack_blob(single_mesh(random_lattice_mesh(40, 30, 80, 1, 10), 40, 30), m), all_tilings(), 40, 30);
+    }
+    SECTION("rgb") {
+      round_trip(pack_blob(single_mesh(random_lattice_mesh(37, 23, 60, 2, 0, 3), 37, 23, ColorSpace::rgb), m),
+                 all_tilings(), 37, 23);
+    }
+    SECTION("ycbcr, sub-pixel vertices, convex hull domain") {
+      round_trip(pack_blob(single_mesh(random_subpixel_mesh(41, 29, 70, 3, false, 3), 41, 29, ColorSpace::ycbcr), m),
+                 all_tilings(), 41, 29);
+    }
+    SECTION("three layers") { round_trip(pack_blob(layered_mesh(33, 27, 4), m), all_tilings(), 33, 27); }
+    SECTION("tall triangles and lifted corners") {
+      round_trip(pack_blob(single_mesh(random_lattice_mesh(300, 200, 700, 21, 0, 3), 300, 200, ColorSpace::rgb), m),
+                 {{32, 32}, {0, 16}, {0, 1}, {0, 0}}, 300, 200);
+    }
+  }
+}
+
+TEST_CASE("a compressed blob renders from its streams as its v1 blob does: demo meshes") {
+  for (const char* name : {"kodim23.grey.tri", "kodim23.rgb.tri", "kodim23.ycbcr-layers.tri"}) {
+    CAPTURE(name);
+    const Triangulation tri = read_tri_file(std::string(TRISTREAM_SOURCE_DIR) + "/data/demo/" + name);
+    for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) {
+      CAPTURE(int(m));
+      const std::vector<std::uint8_t> v1 = pack_blob(tri, m), packed = compress_blob(v1, name);
+      CoreOptions o;
+      o.format = core::PixelFormat::rgb565_le;
+      o.dither = true;
+      check_same_renders(v1, packed, {o}, {{32, 32}, {0, 16}, {0, 0}, {29, 19}});
+      CoreOptions half;
+      half.width = tri.width / 2 + 7;
+      half.height = tri.height / 3;
+      half.fit = core::Fit::inside;
+      check_same_renders(v1, packed, {half}, {{32, 32}});
+      for (const Tiling& t : {Tiling{32, 32}, Tiling{0, 16}}) check_exact_workspace(packed, t);
+    }
+  }
+}
+
+TEST_CASE("a compressed render stops at the workspace's end only in the band that overflows it") {
+  const std::vector<std::uint8_t> packed =
+      compress_blob(pack_blob(single_mesh(random_lattice_mesh(60, 60, 200, 5), 60, 60), core::Method::bilinear));
+  core::CompressedBlob blob;
+  REQUIRE(core::open_compressed_blob(packed.data(), packed.size(), &blob) == core::Status::ok);
+  const core::RenderParams p = params_of(CoreOptions{}, {8, 8});
+  const Sizes s = sizes_of(blob, p);
+  REQUIRE(s.status == core::Status::ok);
+  // Short of the decoders and rings: refused before any tile; short of a band's live triangles:
+  // the tiles of the bands before it went out.
+  int refused_before = 0, stopped_late = 0;
+  for (std::size_t n = 0; n < s.workspace; ++n) {
+    int tiles = -1;
+    const core::Status st = render_with(blob, p, s.tile, n, &tiles);
+    if (st != core::Status::workspace_too_small) FAIL_CHECK("workspace of " << n << " bytes: status " << int(st));
+    (tiles == 0 ? refused_before : stopped_late)++;
+  }
+  CHECK(refused_before > 0);
+  CHECK(stopped_late > 0);
+}
+
+TEST_CASE("every damaged byte and every truncation of a compressed blob renders to a status, in bounds") {
+  for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) {
+    const std::vector<std::uint8_t> good =
+        compress_blob(pack_blob(single_mesh(random_lattice_mesh(24, 18, 30, 9, 2, 3), 24, 18, ColorSpace::rgb), m));
+    const core::RenderParams p = params_of(CoreOptions{}, {8, 4});
+    std::size_t big = 0;
+    {
+      core::CompressedBlob blob;
+      REQUIRE(core::open_compressed_blob(good.data(), good.size(), &blob) == core::Status::ok);
+      const Sizes s = sizes_of(blob, p);
+      REQUIRE(s.status == core::Status::ok);
+      big = s.workspace * 4;  // room for the live triangles of a damaged stream
+    }
+    std::size_t refused = 0, trials = 0;
+    auto attempt = [&](const std::vector<std::uint8_t>& bytes) {
+      std::vector<std::uint8_t> exact(bytes);
+      core::CompressedBlob blob;
+      core::BlobError error;
+      core::Status st = core::open_compressed_blob(exact.data(), exact.size(), &blob, &error);
+      if (st != core::Status::ok) return st;
+      const Sizes s = sizes_of(blob, p);
+      // The render without the measure meets the damage while drawing (its own checks); with the
+      // measure's size it renders whole whenever the measure accepted.
+      std::size_t tile = 0;
+      REQUIRE(core::tile_buffer_size(blob, p, &tile) == core::Status::ok);
+      const core::Status drawn = render_with(blob, p, tile, big, nullptr, &error);
+      if (drawn != core::Status::ok && drawn != core::Status::workspace_too_small) CHECK(error.offset <= good.size());
+      if (s.status != core::Status::ok) {
+        CHECK(s.offset <= good.size());
+        return s.status;
+      }
+      CHECK(render_with(blob, p, s.tile, s.workspace) == core::Status::ok);
+      return core::Status::ok;
+    };
+    for (std::size_t at = 0; at < good.size(); ++at)
+      for (std::uint8_t mask : {std::uint8_t(0x01), std::uint8_t(0x80), std::uint8_t(0xFF)}) {
+        std::vector<std::uint8_t> b = good;
+        b[at] = std::uint8_t(b[at] ^ mask);
+        ++trials;
+        refused += attempt(b) != core::Status::ok;
+      }
+    CHECK(refused > trials * 9 / 10);
+    for (std::size_t n = 0; n < good.size(); ++n) {
+      CAPTURE(n);
+      CHECK(attempt(std::vector<std::uint8_t>(good.begin(), good.begin() + std::ptrdiff_t(n))) != core::Status::ok);
+    }
+  }
+}
