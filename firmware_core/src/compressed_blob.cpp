@@ -204,6 +204,7 @@ uint8_t* LayerDecoder::record(uint32_t index) const {
 // Whether the values of a record are decoded, and the sides of its open edges (edges_at).
 namespace {
 uint8_t& known_byte(uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
+uint8_t known_byte(const uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
 uint8_t& sides_byte(uint8_t* rec, int per_vertex) { return rec[5 + 2 * per_vertex]; }
 }  // namespace
 
@@ -373,11 +374,24 @@ Status LayerDecoder::place(uint32_t index) {
   return Status::ok;
 }
 
+// The columns (1/16 pixel) where the third corner of a triangle on the edge a->s is looked for:
+// the edge's span widened by its length (L-infinity) and 2 pixels on each side; all of them when
+// a or s has no record.
+LayerDecoder::Columns LayerDecoder::columns(uint32_t a, uint32_t s) const {
+  const uint8_t* ra = record(a);
+  const uint8_t* rs = record(s);
+  if (!ra || !rs) return Columns{0, 0xFFFF};
+  const int32_t ax = load_u16(ra), ay = load_u16(ra + 2), sx = load_u16(rs), sy = load_u16(rs + 2);
+  const int32_t dx = ax > sx ? ax - sx : sx - ax, dy = ay > sy ? ay - sy : sy - ay;
+  const int32_t reach = (dx > dy ? dx : dy) + (2 << config::subpixel_bits);
+  return Columns{(ax < sx ? ax : sx) - reach, (ax > sx ? ax : sx) + reach};
+}
+
 // The third corner a Delaunay triangulation puts on side `side` (+1, -1) of the edge a->s: among
-// the other ends of the open edges of a and of s, the one above a with the largest angle over
-// a->s (the smallest dot / cross of (a - q, s - q)), compared exactly in 64 bits on pixel
-// coordinates (differences below 2^12, so dot and cross below 2^25); ties keep the first.
-// 0xFFFFFFFF when a or s has no record or no candidate is on that side.
+// the other ends of the open edges of a and of s (vertices some triangle used), the one above a with the largest angle over a->s
+// (the smallest dot / cross of (a - q, s - q)), compared exactly in 64 bits on pixel coordinates
+// (differences below 2^12, so dot and cross below 2^25); ties keep the first. 0xFFFFFFFF when a or
+// s has no record or no candidate is on that side.
 uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, int side) const {
   const int nv = blob_->values_per_vertex;
   const int S = config::subpixel_bits;
@@ -388,6 +402,19 @@ uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, int side) const {
   const int32_t sx = load_u16(rs) >> S, sy = load_u16(rs + 2) >> S;
   uint32_t best = 0xFFFFFFFFu;
   int64_t best_dot = 0, best_cross = 0;
+  // A fresh vertex (no triangle used it) is not tried: that would mean walking the ring.
+  auto consider = [&](uint32_t q, const uint8_t* rq) {
+    const int32_t qx = load_u16(rq) >> S, qy = load_u16(rq + 2) >> S;
+    const int32_t x1 = ax - qx, y1 = ay - qy, x2 = sx - qx, y2 = sy - qy;
+    const int32_t cross = (x1 * y2 - y1 * x2) * side;
+    if (cross <= 0) return;
+    const int32_t dot = x1 * x2 + y1 * y2;
+    if (best == 0xFFFFFFFFu || int64_t(dot) * best_cross < best_dot * cross) {
+      best = q;
+      best_dot = dot;
+      best_cross = cross;
+    }
+  };
   uint8_t* ends[2] = {ra, rs};
   for (uint8_t* e : ends) {
     const uint32_t sides = sides_byte(e, nv);
@@ -396,28 +423,38 @@ uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, int side) const {
       const uint32_t q = load_u16(e + edges_at(uint32_t(nv)) + 2 * j);
       if (q <= a || q == s || q == best) continue;
       const uint8_t* rq = record(q);
-      if (!rq) continue;
-      const int32_t qx = load_u16(rq) >> S, qy = load_u16(rq + 2) >> S;
-      const int32_t x1 = ax - qx, y1 = ay - qy, x2 = sx - qx, y2 = sy - qy;
-      const int32_t cross = (x1 * y2 - y1 * x2) * side;
-      if (cross <= 0) continue;
-      const int32_t dot = x1 * x2 + y1 * y2;
-      if (best == 0xFFFFFFFFu || int64_t(dot) * best_cross < best_dot * cross) {
-        best = q;
-        best_dot = dot;
-        best_cross = cross;
-      }
+      if (rq) consider(q, rq);
     }
   }
   return best;
 }
 
-// Whether no triangle used a vertex so far: one not decoded yet (or pinned, which the count of
-// fresh_count treats alike), or in the ring with its values not decoded.
-bool LayerDecoder::unused(uint32_t index) const {
-  if (index >= decoded_) return true;
-  uint8_t* rec = record(index);
-  return rec && !known_byte(rec, blob_->values_per_vertex);
+// The vertex after `a` that `count` eligible unused ones precede: in the ring, those whose values
+// are not decoded (no triangle used them) and whose column is in `cols`; beyond the ring, every
+// one (pinned ones included, the encoder counts them alike). V (out of range) when `a + 1` is
+// older than the ring.
+uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) const {
+  const int nv = blob_->values_per_vertex;
+  uint32_t r = a + 1;
+  if (r < decoded_) {
+    const uint32_t back = decoded_ - r;
+    if (back > layer_->window) return layer_->vertex_count;
+    uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
+    const uint8_t* p = ring_ + size_t(slot) * record_;
+    for (; r < decoded_; ++r) {
+      const int32_t x = load_u16(p);
+      if (!known_byte(p, nv) && x >= cols.lo && x <= cols.hi) {
+        if (count == 0) return r;
+        --count;
+      }
+      p += record_;
+      if (++slot == layer_->window) {
+        slot = 0;
+        p = ring_;
+      }
+    }
+  }
+  return uint64_t(r) + count;
 }
 
 // Records the edge from->to (from < to) of a decoded triangle whose third corner is on its
@@ -487,6 +524,7 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   if (anchor >= V) return fail(Status::bad_index);
   // The third corner: predicted, else a fresh vertex by its count among the unused ones after a,
   // else a gap.
+  const Columns cols = columns(uint32_t(a), uint32_t(anchor));
   const uint32_t guess = predict(uint32_t(a), uint32_t(anchor), side);
   uint64_t third;
   bool hit = false;
@@ -496,14 +534,8 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   } else if (decode_bit(rc_, m_.fresh[kind])) {
     uint32_t count;
     if (!decode_uint(rc_, m_.fresh_count, index_bits, &count)) return fail(Status::bad_index);
-    third = uint64_t(a) + 1;
-    for (;; ++third) {
-      if (third >= V) return fail(Status::bad_index);
-      if (!unused(uint32_t(third))) continue;
-      if (count == 0) break;
-      --count;
-    }
-  } else {
+    third = fresh(uint32_t(a), count, cols);
+    } else {
     uint32_t gap;
     if (!decode_uint(rc_, m_.third_gap, index_bits, &gap)) return fail(Status::bad_index);
     third = uint64_t(a) + 1 + gap;

@@ -346,38 +346,51 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   std::vector<std::array<std::uint32_t, 2>> edge_end(V, {0, 0});
   std::vector<std::array<std::uint8_t, 2>> edge_sides(V, {0, 0});
   auto has_record = [&](std::uint32_t r) { return (r < encoded && encoded - r <= window) || pinned.count(r) != 0; };
-  auto unused = [&](std::uint32_t r) {
-    if (r >= encoded) return true;
-    return encoded - r <= window && !valued[r];
-  };
   auto cross = [&](std::uint32_t o, std::uint32_t p, std::uint32_t q) {
     const Vertex &O = in[order[o]], &P = in[order[p]], &Q = in[order[q]];
     return (std::int64_t(P.x) - O.x) * (std::int64_t(Q.y) - O.y) - (std::int64_t(P.y) - O.y) * (std::int64_t(Q.x) - O.x);
   };
-  // LayerDecoder::predict.
+  // LayerDecoder::columns, predict and fresh.
+  struct Columns {
+    std::int32_t lo, hi;
+  };
+  auto columns = [&](std::uint32_t a, std::uint32_t s) {
+    if (!has_record(a) || !has_record(s)) return Columns{0, 0xFFFF};
+    const std::int32_t ax = in[order[a]].x, ay = in[order[a]].y, sx = in[order[s]].x, sy = in[order[s]].y;
+    const std::int32_t reach = std::max(std::abs(ax - sx), std::abs(ay - sy)) + (2 << S);
+    return Columns{std::min(ax, sx) - reach, std::max(ax, sx) + reach};
+  };
+  auto in_columns = [&](std::uint32_t r, Columns c) {
+    return std::int32_t(in[order[r]].x) >= c.lo && std::int32_t(in[order[r]].x) <= c.hi;
+  };
   auto predict = [&](std::uint32_t a, std::uint32_t s, int side) {
     if (!has_record(a) || !has_record(s)) return none;
     auto px = [&](std::uint32_t r) { return std::int32_t(in[order[r]].x >> S); };
     auto py = [&](std::uint32_t r) { return std::int32_t(in[order[r]].y >> S); };
     std::uint32_t best = none;
     std::int64_t best_dot = 0, best_cross = 0;
+    auto consider = [&](std::uint32_t q) {
+      const std::int32_t x1 = px(a) - px(q), y1 = py(a) - py(q), x2 = px(s) - px(q), y2 = py(s) - py(q);
+      const std::int32_t cr = (x1 * y2 - y1 * x2) * side;
+      if (cr <= 0) return;
+      const std::int32_t dot = x1 * x2 + y1 * y2;
+      if (best == none || std::int64_t(dot) * best_cross < best_dot * cr) {
+        best = q;
+        best_dot = dot;
+        best_cross = cr;
+      }
+    };
     for (std::uint32_t e : {a, s})
       for (int j = 0; j < 2; ++j) {
         if (!edge_sides[e][j]) continue;
         const std::uint32_t q = edge_end[e][j];
         if (q <= a || q == s || q == best || !has_record(q)) continue;
-        const std::int32_t x1 = px(a) - px(q), y1 = py(a) - py(q), x2 = px(s) - px(q), y2 = py(s) - py(q);
-        const std::int32_t cr = (x1 * y2 - y1 * x2) * side;
-        if (cr <= 0) continue;
-        const std::int32_t dot = x1 * x2 + y1 * y2;
-        if (best == none || std::int64_t(dot) * best_cross < best_dot * cr) {
-          best = q;
-          best_dot = dot;
-          best_cross = cr;
-        }
+        consider(q);
       }
     return best;
   };
+  // Whether fresh() can reach r (unused, and in the columns when in the ring).
+  auto eligible = [&](std::uint32_t r, Columns cols) { return r >= encoded || (!valued[r] && in_columns(r, cols)); };
   // LayerDecoder::add_edge.
   auto add_edge = [&](std::uint32_t from, std::uint32_t to, bool positive) {
     const std::uint8_t bit = positive ? 1 : 2;
@@ -434,14 +447,15 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
       encode_uint(e, m.anchor_gap, index_bits, anchor - t.a - 1);
       e.bit(m.side, side < 0);
     }
+    const Columns cols = columns(t.a, anchor);
     const std::uint32_t guess = predict(t.a, anchor, side);
     if (guess != none) e.bit(m.predicted[kind], hit);
     if (!hit) {
-      const bool fresh = unused(third);
+      const bool fresh = eligible(third, cols);
       e.bit(m.fresh[kind], fresh);
       if (fresh) {
         std::uint32_t count = 0;
-        for (std::uint32_t r = t.a + 1; r < third; ++r) count += unused(r);
+        for (std::uint32_t r = t.a + 1; r < third; ++r) count += eligible(r, cols);
         encode_uint(e, m.fresh_count, index_bits, count);
       } else {
         encode_uint(e, m.third_gap, index_bits, third - t.a - 1);
@@ -517,14 +531,14 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
   CompressStats st;
   st.v1_bytes = v1.size();
   for (int l = 0; l < blob.layer_count; ++l) {
-    // The reach with the least decoder RAM among those within 2 % of the bytes without lifts.
+    // The reach with the least decoder RAM among those within 3 % of the bytes without lifts.
     RangeEncoder e;
     LayerStream ls = encode_layer(blob, blob.layers[l], e, std::numeric_limits<std::uint32_t>::max());
     const std::size_t unlifted = ls.bytes.size();
     for (std::uint32_t reach = ls.window / 2; reach >= 16; reach /= 2) {
       RangeEncoder trial;
       LayerStream candidate = encode_layer(blob, blob.layers[l], trial, reach);
-      if (candidate.ram < ls.ram && candidate.bytes.size() * 100 <= unlifted * 102) {
+      if (candidate.ram < ls.ram && candidate.bytes.size() * 100 <= unlifted * 103) {
         ls = std::move(candidate);
         e = trial;
       }

@@ -165,8 +165,12 @@ class LayerDecoder {
   uint8_t* pinned_record(uint32_t index) const;
   void find_next_pinned();
   Status decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
+  struct Columns {
+    int32_t lo, hi;  // 1/16 pixel
+  };
+  Columns columns(uint32_t a, uint32_t s) const;
   uint32_t predict(uint32_t a, uint32_t s, int side) const;
-  bool unused(uint32_t index) const;
+  uint64_t fresh(uint32_t a, uint32_t count, Columns cols) const;
   void add_edge(uint32_t from, uint32_t to, bool positive);
   uint8_t* record(uint32_t index) const;
 
