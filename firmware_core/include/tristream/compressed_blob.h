@@ -107,8 +107,8 @@ struct StreamModels {
   UintModel anchor_gap;     // a gap-coded anchor: s - a - 1
   Prob side;                // a gap-coded anchor: the side of a->s the third corner is on
   // The third corner t: the predicted one (the largest angle over a->s among the candidates) or
-  // not; if not, unused so far (then the count of unused vertices between a and t) or a gap
-  // t - a - 1; contexts: how the anchor was coded (open edge 0, 1, gap-coded).
+  // not; if not, unused so far (then the count of such vertices in the edge's columns between a
+  // and t) or a gap t - a - 1; contexts: how the anchor was coded (open edge 0, 1, gap-coded).
   Prob predicted[3];
   Prob fresh[3];
   UintModel fresh_count;
@@ -144,7 +144,7 @@ using VertexSink = void (*)(void* context, uint32_t index, uint16_t x, uint16_t 
                             const int32_t* gradients);
 
 // Decodes one layer's stream triangle by triangle, keeping the last `window` vertices in a ring
-// of caller memory (compressed_ring_bytes). Its own state is this object (about 1.3 KiB).
+// of caller memory (compressed_ring_bytes). Its own state is this object (about 1.8 KiB).
 class LayerDecoder {
  public:
   // Starts layer `layer` of `blob` (both must outlive the decoding); `ring` must hold
