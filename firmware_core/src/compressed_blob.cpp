@@ -31,23 +31,14 @@ constexpr int index_bits = 16;      // vertex indices below 65535
 constexpr int value_bits = 9;       // residuals of at most 510
 constexpr int gradient_bits = 31;   // wrapped 32-bit differences
 
-// The class of an index difference, the context of the next one.
-uint8_t index_class(uint32_t d) { return d == 0 ? 0 : (d < 8 ? 1 : 2); }
-
-// A corner's candidates: the vertices of the last two triangles above `lower`, most recent
-// triangle first and its corners from the last, without repeats (at most 6).
-uint32_t candidates(const uint32_t (*recent)[3], uint32_t count, uint32_t lower, uint32_t* out) {
-  uint32_t n = 0;
-  for (uint32_t t = 0; t < count; ++t)
-    for (int k = 2; k >= 0; --k) {
-      const uint32_t x = recent[t][k];
-      bool seen = x <= lower;
-      for (uint32_t i = 0; i < n; ++i) seen |= out[i] == x;
-      if (!seen) out[n++] = x;
-    }
-  return n;
-}
-constexpr uint32_t new_vertex = 7;
+// Fields of a ring record (compressed_vertex_record_bytes): x, y, values, then at 4 + 2 v (2 mod
+// 4, as v is 1 or 3) a byte "values decoded" and a byte of the sides of the two open edges (bits
+// 0-1 the first's, 2-3 the second's: 1 a triangle on the positive side of from->to is decoded, 2
+// one on the negative side; 0 no edge), then at align4(4 + 2 v) the open edges' other ends (u16
+// each, the most recent first), then the gradients.
+constexpr uint32_t edges_at(uint32_t per_vertex) { return align4(4 + 2 * per_vertex); }
+constexpr uint32_t gradients_at(uint32_t per_vertex) { return edges_at(per_vertex) + 4; }
+constexpr uint32_t escape_symbol = 7;
 
 struct Fail {
   BlobError* error;
@@ -117,7 +108,7 @@ Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out,
 
 uint32_t compressed_vertex_record_bytes(const CompressedBlob& blob) {
   const uint32_t nv = blob.values_per_vertex;
-  return align4(4 + 2 * nv) + (blob.method == Method::zienkiewicz ? 8 * nv : 0);
+  return gradients_at(nv) + (blob.method == Method::zienkiewicz ? 8 * nv : 0);
 }
 
 size_t compressed_ring_bytes(const CompressedBlob& blob, int layer) {
@@ -161,19 +152,20 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   for (auto& g : m_.gradient) detail::reset(g);
   detail::reset(&m_.top[0][0], 6 * 8);
   detail::reset(m_.top_far);
-  detail::reset(&m_.pick_second[0][0], 3 * 8);
-  detail::reset(&m_.pick_third[0][0], 9 * 8);
+  detail::reset(&m_.anchor[0][0], 3 * 8);
+  detail::reset(m_.anchor_gap);
+  m_.side = detail::prob_half;
+  detail::reset(m_.predicted, 3);
+  detail::reset(m_.fresh, 3);
+  detail::reset(m_.fresh_count);
+  detail::reset(m_.third_gap);
   previous_picks_ = 0;
-  recent_count_ = 0;
-  for (auto& s : m_.second) detail::reset(s);
-  for (auto& t : m_.third) detail::reset(t);
   detail::reset(m_.rotation, 2);
   m_.lift = detail::prob_half;
   detail::reset(m_.lift_gap);
   detail::reset(m_.flag_bit, 9);
   decoded_ = slot_ = triangles_ = pixel_ = previous_top_ = 0;
   previous_row_ = 0;
-  previous_class_ = 0;
   for (int c = 0; c < 3; ++c) {
     last_values_[c] = 0;
     last_gradients_[c][0] = last_gradients_[c][1] = 0;
@@ -209,17 +201,18 @@ uint8_t* LayerDecoder::record(uint32_t index) const {
   return ring_ + size_t(slot) * record_;
 }
 
-// Whether the values of a ring record are decoded: a byte of the record's padding (4 + 2 v is
-// 2 mod 4 for v = 1 or 3, so align4 leaves two bytes).
+// Whether the values of a record are decoded, and the sides of its open edges (edges_at).
 namespace {
 uint8_t& known_byte(uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
+uint8_t known_byte(const uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
+uint8_t& sides_byte(uint8_t* rec, int per_vertex) { return rec[5 + 2 * per_vertex]; }
 }  // namespace
 
 namespace {
 // A gradient component's prediction: the known corners' (one, or the mean of two), else `last`.
 int32_t gradient_prediction(const uint8_t* p0, const uint8_t* p1, int nv, int c, int axis, int32_t last) {
   if (!p0) return last;
-  const uint32_t at = align4(4 + 2 * uint32_t(nv)) + 8 * uint32_t(c) + 4 * uint32_t(axis);
+  const uint32_t at = gradients_at(uint32_t(nv)) + 8 * uint32_t(c) + 4 * uint32_t(axis);
   const int64_t g0 = int32_t(load_u32(p0 + at));
   return p1 ? int32_t((g0 + int32_t(load_u32(p1 + at))) >> 1) : int32_t(g0);
 }
@@ -263,6 +256,7 @@ Status LayerDecoder::decode_position() {
   store_u16(rec, x);
   store_u16(rec + 2, y);
   known_byte(rec, blob.values_per_vertex) = 0;
+  sides_byte(rec, blob.values_per_vertex) = 0;
   pixel_ = uint32_t(pixel);
   ++decoded_;
   slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
@@ -322,7 +316,7 @@ Status LayerDecoder::decode_values(uint8_t* rec, uint32_t index, const uint8_t* 
   if (rc_.overrun) return fail(Status::truncated);
   for (int c = 0; c < nv; ++c) store_u16(rec + 4 + 2 * c, values[c]);
   if (blob.method == Method::zienkiewicz) {
-    uint8_t* g = rec + align4(4 + 2 * uint32_t(nv));
+    uint8_t* g = rec + gradients_at(uint32_t(nv));
     for (int c = 0; c < nv; ++c) {
       store_u32(g + 8 * c, uint32_t(gradients[c][0]));
       store_u32(g + 8 * c + 4, uint32_t(gradients[c][1]));
@@ -373,10 +367,121 @@ Status LayerDecoder::place(uint32_t index) {
   store_u16(rec, x);
   store_u16(rec + 2, y);
   known_byte(rec, blob.values_per_vertex) = 0;
+  sides_byte(rec, blob.values_per_vertex) = 0;
   store_u32(indices + 4 * pin_slot_, index);
   pin_slot_ = pin_slot_ + 1 == layer_->pinned ? 0 : pin_slot_ + 1;
   if (index < next_pinned_) next_pinned_ = index;
   return Status::ok;
+}
+
+// The columns (1/16 pixel) where the third corner of a triangle on the edge a->s is looked for:
+// the edge's span widened by its length (L-infinity) and 2 pixels on each side; all of them when
+// a or s has no record.
+LayerDecoder::Columns LayerDecoder::columns(uint32_t a, uint32_t s) const {
+  const uint8_t* ra = record(a);
+  const uint8_t* rs = record(s);
+  if (!ra || !rs) return Columns{0, 0xFFFF};
+  const int32_t ax = load_u16(ra), ay = load_u16(ra + 2), sx = load_u16(rs), sy = load_u16(rs + 2);
+  const int32_t dx = ax > sx ? ax - sx : sx - ax, dy = ay > sy ? ay - sy : sy - ay;
+  const int32_t reach = (dx > dy ? dx : dy) + (2 << config::subpixel_bits);
+  return Columns{(ax < sx ? ax : sx) - reach, (ax > sx ? ax : sx) + reach};
+}
+
+// The third corner a Delaunay triangulation puts on side `side` (+1, -1) of the edge a->s: among
+// the other ends of the open edges of a and of s (vertices some triangle used), the one above a with the largest angle over a->s
+// (the smallest dot / cross of (a - q, s - q)), compared exactly in 64 bits on pixel coordinates
+// (differences below 2^12, so dot and cross below 2^25); ties keep the first. 0xFFFFFFFF when a or
+// s has no record or no candidate is on that side.
+uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, int side) const {
+  const int nv = blob_->values_per_vertex;
+  const int S = config::subpixel_bits;
+  uint8_t* ra = record(a);
+  uint8_t* rs = record(s);
+  if (!ra || !rs) return 0xFFFFFFFFu;
+  const int32_t ax = load_u16(ra) >> S, ay = load_u16(ra + 2) >> S;
+  const int32_t sx = load_u16(rs) >> S, sy = load_u16(rs + 2) >> S;
+  uint32_t best = 0xFFFFFFFFu;
+  int64_t best_dot = 0, best_cross = 0;
+  // A fresh vertex (no triangle used it) is not tried: that would mean walking the ring.
+  auto consider = [&](uint32_t q, const uint8_t* rq) {
+    const int32_t qx = load_u16(rq) >> S, qy = load_u16(rq + 2) >> S;
+    const int32_t x1 = ax - qx, y1 = ay - qy, x2 = sx - qx, y2 = sy - qy;
+    const int32_t cross = (x1 * y2 - y1 * x2) * side;
+    if (cross <= 0) return;
+    const int32_t dot = x1 * x2 + y1 * y2;
+    if (best == 0xFFFFFFFFu || int64_t(dot) * best_cross < best_dot * cross) {
+      best = q;
+      best_dot = dot;
+      best_cross = cross;
+    }
+  };
+  uint8_t* ends[2] = {ra, rs};
+  for (uint8_t* e : ends) {
+    const uint32_t sides = sides_byte(e, nv);
+    for (int j = 0; j < 2; ++j) {
+      if (!((sides >> (2 * j)) & 3u)) continue;
+      const uint32_t q = load_u16(e + edges_at(uint32_t(nv)) + 2 * j);
+      if (q <= a || q == s || q == best) continue;
+      const uint8_t* rq = record(q);
+      if (rq) consider(q, rq);
+    }
+  }
+  return best;
+}
+
+// The vertex after `a` that `count` eligible unused ones precede: in the ring, those whose values
+// are not decoded (no triangle used them) and whose column is in `cols`; beyond the ring, every
+// one (pinned ones included, the encoder counts them alike). V (out of range) when `a + 1` is
+// older than the ring.
+uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) const {
+  const int nv = blob_->values_per_vertex;
+  uint32_t r = a + 1;
+  if (r < decoded_) {
+    const uint32_t back = decoded_ - r;
+    if (back > layer_->window) return layer_->vertex_count;
+    uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
+    const uint8_t* p = ring_ + size_t(slot) * record_;
+    for (; r < decoded_; ++r) {
+      const int32_t x = load_u16(p);
+      if (!known_byte(p, nv) && x >= cols.lo && x <= cols.hi) {
+        if (count == 0) return r;
+        --count;
+      }
+      p += record_;
+      if (++slot == layer_->window) {
+        slot = 0;
+        p = ring_;
+      }
+    }
+  }
+  return uint64_t(r) + count;
+}
+
+// Records the edge from->to (from < to) of a decoded triangle whose third corner is on its
+// positive side or not: a side already known closes the edge (both triangles decoded), else it
+// becomes the most recent open edge of `from`, the oldest of two dropped.
+void LayerDecoder::add_edge(uint32_t from, uint32_t to, bool positive) {
+  const int nv = blob_->values_per_vertex;
+  uint8_t* rec = record(from);
+  uint8_t* ends = rec + edges_at(uint32_t(nv));
+  const uint32_t bit = positive ? 1u : 2u;
+  uint32_t sides = sides_byte(rec, nv);
+  for (int j = 0; j < 2; ++j) {
+    const uint32_t m = (sides >> (2 * j)) & 3u;
+    if (!m || load_u16(ends + 2 * j) != to) continue;
+    if ((m | bit) != 3u) return;  // the same side again (a mesh that is not a manifold)
+    if (j == 0) {  // the second moves up
+      ends[0] = ends[2], ends[1] = ends[3];
+      sides >>= 2;
+    } else {
+      sides &= 3u;
+    }
+    sides_byte(rec, nv) = uint8_t(sides);
+    return;
+  }
+  ends[2] = ends[0], ends[3] = ends[1];
+  store_u16(ends, to);
+  sides_byte(rec, nv) = uint8_t(((sides << 2) & 0xCu) | bit);
 }
 
 Status LayerDecoder::next(DecodedTriangle* out) {
@@ -385,8 +490,8 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   if (failed_ != Status::ok) return failed_;
   if (triangles_ >= layer_->triangle_count) return Status::bad_params;
   const uint32_t V = layer_->vertex_count;
+  const int nv = blob_->values_per_vertex;
   int64_t s;
-  uint32_t d1, d2;
   const uint32_t step = decode_symbol8(rc_, m_.top[previous_picks_]);
   if (step < 4) {
     s = step == 3 ? -1 : int64_t(step);
@@ -397,33 +502,46 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   const uint32_t step_class = step < 2 ? step : 2;
   const int64_t a = int64_t(previous_top_) + s;
   if (a < 0 || a >= V) return fail(Status::bad_index);
-  uint32_t cand[6];
-  uint32_t n = candidates(recent_, recent_count_, uint32_t(a), cand);
-  const uint32_t pick_b = decode_symbol8(rc_, m_.pick_second[step_class]);
-  const uint32_t b_class = pick_b == new_vertex ? 0 : (pick_b == 0 ? 1 : 2);
-  uint64_t b;
-  uint8_t cls = previous_class_;
-  if (pick_b == new_vertex) {
-    if (!decode_uint(rc_, m_.second[previous_class_], index_bits, &d1)) return fail(Status::bad_index);
-    cls = index_class(d1);
-    b = uint64_t(a) + 1 + d1;
+  // The anchor: one of a's open edges (its third corner on the side not decoded yet) or a gap.
+  const uint32_t pick = decode_symbol8(rc_, m_.anchor[step_class]);
+  uint64_t anchor;
+  int side;
+  uint32_t kind;
+  if (pick == escape_symbol) {
+    uint32_t gap;
+    if (!decode_uint(rc_, m_.anchor_gap, index_bits, &gap)) return fail(Status::bad_index);
+    anchor = uint64_t(a) + 1 + gap;
+    side = decode_bit(rc_, m_.side) ? -1 : 1;
+    kind = 2;
   } else {
-    if (pick_b >= n) return fail(Status::bad_index);
-    b = cand[pick_b];
+    uint8_t* ra = record(uint32_t(a));
+    const uint32_t m = pick < 2 && ra ? (sides_byte(ra, nv) >> (2 * pick)) & 3u : 0;
+    if (!m) return fail(Status::bad_index);
+    anchor = load_u16(ra + edges_at(uint32_t(nv)) + 2 * pick);
+    side = m == 1 ? -1 : 1;
+    kind = pick;
   }
-  if (b >= V) return fail(Status::bad_index);
-  n = candidates(recent_, recent_count_, uint32_t(b), cand);
-  const uint32_t pick_c = decode_symbol8(rc_, m_.pick_third[3 * b_class + step_class]);
-  uint64_t c;
-  if (pick_c == new_vertex) {
-    if (!decode_uint(rc_, m_.third[index_class(uint32_t(b - uint64_t(a) - 1))], index_bits, &d2))
-      return fail(Status::bad_index);
-    c = b + 1 + d2;
-  } else {
-    if (pick_c >= n) return fail(Status::bad_index);
-    c = cand[pick_c];
+  if (anchor >= V) return fail(Status::bad_index);
+  // The third corner: predicted, else a fresh vertex by its count among the unused ones after a,
+  // else a gap.
+  const Columns cols = columns(uint32_t(a), uint32_t(anchor));
+  const uint32_t guess = predict(uint32_t(a), uint32_t(anchor), side);
+  uint64_t third;
+  bool hit = false;
+  if (guess != 0xFFFFFFFFu && decode_bit(rc_, m_.predicted[kind])) {
+    third = guess;
+    hit = true;
+  } else if (decode_bit(rc_, m_.fresh[kind])) {
+    uint32_t count;
+    if (!decode_uint(rc_, m_.fresh_count, index_bits, &count)) return fail(Status::bad_index);
+    third = fresh(uint32_t(a), count, cols);
+    } else {
+    uint32_t gap;
+    if (!decode_uint(rc_, m_.third_gap, index_bits, &gap)) return fail(Status::bad_index);
+    third = uint64_t(a) + 1 + gap;
   }
-  if (c >= V) return fail(Status::bad_index);
+  if (third >= V || third == anchor) return fail(Status::bad_index);
+  const uint32_t b = uint32_t(anchor < third ? anchor : third), c = uint32_t(anchor < third ? third : anchor);
   if (rc_.overrun) return fail(Status::truncated);
   const uint32_t index[3] = {uint32_t(a), uint32_t(b), uint32_t(c)};
   for (int k = 0; k < 3; ++k)
@@ -447,7 +565,6 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   if (decode_bit(rc_, m_.flags_nonzero))
     for (int i = 0; i < 9; ++i) flags = uint16_t(flags | (decode_bit(rc_, m_.flag_bit[i]) << i));
   if (rc_.overrun) return fail(Status::truncated);
-  const int nv = blob_->values_per_vertex;
   // The corners' values not decoded yet, in index order, from the corners known before them.
   for (int k = 0; k < 3; ++k) {
     if (known_byte(rec[k], nv)) continue;
@@ -470,7 +587,7 @@ Status LayerDecoder::next(DecodedTriangle* out) {
       out->values[k][ch] = ch < nv ? load_u16(p + 4 + 2 * ch) : 0;
       out->gradients[k][ch][0] = out->gradients[k][ch][1] = 0;
       if (z && ch < nv) {
-        const uint8_t* g = p + align4(4 + 2 * uint32_t(nv)) + 8 * ch;
+        const uint8_t* g = p + gradients_at(uint32_t(nv)) + 8 * ch;
         out->gradients[k][ch][0] = int32_t(load_u32(g));
         out->gradients[k][ch][1] = int32_t(load_u32(g + 4));
       }
@@ -480,13 +597,11 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   if (top < previous_row_) return fail(Status::unsorted);
   previous_row_ = top;
   previous_top_ = uint32_t(a);
-  previous_class_ = cls;
-  previous_picks_ = uint8_t(2 * b_class + (pick_c == new_vertex));
-  for (int k = 0; k < 3; ++k) {
-    recent_[1][k] = recent_[0][k];
-    recent_[0][k] = index[k];
-  }
-  recent_count_ = recent_count_ < 2 ? recent_count_ + 1 : 2;
+  previous_picks_ = uint8_t(2 * kind + (hit ? 1 : 0));
+  // (a, b, c) has the sign of `area`; (a, c, b) the other.
+  add_edge(index[0], index[1], area > 0);
+  add_edge(index[0], index[2], area < 0);
+  add_edge(index[1], index[2], area > 0);
   ++triangles_;
   return Status::ok;
 }

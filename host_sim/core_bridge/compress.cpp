@@ -134,18 +134,7 @@ void encode_int(RangeEncoder& e, core::detail::IntModel& m, int max_bits, std::i
 // The integer sizes of the decoder (compressed_blob.cpp).
 constexpr int gap_bits = 24, index_bits = 16, value_bits = 9, gradient_bits = 31;
 
-std::uint8_t index_class(std::uint32_t d) { return d == 0 ? 0 : (d < 8 ? 1 : 2); }
-
-// The candidates of the decoder (compressed_blob.cpp): the last two triangles' vertices above
-// `lower`, most recent first, each triangle's from its last corner, without repeats.
-std::vector<std::uint32_t> candidates(const std::vector<std::array<std::uint32_t, 3>>& recent, std::uint32_t lower) {
-  std::vector<std::uint32_t> out;
-  for (const auto& t : recent)
-    for (int k = 2; k >= 0; --k)
-      if (t[k] > lower && std::find(out.begin(), out.end(), t[k]) == out.end()) out.push_back(t[k]);
-  return out;
-}
-constexpr std::uint32_t new_vertex = 7;
+constexpr std::uint32_t escape_symbol = 7, none = 0xFFFFFFFFu;
 
 void encode_symbol8(RangeEncoder& e, Prob* tree, std::uint32_t s) {
   std::uint32_t node = 1;
@@ -267,11 +256,14 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   for (auto& x : m.gradient) reset(x);
   reset(&m.top[0][0], 6 * 8);
   reset(m.top_far);
-  reset(&m.pick_second[0][0], 3 * 8);
-  reset(&m.pick_third[0][0], 9 * 8);
+  reset(&m.anchor[0][0], 3 * 8);
+  reset(m.anchor_gap);
+  m.side = prob_half;
+  reset(m.predicted, 3);
+  reset(m.fresh, 3);
+  reset(m.fresh_count);
+  reset(m.third_gap);
   std::uint32_t previous_picks = 0;
-  for (auto& x : m.second) reset(x);
-  for (auto& x : m.third) reset(x);
   reset(m.rotation, 2);
   m.lift = prob_half;
   reset(m.lift_gap);
@@ -349,8 +341,76 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     ++encoded;
   };
   std::uint32_t previous_top = 0;
-  std::uint8_t previous_class = 0;
-  std::vector<std::array<std::uint32_t, 3>> recent;  // the last two triangles, most recent first
+  // The decoder's records: open edges (the other end, the sides decoded: 1 positive, 2 negative,
+  // 0 none), the most recent first, as LayerDecoder::add_edge keeps them.
+  std::vector<std::array<std::uint32_t, 2>> edge_end(V, {0, 0});
+  std::vector<std::array<std::uint8_t, 2>> edge_sides(V, {0, 0});
+  auto has_record = [&](std::uint32_t r) { return (r < encoded && encoded - r <= window) || pinned.count(r) != 0; };
+  auto cross = [&](std::uint32_t o, std::uint32_t p, std::uint32_t q) {
+    const Vertex &O = in[order[o]], &P = in[order[p]], &Q = in[order[q]];
+    return (std::int64_t(P.x) - O.x) * (std::int64_t(Q.y) - O.y) - (std::int64_t(P.y) - O.y) * (std::int64_t(Q.x) - O.x);
+  };
+  // LayerDecoder::columns, predict and fresh.
+  struct Columns {
+    std::int32_t lo, hi;
+  };
+  auto columns = [&](std::uint32_t a, std::uint32_t s) {
+    if (!has_record(a) || !has_record(s)) return Columns{0, 0xFFFF};
+    const std::int32_t ax = in[order[a]].x, ay = in[order[a]].y, sx = in[order[s]].x, sy = in[order[s]].y;
+    const std::int32_t reach = std::max(std::abs(ax - sx), std::abs(ay - sy)) + (2 << S);
+    return Columns{std::min(ax, sx) - reach, std::max(ax, sx) + reach};
+  };
+  auto in_columns = [&](std::uint32_t r, Columns c) {
+    return std::int32_t(in[order[r]].x) >= c.lo && std::int32_t(in[order[r]].x) <= c.hi;
+  };
+  auto predict = [&](std::uint32_t a, std::uint32_t s, int side) {
+    if (!has_record(a) || !has_record(s)) return none;
+    auto px = [&](std::uint32_t r) { return std::int32_t(in[order[r]].x >> S); };
+    auto py = [&](std::uint32_t r) { return std::int32_t(in[order[r]].y >> S); };
+    std::uint32_t best = none;
+    std::int64_t best_dot = 0, best_cross = 0;
+    auto consider = [&](std::uint32_t q) {
+      const std::int32_t x1 = px(a) - px(q), y1 = py(a) - py(q), x2 = px(s) - px(q), y2 = py(s) - py(q);
+      const std::int32_t cr = (x1 * y2 - y1 * x2) * side;
+      if (cr <= 0) return;
+      const std::int32_t dot = x1 * x2 + y1 * y2;
+      if (best == none || std::int64_t(dot) * best_cross < best_dot * cr) {
+        best = q;
+        best_dot = dot;
+        best_cross = cr;
+      }
+    };
+    for (std::uint32_t e : {a, s})
+      for (int j = 0; j < 2; ++j) {
+        if (!edge_sides[e][j]) continue;
+        const std::uint32_t q = edge_end[e][j];
+        if (q <= a || q == s || q == best || !has_record(q)) continue;
+        consider(q);
+      }
+    return best;
+  };
+  // Whether fresh() can reach r (unused, and in the columns when in the ring).
+  auto eligible = [&](std::uint32_t r, Columns cols) { return r >= encoded || (!valued[r] && in_columns(r, cols)); };
+  // LayerDecoder::add_edge.
+  auto add_edge = [&](std::uint32_t from, std::uint32_t to, bool positive) {
+    const std::uint8_t bit = positive ? 1 : 2;
+    auto& end = edge_end[from];
+    auto& sd = edge_sides[from];
+    for (int j = 0; j < 2; ++j) {
+      if (!sd[j] || end[j] != to) continue;
+      if ((sd[j] | bit) != 3) return;
+      if (j == 0) {
+        end[0] = end[1];
+        sd[0] = sd[1];
+      }
+      sd[1] = 0;
+      return;
+    }
+    end[1] = end[0];
+    sd[1] = sd[0];
+    end[0] = to;
+    sd[0] = bit;
+  };
   for (const Tri& t : tris) {
     e.category = connectivity;
     const std::int64_t delta = std::int64_t(t.a) - std::int64_t(previous_top);
@@ -358,21 +418,49 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     encode_symbol8(e, m.top[previous_picks], step);
     if (step == 7) encode_int(e, m.top_far, index_bits, delta);
     const std::uint32_t step_class = step < 2 ? step : 2;
-    std::vector<std::uint32_t> cand = candidates(recent, t.a);
-    auto found = std::find(cand.begin(), cand.end(), t.b);
-    const std::uint32_t pick_b = found == cand.end() ? new_vertex : std::uint32_t(found - cand.begin());
-    encode_symbol8(e, m.pick_second[step_class], pick_b);
-    const std::uint32_t b_class = pick_b == new_vertex ? 0 : (pick_b == 0 ? 1 : 2);
-    std::uint8_t cls = previous_class;
-    if (pick_b == new_vertex) {
-      encode_uint(e, m.second[previous_class], index_bits, t.b - t.a - 1);
-      cls = index_class(t.b - t.a - 1);
+    // The anchor: an open edge of a whose other end is a corner, preferring one whose prediction
+    // is the third corner; else gap-coded, preferring the corner whose prediction is the other.
+    std::uint32_t pick = escape_symbol, anchor = t.b, third = t.c;
+    int side = 1;
+    bool hit = false;
+    for (int j = 0; j < 2 && !hit; ++j) {
+      const std::uint32_t y = edge_end[t.a][j];
+      if (!edge_sides[t.a][j] || !has_record(t.a) || (y != t.b && y != t.c)) continue;
+      const std::uint32_t other = y == t.b ? t.c : t.b;
+      const int sd = edge_sides[t.a][j] == 1 ? -1 : 1;
+      const bool h = predict(t.a, y, sd) == other;
+      if (pick == escape_symbol || h) pick = std::uint32_t(j), anchor = y, third = other, side = sd, hit = h;
     }
-    cand = candidates(recent, t.b);
-    found = std::find(cand.begin(), cand.end(), t.c);
-    const std::uint32_t pick_c = found == cand.end() ? new_vertex : std::uint32_t(found - cand.begin());
-    encode_symbol8(e, m.pick_third[3 * b_class + step_class], pick_c);
-    if (pick_c == new_vertex) encode_uint(e, m.third[index_class(t.b - t.a - 1)], index_bits, t.c - t.b - 1);
+    if (pick == escape_symbol) {
+      for (const auto& [s0, t0] : {std::pair{t.b, t.c}, std::pair{t.c, t.b}}) {
+        const int sd = cross(t.a, s0, t0) > 0 ? 1 : -1;
+        if (predict(t.a, s0, sd) == t0) {
+          anchor = s0, third = t0, side = sd, hit = true;
+          break;
+        }
+      }
+      if (!hit) side = cross(t.a, t.b, t.c) > 0 ? 1 : -1;
+    }
+    const std::uint32_t kind = pick == escape_symbol ? 2 : pick;
+    encode_symbol8(e, m.anchor[step_class], pick);
+    if (pick == escape_symbol) {
+      encode_uint(e, m.anchor_gap, index_bits, anchor - t.a - 1);
+      e.bit(m.side, side < 0);
+    }
+    const Columns cols = columns(t.a, anchor);
+    const std::uint32_t guess = predict(t.a, anchor, side);
+    if (guess != none) e.bit(m.predicted[kind], hit);
+    if (!hit) {
+      const bool fresh = eligible(third, cols);
+      e.bit(m.fresh[kind], fresh);
+      if (fresh) {
+        std::uint32_t count = 0;
+        for (std::uint32_t r = t.a + 1; r < third; ++r) count += eligible(r, cols);
+        encode_uint(e, m.fresh_count, index_bits, count);
+      } else {
+        encode_uint(e, m.third_gap, index_bits, third - t.a - 1);
+      }
+    }
     const std::uint32_t corners[3] = {t.a, t.b, t.c};
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t c = corners[k];
@@ -411,15 +499,16 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
       values_of(corner[k], known[0], known[1]);
     }
     previous_top = t.a;
-    previous_class = cls;
-    previous_picks = 2 * b_class + (pick_c == new_vertex);
-    recent.insert(recent.begin(), {t.a, t.b, t.c});
-    if (recent.size() > 2) recent.pop_back();
+    previous_picks = 2 * kind + (hit ? 1 : 0);
+    const std::int64_t area = cross(t.a, t.b, t.c);
+    add_edge(t.a, t.b, area > 0);
+    add_edge(t.a, t.c, area < 0);
+    add_edge(t.b, t.c, area > 0);
   }
   while (encoded < V) position();
   for (std::uint32_t i = V > window ? V - window : 0; i < V; ++i)
     if (!valued[i]) values_of(i, -1, -1);
-  const std::size_t record = ((4 + 2 * std::size_t(nv) + 3) & ~std::size_t(3)) + (zienkiewicz ? 8 * nv : 0);
+  const std::size_t record = ((4 + 2 * std::size_t(nv) + 3) & ~std::size_t(3)) + 4 + (zienkiewicz ? 8 * nv : 0);
   return LayerStream{e.finish(), window, pinned_slots, (std::size_t(window) + pinned_slots) * record + 4 * pinned_slots};
 }
 
@@ -442,14 +531,14 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
   CompressStats st;
   st.v1_bytes = v1.size();
   for (int l = 0; l < blob.layer_count; ++l) {
-    // The reach with the least decoder RAM among those within 2 % of the bytes without lifts.
+    // The reach with the least decoder RAM among those within 3 % of the bytes without lifts.
     RangeEncoder e;
     LayerStream ls = encode_layer(blob, blob.layers[l], e, std::numeric_limits<std::uint32_t>::max());
     const std::size_t unlifted = ls.bytes.size();
     for (std::uint32_t reach = ls.window / 2; reach >= 16; reach /= 2) {
       RangeEncoder trial;
       LayerStream candidate = encode_layer(blob, blob.layers[l], trial, reach);
-      if (candidate.ram < ls.ram && candidate.bytes.size() * 100 <= unlifted * 102) {
+      if (candidate.ram < ls.ram && candidate.bytes.size() * 100 <= unlifted * 103) {
         ls = std::move(candidate);
         e = trial;
       }

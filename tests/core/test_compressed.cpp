@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <random>
 #include <string>
 
 #include "core_bridge/compress.h"
@@ -265,4 +266,101 @@ TEST_CASE("streams with lifted corners (pinned slots) round-trip and refuse dama
   const std::uint32_t pinned = get32(b, 64 + 20) - 1;
   for (int k = 0; k < 4; ++k) b[64 + 20 + k] = std::uint8_t(pinned >> (8 * k));
   CHECK(expand(b).status != core::Status::ok);
+}
+
+namespace {
+
+// Every point of a w x h lattice: each square's four corners are cocircular, its diagonal random.
+Mesh grid_mesh(int w, int h, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  Mesh mesh;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      mesh.points.push_back({double(x), double(y)});
+      mesh.values.push_back(double((x * 29 + y * 53) % 256));
+    }
+  auto at = [&](int x, int y) { return std::uint32_t(y * w + x); };
+  for (int y = 0; y + 1 < h; ++y)
+    for (int x = 0; x + 1 < w; ++x) {
+      const std::uint32_t p = at(x, y), q = at(x + 1, y), r = at(x, y + 1), s = at(x + 1, y + 1);
+      Triangle t, u;
+      if (rng() & 1u) {
+        t.v = {p, q, s};
+        u.v = {p, s, r};
+      } else {
+        t.v = {p, q, r};
+        u.v = {q, s, r};
+      }
+      mesh.triangles.push_back(t);
+      mesh.triangles.push_back(u);
+    }
+  mesh.normalize_winding();
+  return mesh;
+}
+
+double connectivity_bits_per_vertex(const std::vector<std::uint8_t>& v1) {
+  CompressStats stats;
+  compress_blob(v1, "test", &stats);
+  return stats.connectivity_bits / double(stats.vertices);
+}
+
+}  // namespace
+
+TEST_CASE("the connectivity of a Delaunay mesh is mostly implied: open edges and the largest angle") {
+  const Triangulation tri = read_tri_file(std::string(TRISTREAM_SOURCE_DIR) + "/data/demo/kodim23.grey.tri");
+  // 22.4 bits per vertex when the corners were picked from the last triangles or gap-coded.
+  CHECK(connectivity_bits_per_vertex(pack_blob(tri, core::Method::bilinear)) < 10.0);
+  // The same points with edges flipped away from Delaunay cost more (escapes), and round-trip.
+  const Mesh delaunay = random_lattice_mesh(80, 60, 400, 5);
+  const Mesh flipped = random_lattice_mesh(80, 60, 400, 5, 300);
+  const std::vector<std::uint8_t> d = pack_blob(single_mesh(delaunay, 80, 60), core::Method::bilinear);
+  const std::vector<std::uint8_t> f = pack_blob(single_mesh(flipped, 80, 60), core::Method::bilinear);
+  CHECK(connectivity_bits_per_vertex(f) > connectivity_bits_per_vertex(d) + 1.0);
+  round_trip(f, {{16, 16}});
+}
+
+TEST_CASE("cocircular points (a lattice, each square's diagonal at random) round-trip") {
+  for (std::uint32_t seed : {1u, 2u}) {
+    const std::vector<std::uint8_t> v1 = pack_blob(single_mesh(grid_mesh(17, 13, seed), 17, 13), core::Method::bilinear);
+    round_trip(v1, {{8, 8}});
+  }
+}
+
+TEST_CASE("triangles no triangulation has (repeated, overlapping, far corners) round-trip through the escapes") {
+  std::vector<std::uint8_t> v1 = pack_blob(single_mesh(random_lattice_mesh(40, 30, 90, 17), 40, 30), core::Method::bilinear);
+  const std::size_t e = get32(v1, 28);
+  const std::uint32_t nv = get32(v1, e), nt = get32(v1, e + 4);
+  const std::size_t pos = get32(v1, e + 8), tri = get32(v1, e + 20);
+  auto y_of = [&](std::uint32_t v) { return get16(v1, pos + 4 * v + 2); };
+  auto x_of = [&](std::uint32_t v) { return get16(v1, pos + 4 * v); };
+  std::uint32_t changed = 0;
+  for (std::uint32_t t = 1; t < nt; ++t) {
+    std::vector<std::uint8_t> trial = v1;
+    std::uint8_t* p = &trial[tri + 8 * t];
+    if (t % 4 == 1) {
+      std::copy_n(&trial[tri + 8 * (t - 1)], 8, p);  // the previous triangle again: same top row
+    } else if (t % 4 == 3) {
+      // The top corner kept, the other two far below it (the top row is kept).
+      std::uint32_t top = get16(trial, tri + 8 * t);
+      for (int k = 1; k < 3; ++k)
+        if (y_of(get16(trial, tri + 8 * t + 2 * k)) < y_of(top)) top = get16(trial, tri + 8 * t + 2 * k);
+      std::uint32_t q = (top * 7 + t) % nv, r = (top * 13 + 5 * t) % nv;
+      for (std::uint32_t n = 0; n < nv && y_of(q) <= y_of(top); ++n) q = (q + 1) % nv;
+      for (std::uint32_t n = 0; n < nv && (y_of(r) <= y_of(top) || r == q); ++n) r = (r + 3) % nv;
+      const std::int64_t area = (std::int64_t(x_of(q)) - x_of(top)) * (std::int64_t(y_of(r)) - y_of(top)) -
+                                (std::int64_t(y_of(q)) - y_of(top)) * (std::int64_t(x_of(r)) - x_of(top));
+      if (area < 0) std::swap(q, r);
+      const std::uint32_t v[3] = {top, q, r};
+      for (int k = 0; k < 3; ++k) p[2 * k] = std::uint8_t(v[k]), p[2 * k + 1] = std::uint8_t(v[k] >> 8);
+    } else {
+      continue;
+    }
+    core::Blob blob;
+    if (core::open_blob(trial.data(), trial.size(), &blob) == core::Status::ok) {
+      v1 = trial;
+      ++changed;
+    }
+  }
+  REQUIRE(changed > nt / 3);
+  round_trip(v1, {{8, 8}, {0, 0}});
 }

@@ -5,7 +5,7 @@
 // core consumes the mesh (triangles by top row). Layout (little-endian, offsets from byte 0):
 //
 //   header, 64 bytes
-//     0  char[4] magic "TSTC"        4  u16 version (1)         6  u16 header size (64)
+//     0  char[4] magic "TSTC"        4  u16 version (2)         6  u16 header size (64)
 //     8  u32 total size             12  u16 width  14 u16 height
 //    16  u8 colour space   17 u8 method   18 u8 layer count   19 u8 values per vertex
 //    20  u8 sub-pixel bits   21 u8 gradient fraction bits   22 u16 flags (0)
@@ -26,7 +26,7 @@
 
 namespace tristream::core {
 
-inline constexpr uint16_t compressed_version = 1;
+inline constexpr uint16_t compressed_version = 2;  // 2: connectivity from open edges
 inline constexpr uint32_t compressed_header_size = 64;
 inline constexpr uint32_t compressed_layer_entry_size = 32;
 
@@ -61,8 +61,9 @@ bool is_compressed_blob(const void* bytes, size_t size);
 // `out`. Never reads outside [bytes, bytes + size). `error` receives the offset of a failure.
 Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out, BlobError* error = nullptr);
 
-// Bytes of a decoded vertex in the ring: x, y (u16), values (u16 each), zienkiewicz gradients
-// (i32 gx, gy per value), rounded up to 4.
+// Bytes of a decoded vertex in the ring: x, y (u16), values (u16 each), a byte "values decoded",
+// a byte of open-edge sides, rounded up to 4; two open-edge neighbours (u16 each); zienkiewicz
+// gradients (i32 gx, gy per value).
 uint32_t compressed_vertex_record_bytes(const CompressedBlob& blob);
 // Bytes of ring memory LayerDecoder::begin needs for layer `layer`:
 // (window + pinned) * record bytes + 4 * pinned.
@@ -97,14 +98,21 @@ struct StreamModels {
   IntModel value[3];        // integer parts of the values, predicted (see the doc)
   Prob fraction;            // some value of the vertex has a non-zero fraction byte
   IntModel gradient[2];     // gx, gy, against the previous vertex's of the same value
-  // A triangle's first vertex against the previous triangle's: 0, +1, +2, -1 or an escape (7) to
-  // top_far, context: how the previous triangle's second and third were coded (6 classes).
+  // A triangle's first vertex a against the previous triangle's: 0, +1, +2, -1 or an escape (7) to
+  // top_far, context: how the previous triangle's anchor and third vertex were coded (6 classes).
   Prob top[6][8];
   IntModel top_far;
-  Prob pick_second[3][8];   // second vertex: a recent candidate (0..5) or gap-coded (7); context: first's step
-  Prob pick_third[9][8];    // third vertex likewise; context: second's class (gap-coded, 0, other) x step
-  UintModel second[3];      // a gap-coded second: index - first - 1, context: the previous one's class
-  UintModel third[3];       // a gap-coded third: index - second - 1, context: this triangle's second's class
+  // The anchor s (a second corner): one of a's open edges (0, 1) or gap-coded (7); context: a's step.
+  Prob anchor[3][8];
+  UintModel anchor_gap;     // a gap-coded anchor: s - a - 1
+  Prob side;                // a gap-coded anchor: the side of a->s the third corner is on
+  // The third corner t: the predicted one (the largest angle over a->s among the candidates) or
+  // not; if not, unused so far (then the count of such vertices in the edge's columns between a
+  // and t) or a gap t - a - 1; contexts: how the anchor was coded (open edge 0, 1, gap-coded).
+  Prob predicted[3];
+  Prob fresh[3];
+  UintModel fresh_count;
+  UintModel third_gap;
   Prob lift;                // a corner far ahead is decoded into a pinned slot
   UintModel lift_gap;       // its raster pixel gap to the last vertex of the ring
   Prob rotation[2];
@@ -136,7 +144,7 @@ using VertexSink = void (*)(void* context, uint32_t index, uint16_t x, uint16_t 
                             const int32_t* gradients);
 
 // Decodes one layer's stream triangle by triangle, keeping the last `window` vertices in a ring
-// of caller memory (compressed_ring_bytes). Its own state is this object (about 1.3 KiB).
+// of caller memory (compressed_ring_bytes). Its own state is this object (about 1.8 KiB).
 class LayerDecoder {
  public:
   // Starts layer `layer` of `blob` (both must outlive the decoding); `ring` must hold
@@ -157,6 +165,13 @@ class LayerDecoder {
   uint8_t* pinned_record(uint32_t index) const;
   void find_next_pinned();
   Status decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
+  struct Columns {
+    int32_t lo, hi;  // 1/16 pixel
+  };
+  Columns columns(uint32_t a, uint32_t s) const;
+  uint32_t predict(uint32_t a, uint32_t s, int side) const;
+  uint64_t fresh(uint32_t a, uint32_t count, Columns cols) const;
+  void add_edge(uint32_t from, uint32_t to, bool positive);
   uint8_t* record(uint32_t index) const;
 
   const CompressedBlob* blob_ = nullptr;
@@ -176,10 +191,7 @@ class LayerDecoder {
   uint32_t pixel_ = 0;         // raster pixel index of the last vertex
   uint32_t previous_top_ = 0;  // first index of the previous triangle
   int32_t previous_row_ = 0;   // top y (position_fx) of the previous triangle
-  uint8_t previous_class_ = 0;
   uint8_t previous_picks_ = 0;  // context of the next triangle's first vertex
-  uint32_t recent_[2][3] = {{0, 0, 0}, {0, 0, 0}};  // the last two triangles' indices, ascending
-  uint32_t recent_count_ = 0;
   uint16_t last_values_[3] = {0, 0, 0};
   int32_t last_gradients_[3][2] = {{0, 0}, {0, 0}, {0, 0}};
   Status failed_ = Status::ok;
