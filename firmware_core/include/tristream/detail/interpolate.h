@@ -197,7 +197,7 @@ struct ZienkiewiczChannel {
   // Edge derivatives (and values, below 2^16) up to this in magnitude give coefficients within
   // max_narrow_coefficient, formed in 32 bits: every sum of expand is at most 20 max |u| (p21 and
   // p12: t = 6 u7 - k111 with |k111| <= 9 max |u|, plus 5 max |u|).
-  static constexpr int32_t max_narrow_derivative = int32_t(1) << 20;
+  static constexpr int32_t max_narrow_derivative = int32_t(1) << 18;
   // The coefficients p from the vertex values u1, u4, u7 (q8_8) and the edge derivatives
   // (q24_8) in T: int64_t for any inputs, int32_t (the same integers) within max_narrow_derivative.
   template <typename T>
@@ -270,13 +270,14 @@ struct ZienkiewiczChannel {
   }
 
   // eval_wide in 32 bits, for coefficients with |p| <= max_narrow_coefficient (fits_narrow) and
-  // any a, b read from int32 q2_30 weights shifted to q17_15 (so |a|, |b| <= 2^16): the same
-  // truncating Horner steps t' = p + floor(w t / 2^15) on 32 x 32 -> 64 products (SMULL on
-  // Cortex-M4, against three multiplies a 64-bit product), so the same value when every partial
-  // sum fits int32. With |w| <= 2^16, |floor(w t / 2^15)| <= 2 |t| + 1, and the partial sums of
-  // eval_wide's Horner scheme are then at most 49 P + 24 (narrow_eval_bound; tested against
-  // eval_wide at the limits).
-  static constexpr int32_t max_narrow_coefficient = int32_t(1) << 25;
+  // any a, b read from int32 q2_30 weights shifted to q17_15 (so -2^16 <= a, b < 2^16): the same
+  // truncating Horner steps t' = p + floor(w t / 2^15), so the same value when every partial sum
+  // fits. With |w| <= 2^16, |floor(w t / 2^15)| <= 2 |t| + 1, and the partial sums of eval_wide's
+  // Horner scheme are then at most 49 P + 24 (narrow_eval_bound; tested against eval_wide at the
+  // limits), below 2^29: so floor(w t / 2^15) is the high word of the 32 x 32 -> 64 product
+  // (w 2^15) (4 t), both factors in int32 (one SMULL on Cortex-M4 and no shifts back, against
+  // three multiplies a 64-bit product).
+  static constexpr int32_t max_narrow_coefficient = int32_t(1) << 23;
   static constexpr int64_t narrow_eval_bound(int64_t p) { return 49 * p + 24; }
   bool fits_narrow() const {
     // |c| <= max as one unsigned comparison, as fits_rows.
@@ -291,11 +292,14 @@ struct ZienkiewiczChannel {
   }
   __attribute__((always_inline)) int32_t eval_narrow(int32_t a, int32_t b) const {  // -Os: not a call a pixel
     constexpr int s = q17_15::frac_bits;
-    auto m = [](int32_t w, int32_t t) { return int32_t((int64_t(w) * t) >> s); };
-    const int32_t pb = int32_t(p00) + m(b, int32_t(p01) + m(b, int32_t(p02) + m(b, int32_t(p03))));
-    const int32_t pa = int32_t(p10) + m(b, int32_t(p11) + m(b, int32_t(p12))) +
-                       m(a, int32_t(p20) + m(b, int32_t(p21)) + m(a, int32_t(p30)));
-    return pb + m(a, pa);
+    static_assert(32 - s == 17, "floor(w t / 2^15) as the high word of (w 2^15) (4 t)");
+    // w 2^15 and 4 t by unsigned shifts (the same bits; no signed overflow).
+    const int32_t wa = int32_t(uint32_t(a) << s), wb = int32_t(uint32_t(b) << s);
+    auto m = [](int32_t w, int32_t t) { return int32_t((int64_t(w) * int32_t(uint32_t(t) << 2)) >> 32); };
+    const int32_t pb = int32_t(p00) + m(wb, int32_t(p01) + m(wb, int32_t(p02) + m(wb, int32_t(p03))));
+    const int32_t pa = int32_t(p10) + m(wb, int32_t(p11) + m(wb, int32_t(p12))) +
+                       m(wa, int32_t(p20) + m(wb, int32_t(p21)) + m(wa, int32_t(p30)));
+    return pb + m(wa, pa);
   }
 
   // Whether the coefficients are within the forward-difference bit budget.
@@ -386,10 +390,8 @@ struct ZienkiewiczChannel {
   }
 };
 
-static_assert(ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) +
-                      (1 << (q24_8::frac_bits - 1)) <=
-                  INT32_MAX,
-              "narrow evaluation (and its rounding offset) fits int32");
+static_assert(4 * ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) <= INT32_MAX,
+              "narrow evaluation: four times every partial sum (and the rounding offset) fits int32");
 static_assert(20 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <= ZienkiewiczChannel::max_narrow_coefficient &&
                   (int64_t(1) << 16) <= ZienkiewiczChannel::max_narrow_derivative,
               "coefficients from narrow derivatives and q8_8 values are narrow");
