@@ -55,7 +55,7 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& 
     }
   } else {
     if constexpr (config::methods & 2) {
-      ZienkiewiczShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, {}, 0};
+      ZienkiewiczShader<Channels, Writer> s{{layer, blob.values_per_vertex, first_channel, {}, {}, 0, false}, writer, step};
       draw_layer(list, map, rect, s);
     }
   }

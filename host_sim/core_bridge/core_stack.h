@@ -14,7 +14,7 @@
 namespace tristream {
 
 inline constexpr std::size_t core_stack_bytes_bilinear = 1408;     // measured 1,360 (-O2)
-inline constexpr std::size_t core_stack_bytes_zienkiewicz = 2112;  // measured 2,064 (-O2)
+inline constexpr std::size_t core_stack_bytes_zienkiewicz = 1920;  // measured 1,904 (-O2)
 
 constexpr std::size_t core_stack_bytes(core::Method method) {
   return method == core::Method::zienkiewicz ? core_stack_bytes_zienkiewicz : core_stack_bytes_bilinear;

@@ -4,6 +4,7 @@
 // cubic (within the bound of docs/FIXED_POINT.md), and values independent of where a span starts.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -21,10 +22,21 @@ __extension__ typedef __int128 i128;
 
 constexpr int vf = ZienkiewiczChannel::value_frac_bits;
 
+// The ten coefficients p00, p01, p02, p03, p10, p11, p12, p20, p21, p30, whatever the layout of
+// ZienkiewiczChannel (int64 fields, or with TS_USE_INT128=0 int32 ones and a wide fallback).
+using Coefficients = std::array<int64_t, 10>;
+Coefficients coefficients(const ZienkiewiczChannel& z) {
+  const ZienkiewiczChannel::WideCoefficients c = z.coefficients();
+  return {c.p00, c.p01, c.p02, c.p03, c.p10, c.p11, c.p12, c.p20, c.p21, c.p30};
+}
+void set_coefficients(ZienkiewiczChannel& z, const Coefficients& p) {
+  z.set_coefficients({p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9]});
+}
+
 // Exact P(a, b) * 2^98 (p in 2^-8, a and b in 2^-30 grey units): every term below 2^122.
 i128 exact_p(const ZienkiewiczChannel& z, int32_t a, int32_t b) {
-  const int64_t p[4][4] = {
-      {z.p00, z.p01, z.p02, z.p03}, {z.p10, z.p11, z.p12, 0}, {z.p20, z.p21, 0, 0}, {z.p30, 0, 0, 0}};
+  const Coefficients c = coefficients(z);
+  const int64_t p[4][4] = {{c[0], c[1], c[2], c[3]}, {c[4], c[5], c[6], 0}, {c[7], c[8], 0, 0}, {c[9], 0, 0, 0}};
   i128 sum = 0;
   for (int i = 0; i <= 3; ++i)
     for (int j = 0; i + j <= 3; ++j) {
@@ -172,14 +184,15 @@ TEST_CASE("eval_narrow equals eval_wide within its coefficient budget") {
   std::mt19937_64 rng(11);
   constexpr int64_t max = ZienkiewiczChannel::max_narrow_coefficient;
   ZienkiewiczChannel z{};
-  int64_t* p[10] = {&z.p00, &z.p01, &z.p02, &z.p03, &z.p10, &z.p11, &z.p12, &z.p20, &z.p21, &z.p30};
+  Coefficients p{};
   // Weights as the shader forms them (int32 q2_30 >> 15: |w| <= 2^16), the extremes included.
   const int32_t extremes[] = {-(1 << 16), (1 << 16) - 1, 1 << 15, -1, 0, 1};
   for (int i = 0; i < 200000; ++i) {
-    for (int64_t* q : p) {
+    for (int64_t& q : p) {
       const uint64_t r = rng();
-      *q = r % 3 == 0 ? (r & 8 ? max : -max) : int64_t(r % uint64_t(2 * max + 1)) - max;
+      q = r % 3 == 0 ? (r & 8 ? max : -max) : int64_t(r % uint64_t(2 * max + 1)) - max;
     }
+    set_coefficients(z, p);
     REQUIRE(z.fits_narrow());
     const int32_t a = i % 3 ? int32_t(uint32_t(rng())) >> 15 : extremes[rng() % 6];
     const int32_t b = i % 5 ? int32_t(uint32_t(rng())) >> 15 : extremes[rng() % 6];
@@ -188,17 +201,20 @@ TEST_CASE("eval_narrow equals eval_wide within its coefficient budget") {
   // All coefficients at the limit with the same sign: the largest partial sums.
   for (int64_t sign : {1, -1})
     for (int32_t w : {-(1 << 16), 1 << 15, (1 << 16) - 1}) {
-      for (int64_t* q : p) *q = sign * max;
+      for (int64_t& q : p) q = sign * max;
+      set_coefficients(z, p);
       REQUIRE(z.fits_narrow());
       REQUIRE(int64_t(z.eval_narrow(w, w)) == z.eval_wide(w, w));
     }
-  for (int64_t* q : p) {
-    const int64_t keep = *q;
-    *q = max + 1;
+  for (int64_t& q : p) {
+    const int64_t keep = q;
+    q = max + 1;
+    set_coefficients(z, p);
     CHECK_FALSE(z.fits_narrow());
-    *q = -max - 1;
+    q = -max - 1;
+    set_coefficients(z, p);
     CHECK_FALSE(z.fits_narrow());
-    *q = keep;
+    q = keep;
   }
 }
 
@@ -216,15 +232,13 @@ TEST_CASE("the coefficients in 32 bits equal those in 64 bits within max_narrow_
     n.expand<int32_t>(u[0], u[1], u[2], u[3], u[4], u[5], u[6], u[7], u[8]);
     w.expand<int64_t>(u[0], u[1], u[2], u[3], u[4], u[5], u[6], u[7], u[8]);
     REQUIRE(n.fits_narrow());
-    const int64_t pn[10] = {n.p00, n.p01, n.p02, n.p03, n.p10, n.p11, n.p12, n.p20, n.p21, n.p30};
-    const int64_t pw[10] = {w.p00, w.p01, w.p02, w.p03, w.p10, w.p11, w.p12, w.p20, w.p21, w.p30};
-    for (int k = 0; k < 10; ++k) REQUIRE(pn[k] == pw[k]);
+    REQUIRE(coefficients(n) == coefficients(w));
   }
 }
 
 TEST_CASE("setup takes the 32-bit coefficients only for small edge derivatives, with the same result") {
   std::mt19937_64 rng(37);
-  int narrow_cases = 0;
+  int narrow_cases = 0, beyond_int32_cases = 0;
   for (int i = 0; i < 20000; ++i) {
     // Edges up to 2^15 (fx), gradients up to 2^27 (q19_12): derivatives from tiny to 2^35.
     const int shift = int(rng() % 16);
@@ -248,15 +262,29 @@ TEST_CASE("setup takes the 32-bit coefficients only for small edge derivatives, 
     };
     ZienkiewiczChannel w{};
     w.expand<int64_t>(v3[0], dot(0, 0), dot(0, 1), v3[1], dot(1, 1), dot(1, 2), v3[2], dot(2, 2), dot(2, 0));
-    const int64_t pz[10] = {z.p00, z.p01, z.p02, z.p03, z.p10, z.p11, z.p12, z.p20, z.p21, z.p30};
-    const int64_t pw[10] = {w.p00, w.p01, w.p02, w.p03, w.p10, w.p11, w.p12, w.p20, w.p21, w.p30};
-    const int64_t p64[10] = {z64.p00, z64.p01, z64.p02, z64.p03, z64.p10, z64.p11, z64.p12, z64.p20, z64.p21, z64.p30};
-    for (int k = 0; k < 10; ++k) REQUIRE(pz[k] == pw[k]);
-    for (int k = 0; k < 10; ++k) REQUIRE(p64[k] == pw[k]);
+    REQUIRE(coefficients(z) == coefficients(w));
+    REQUIRE(coefficients(z64) == coefficients(w));
+    // Coefficients beyond int32 (kept apart where the coefficients are int32: TS_USE_INT128=0)
+    // are outside both 32-bit budgets, and eval_wide is the int64 Horner scheme in either layout.
+    const Coefficients pw = coefficients(w);
+    bool beyond_int32 = false;
+    for (const int64_t q : pw) beyond_int32 |= q < INT32_MIN || q > INT32_MAX;
+    beyond_int32_cases += beyond_int32;
+    if (beyond_int32) {
+      CHECK_FALSE(z.fits_rows());
+      CHECK_FALSE(z.fits_narrow());
+    }
+    const ZienkiewiczChannel::WideCoefficients c = w.coefficients();
+    for (int j = 0; j < 4; ++j) {
+      const int64_t a = int64_t(rng() % (2u << 16)) - (1 << 16), b = int64_t(rng() % (2u << 16)) - (1 << 16);
+      REQUIRE(z.eval_wide(a, b) == ZienkiewiczChannel::horner(c, a, b));
+      REQUIRE(z64.eval_wide(a, b) == ZienkiewiczChannel::horner(c, a, b));
+    }
   }
-  // Narrow and wide triangles both occur.
+  // Narrow and wide triangles both occur, and coefficients beyond int32.
   CHECK(narrow_cases > 2000);
   CHECK(narrow_cases < 18000);
+  CHECK(beyond_int32_cases > 100);
 }
 
 TEST_CASE("steps_at equals the polynomials of 2^-32 coefficients evaluated in 128-bit arithmetic") {
@@ -265,16 +293,17 @@ TEST_CASE("steps_at equals the polynomials of 2^-32 coefficients evaluated in 12
   auto m = [](i128 x, int32_t w) { return int64_t((x * w) >> 30); };
   for (int i = 0; i < 20000; ++i) {
     ZienkiewiczChannel z{};
-    int64_t* p[10] = {&z.p00, &z.p01, &z.p02, &z.p03, &z.p10, &z.p11, &z.p12, &z.p20, &z.p21, &z.p30};
+    Coefficients p;
     const int64_t max = ZienkiewiczChannel::max_fd_coefficient - 1;
-    for (int64_t* q : p) *q = int64_t(rng() % uint64_t(2 * max + 1)) - max;
+    for (int64_t& q : p) q = int64_t(rng() % uint64_t(2 * max + 1)) - max;
+    set_coefficients(z, p);
     const int32_t da = int32_t(rng() % (2u << 20)) - (1 << 20), db = int32_t(rng() % (2u << 20)) - (1 << 20);
     REQUIRE(z.setup_rows(da, db));
     const int32_t a = int32_t(rng() % (1u << 30)), b = int32_t(rng() % (1u << 30));
     const CubicSteps s = z.steps_at(a, b, 3);
     auto f = [](int64_t c) { return i128(c) << 24; };
-    const int64_t pb = int64_t(f(z.p00) + m(f(z.p01) + m(f(z.p02) + m(f(z.p03), b), b), b));
-    const int64_t pa = int64_t(f(z.p10) + m(f(z.p11) + m(f(z.p12), b), b) + m(f(z.p20) + m(f(z.p21), b) + m(f(z.p30), a), a));
+    const int64_t pb = int64_t(f(p[0]) + m(f(p[1]) + m(f(p[2]) + m(f(p[3]), b), b), b));
+    const int64_t pa = int64_t(f(p[4]) + m(f(p[5]) + m(f(p[6]), b), b) + m(f(p[7]) + m(f(p[8]), b) + m(f(p[9]), a), a));
     REQUIRE(s.v == uint64_t(pb + m(pa, a)));
   }
 }
@@ -316,12 +345,15 @@ TEST_CASE("coefficients and steps at the bit budget: no overflow, still within t
   for (int t = 0; t < 200; ++t) {
     RowCase rc;
     for (auto& ch : rc.ch) {
-      int64_t* p[10] = {&ch.p00, &ch.p01, &ch.p02, &ch.p03, &ch.p10, &ch.p11, &ch.p12, &ch.p20, &ch.p21, &ch.p30};
-      for (int64_t* q : p) *q = (rng() % 2 ? big : -big) >> (rng() % 4 == 0 ? 10 : 0);
+      Coefficients p;
+      for (int64_t& q : p) q = (rng() % 2 ? big : -big) >> (rng() % 4 == 0 ? 10 : 0);
+      set_coefficients(ch, p);
       REQUIRE(ch.fits_rows());
     }
     ZienkiewiczChannel too_big = rc.ch[0];
-    too_big.p21 = ZienkiewiczChannel::max_fd_coefficient;
+    Coefficients over_budget = coefficients(too_big);
+    over_budget[8] = ZienkiewiczChannel::max_fd_coefficient;  // p21
+    set_coefficients(too_big, over_budget);
     CHECK_FALSE(too_big.setup_rows(0, 0));
     // Steps at the budget's limit (a two-pixel row from vertex 0 to vertex 1) or those of a row
     // of `length` pixels with weights from 1 to 0.

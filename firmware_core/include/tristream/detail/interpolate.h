@@ -64,14 +64,25 @@ struct CubicSteps {
   __attribute__((noinline)) void high_bytes(uint8_t* out, int32_t count) {
     uint64_t value = v, first = d1, second = d2;
     const uint64_t third = d3;
-#pragma GCC unroll 2
-    for (int32_t i = 0; i < count; ++i) {
+    auto one = [&](int32_t i) __attribute__((always_inline)) {
       const int32_t h = int32_t(uint32_t(value >> 32));
       out[i] = uint8_t(h < 0 ? 0 : (h > 255 ? 255 : h));
       value += first;
       first += second;
       second += third;
+    };
+#if defined(__OPTIMIZE_SIZE__)
+    // Unrolled by two here: -Os ignores #pragma GCC unroll (-2 % modelled Cortex-M4 cycles at -Os).
+    int32_t i = 0;
+    for (; i + 1 < count; i += 2) {
+      one(i);
+      one(i + 1);
     }
+    if (i < count) one(i);
+#else
+#pragma GCC unroll 2
+    for (int32_t i = 0; i < count; ++i) one(i);
+#endif
     v = value;
     d1 = first;
     d2 = second;
@@ -113,22 +124,45 @@ constexpr bool zienkiewicz_narrow_forms = !TS_USE_INT128;
 //   polynomials in (a, b) with coefficients in 2^-32 grey levels (each the exact value rounded
 //   once); steps_at() evaluates them at a restart point, then a pixel costs three additions.
 struct ZienkiewiczChannel {
+  // The ten coefficients in int64, and the forward-difference polynomials in 2^-32 grey: D1
+  // (quadratic), D2 (linear), D3.
+  struct WideCoefficients {
+    int64_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
+  };
+  struct RowCoefficients {
+    int64_t g00, g01, g02, g10, g11, g20;
+    int64_t h00, h01, h10;
+    int64_t d3;
+  };
+#if TS_USE_INT128
   int64_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
+#else
+  // Where a 64-bit product is not one instruction (Cortex-M, zienkiewicz_narrow_forms): the
+  // coefficients in int32 when every one fits (40 bytes a channel less of the stack, which holds
+  // three channels' for a triangle), else `wide` and all ten in `w`, in the place of the
+  // forward-difference polynomials: such a triangle is outside their budget (fits_rows), so they
+  // are never set for it.
+  int32_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
+  bool wide;
+#endif
 
   // Forward differencing: fraction bits of values and differences (grey levels).
   static constexpr int value_frac_bits = 32;
   // Coefficients p (q24_8) must be below this in magnitude (2^20 grey levels) for forward
   // differencing; the bit budget below rests on it.
   static constexpr int64_t max_fd_coefficient = int64_t(1) << 28;
-  // Forward-difference polynomials in 2^-32 grey: D1 (quadratic), D2 (linear), D3; the value's
-  // are p * 2^24, stored only on 64-bit hosts (a load is cheaper than a shift there; on Cortex-M
-  // formed where used, 80 bytes a channel less of the stack).
+  // The forward-difference polynomials (set by setup_rows); the value's are p * 2^24, stored only
+  // on 64-bit hosts (a load is cheaper than a shift there; on Cortex-M formed where used, 80 bytes
+  // a channel less of the stack).
 #if TS_USE_INT128
   int64_t f00, f01, f02, f03, f10, f11, f12, f20, f21, f30;
+  RowCoefficients fd;
+#else
+  union {
+    RowCoefficients fd;  // when !wide
+    WideCoefficients w;  // when wide
+  };
 #endif
-  int64_t g00, g01, g02, g10, g11, g20;
-  int64_t h00, h01, h10;
-  int64_t d3;
 
   // dx, dy: domain-space edge vectors AB, BC, CA in position_fx; values q8_8; gradients q19_12
   // (gx, gy per vertex; values[k] and gradients[j] for k < 3, j < 6: arrays, or readers of the
@@ -157,17 +191,28 @@ struct ZienkiewiczChannel {
         return true;
       }
     }
+#if TS_USE_INT128
     expand<int64_t>(values[0], u2, u3, values[1], u5, u6, values[2], u8, u9);
+#else
+    expand_wide(values[0], u2, u3, values[1], u5, u6, values[2], u8, u9);
+#endif
     return Narrow && fits_narrow();
+  }
+  // expand<int64_t> out of line where 64-bit arithmetic is several instructions (Cortex-M, where
+  // setup takes it only for large derivatives): inlined into setup it costs the deepest stack 56
+  // bytes and 1 % to 4 % modelled cycles at -O2.
+  __attribute__((noinline)) void expand_wide(int64_t u1, int64_t u2, int64_t u3, int64_t u4, int64_t u5, int64_t u6,
+                                             int64_t u7, int64_t u8, int64_t u9) {
+    expand<int64_t>(u1, u2, u3, u4, u5, u6, u7, u8, u9);
   }
   // Edge derivatives (and values, below 2^16) up to this in magnitude give coefficients within
   // max_narrow_coefficient, formed in 32 bits: every sum of expand is at most 20 max |u| (p21 and
   // p12: t = 6 u7 - k111 with |k111| <= 9 max |u|, plus 5 max |u|).
-  static constexpr int32_t max_narrow_derivative = int32_t(1) << 20;
+  static constexpr int32_t max_narrow_derivative = int32_t(1) << 18;
   // The coefficients p from the vertex values u1, u4, u7 (q8_8) and the edge derivatives
   // (q24_8) in T: int64_t for any inputs, int32_t (the same integers) within max_narrow_derivative.
   template <typename T>
-  void expand(T u1, T u2, T u3, T u4, T u5, T u6, T u7, T u8, T u9) {
+  TS_ZIENKIEWICZ_SETUP_INLINE void expand(T u1, T u2, T u3, T u4, T u5, T u6, T u7, T u8, T u9) {
     // Homogeneous cubic in (a, b, c) with the control values k300 = u1, k030 = u4, k003 = u7,
     // k210 = 3 u1 + u2, k201 = 3 u1 - u9, k120 = 3 u4 - u3, k021 = 3 u4 + u5, k102 = 3 u7 + u8,
     // k012 = 3 u7 - u6 and k111 below, then c = 1 - a - b, expanded and simplified (exact integer
@@ -178,23 +223,55 @@ struct ZienkiewiczChannel {
     // p02 = 3 k003 - 2 k012 + k021, p01 = -3 k003 + k012, p00 = k003.
     const T k111 = 2 * (u1 + u4 + u7) + (u2 - u3 + u5 - u6 + u8 - u9) / 2;
     const T t = 6 * u7 - k111;
-    p30 = 2 * (u7 - u1) + u8 + u9;
-    p21 = t + u2 - u6 + 2 * u8 + u9;
-    p20 = 3 * (u1 - u7) - 2 * u8 - u9;
-    p12 = t - u3 - u5 - 2 * u6 + u8;
-    p11 = 2 * (u6 - u8) - t;
-    p10 = u8;
-    p03 = 2 * (u7 - u4) - u5 - u6;
-    p02 = 3 * (u4 - u7) + u5 + 2 * u6;
-    p01 = -u6;
-    p00 = u7;
+    store<T>(u7, -u6, 3 * (u4 - u7) + u5 + 2 * u6, 2 * (u7 - u4) - u5 - u6, u8, 2 * (u6 - u8) - t,
+             t - u3 - u5 - 2 * u6 + u8, 3 * (u1 - u7) - 2 * u8 - u9, t + u2 - u6 + 2 * u8 + u9,
+             2 * (u7 - u1) + u8 + u9);
+  }
+  // All ten coefficients in int64 (from either layout), and setting them as expand does (tests).
+  WideCoefficients coefficients() const {
+#if !TS_USE_INT128
+    if (wide) return w;
+#endif
+    return {p00, p01, p02, p03, p10, p11, p12, p20, p21, p30};
+  }
+  void set_coefficients(const WideCoefficients& c) {
+    store<int64_t>(c.p00, c.p01, c.p02, c.p03, c.p10, c.p11, c.p12, c.p20, c.p21, c.p30);
+  }
+  template <typename T>
+  __attribute__((always_inline)) void store(T q00, T q01, T q02, T q03, T q10, T q11, T q12, T q20, T q21, T q30) {
+#if !TS_USE_INT128
+    if constexpr (sizeof(T) > sizeof(int32_t)) {
+      auto fits = [](T q) { return uint32_t(q >= INT32_MIN && q <= INT32_MAX); };
+      wide = !(fits(q00) & fits(q01) & fits(q02) & fits(q03) & fits(q10) & fits(q11) & fits(q12) & fits(q20) &
+               fits(q21) & fits(q30));
+      if (wide) {
+        w = {q00, q01, q02, q03, q10, q11, q12, q20, q21, q30};
+        return;
+      }
+    } else {
+      wide = false;
+    }
+    using P = int32_t;  // each fits (checked above, or T is int32_t)
+#else
+    using P = int64_t;
+#endif
+    p30 = P(q30), p21 = P(q21), p20 = P(q20), p12 = P(q12), p11 = P(q11);
+    p10 = P(q10), p03 = P(q03), p02 = P(q02), p01 = P(q01), p00 = P(q00);
   }
   // q24_8 value at barycentric weights a, b (q17_15), unclamped (below 2^45 in magnitude).
   int64_t eval_wide(int64_t a, int64_t b) const {
+#if !TS_USE_INT128
+    if (wide) return horner(w, a, b);
+#endif
+    return horner(*this, a, b);
+  }
+  // eval_wide of the coefficients c.p00 .. c.p30.
+  template <typename C>
+  static int64_t horner(const C& c, int64_t a, int64_t b) {
     constexpr int s = q17_15::frac_bits;
-    const int64_t pb = p00 + ((b * (p01 + ((b * (p02 + ((b * p03) >> s))) >> s))) >> s);
-    const int64_t pa = p10 + ((b * (p11 + ((b * p12) >> s))) >> s) +
-                       ((a * (p20 + ((b * p21) >> s) + ((a * p30) >> s))) >> s);
+    const int64_t pb = c.p00 + ((b * (c.p01 + ((b * (c.p02 + ((b * c.p03) >> s))) >> s))) >> s);
+    const int64_t pa = c.p10 + ((b * (c.p11 + ((b * c.p12) >> s))) >> s) +
+                       ((a * (c.p20 + ((b * c.p21) >> s) + ((a * c.p30) >> s))) >> s);
     return pb + ((a * pa) >> s);
   }
   // The same clamped to int32.
@@ -204,29 +281,36 @@ struct ZienkiewiczChannel {
   }
 
   // eval_wide in 32 bits, for coefficients with |p| <= max_narrow_coefficient (fits_narrow) and
-  // any a, b read from int32 q2_30 weights shifted to q17_15 (so |a|, |b| <= 2^16): the same
-  // truncating Horner steps t' = p + floor(w t / 2^15) on 32 x 32 -> 64 products (SMULL on
-  // Cortex-M4, against three multiplies a 64-bit product), so the same value when every partial
-  // sum fits int32. With |w| <= 2^16, |floor(w t / 2^15)| <= 2 |t| + 1, and the partial sums of
-  // eval_wide's Horner scheme are then at most 49 P + 24 (narrow_eval_bound; tested against
-  // eval_wide at the limits).
-  static constexpr int32_t max_narrow_coefficient = int32_t(1) << 25;
+  // any a, b read from int32 q2_30 weights shifted to q17_15 (so -2^16 <= a, b < 2^16): the same
+  // truncating Horner steps t' = p + floor(w t / 2^15), so the same value when every partial sum
+  // fits. With |w| <= 2^16, |floor(w t / 2^15)| <= 2 |t| + 1, and the partial sums of eval_wide's
+  // Horner scheme are then at most 49 P + 24 (narrow_eval_bound; tested against eval_wide at the
+  // limits), below 2^29: so floor(w t / 2^15) is the high word of the 32 x 32 -> 64 product
+  // (w 2^15) (4 t), both factors in int32 (one SMULL on Cortex-M4 and no shifts back, against
+  // three multiplies a 64-bit product).
+  static constexpr int32_t max_narrow_coefficient = int32_t(1) << 23;
   static constexpr int64_t narrow_eval_bound(int64_t p) { return 49 * p + 24; }
   bool fits_narrow() const {
     // |c| <= max as one unsigned comparison, as fits_rows.
     auto out = [](int64_t c) {
       return uint32_t(uint64_t(c) + uint64_t(max_narrow_coefficient) > uint64_t(2 * max_narrow_coefficient));
     };
+#if !TS_USE_INT128
+    if (wide) return false;
+#endif
     return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
              out(p30));
   }
   __attribute__((always_inline)) int32_t eval_narrow(int32_t a, int32_t b) const {  // -Os: not a call a pixel
     constexpr int s = q17_15::frac_bits;
-    auto m = [](int32_t w, int32_t t) { return int32_t((int64_t(w) * t) >> s); };
-    const int32_t pb = int32_t(p00) + m(b, int32_t(p01) + m(b, int32_t(p02) + m(b, int32_t(p03))));
-    const int32_t pa = int32_t(p10) + m(b, int32_t(p11) + m(b, int32_t(p12))) +
-                       m(a, int32_t(p20) + m(b, int32_t(p21)) + m(a, int32_t(p30)));
-    return pb + m(a, pa);
+    static_assert(32 - s == 17, "floor(w t / 2^15) as the high word of (w 2^15) (4 t)");
+    // w 2^15 and 4 t by unsigned shifts (the same bits; no signed overflow).
+    const int32_t wa = int32_t(uint32_t(a) << s), wb = int32_t(uint32_t(b) << s);
+    auto m = [](int32_t w, int32_t t) { return int32_t((int64_t(w) * int32_t(uint32_t(t) << 2)) >> 32); };
+    const int32_t pb = int32_t(p00) + m(wb, int32_t(p01) + m(wb, int32_t(p02) + m(wb, int32_t(p03))));
+    const int32_t pa = int32_t(p10) + m(wb, int32_t(p11) + m(wb, int32_t(p12))) +
+                       m(wa, int32_t(p20) + m(wb, int32_t(p21)) + m(wa, int32_t(p30)));
+    return pb + m(wa, pa);
   }
 
   // Whether the coefficients are within the forward-difference bit budget.
@@ -236,6 +320,9 @@ struct ZienkiewiczChannel {
     auto out = [](int64_t c) {
       return uint32_t(uint64_t(c) + uint64_t(max_fd_coefficient - 1) > uint64_t(2 * (max_fd_coefficient - 1)));
     };
+#if !TS_USE_INT128
+    if (wide) return false;
+#endif
     return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
              out(p30));
   }
@@ -257,7 +344,7 @@ struct ZienkiewiczChannel {
     static_assert(max_fd_coefficient <= (int64_t(1) << 28) && q2_30::frac_bits == 30 && down == 6,
                   "bit budget of setup_rows");
     const int64_t A = da_q30, B = db_q30;
-    // c1 = P_a da + P_b db (quadratic in a, b).
+    // c1 = P_a da + P_b db (quadratic in a, b). Small multiples of p (3 p < 2^30) stay in int32 where p is.
     const int64_t r00 = p10 * A + p01 * B, r10 = 2 * p20 * A + p11 * B, r01 = p11 * A + 2 * p02 * B;
     const int64_t r20 = 3 * p30 * A + p21 * B, r11 = 2 * p21 * A + 2 * p12 * B, r02 = p12 * A + 3 * p03 * B;
     // c2 = (P_aa da^2 + 2 P_ab da db + P_bb db^2) / 2 (linear in a, b).
@@ -275,10 +362,10 @@ struct ZienkiewiczChannel {
     f20 = p20 * to_value, f21 = p21 * to_value, f30 = p30 * to_value;
 #endif
     // P(a + m da, b + m db) = P + c1 m + c2 m^2 + c3 m^3.
-    g00 = round_down(r00 + s00 + c3), g10 = round_down(r10 + s10), g01 = round_down(r01 + s01);
-    g20 = round_down(r20), g11 = round_down(r11), g02 = round_down(r02);
-    h00 = round_down(2 * s00 + 6 * c3), h10 = round_down(2 * s10), h01 = round_down(2 * s01);
-    d3 = round_down(6 * c3);
+    fd.g00 = round_down(r00 + s00 + c3), fd.g10 = round_down(r10 + s10), fd.g01 = round_down(r01 + s01);
+    fd.g20 = round_down(r20), fd.g11 = round_down(r11), fd.g02 = round_down(r02);
+    fd.h00 = round_down(2 * s00 + 6 * c3), fd.h10 = round_down(2 * s10), fd.h01 = round_down(2 * s01);
+    fd.d3 = round_down(6 * c3);
     return true;
   }
 
@@ -305,19 +392,17 @@ struct ZienkiewiczChannel {
 #endif
     s.v = uint64_t(pb + mul_q30(pa, a));
     // Every field written (0 beyond the order), so callers' arrays need no zeroing first.
-    s.d1 = order >= 1 ? uint64_t(g00 + mul_q30(g01 + mul_q30(g02, b), b) +
-                                 mul_q30(g10 + mul_q30(g11, b) + mul_q30(g20, a), a))
+    s.d1 = order >= 1 ? uint64_t(fd.g00 + mul_q30(fd.g01 + mul_q30(fd.g02, b), b) +
+                                 mul_q30(fd.g10 + mul_q30(fd.g11, b) + mul_q30(fd.g20, a), a))
                       : 0;
-    s.d2 = order >= 2 ? uint64_t(h00 + mul_q30(h10, a) + mul_q30(h01, b)) : 0;
-    s.d3 = order >= 3 ? uint64_t(d3) : 0;
+    s.d2 = order >= 2 ? uint64_t(fd.h00 + mul_q30(fd.h10, a) + mul_q30(fd.h01, b)) : 0;
+    s.d3 = order >= 3 ? uint64_t(fd.d3) : 0;
     return s;
   }
 };
 
-static_assert(ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) +
-                      (1 << (q24_8::frac_bits - 1)) <=
-                  INT32_MAX,
-              "narrow evaluation (and its rounding offset) fits int32");
+static_assert(4 * ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) <= INT32_MAX,
+              "narrow evaluation: four times every partial sum (and the rounding offset) fits int32");
 static_assert(20 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <= ZienkiewiczChannel::max_narrow_coefficient &&
                   (int64_t(1) << 16) <= ZienkiewiczChannel::max_narrow_derivative,
               "coefficients from narrow derivatives and q8_8 values are narrow");
@@ -409,8 +494,9 @@ struct BarycentricStepper {
     a_ref = uint32_t(by_area2(e_ref[1] * one));
     b_ref = uint32_t(by_area2(e_ref[2] * one));
   }
-  // Weights at pixel (x, y) (the first covered pixel of a row: independent of tiling).
-  void at(int32_t x, int32_t y, uint32_t* a, uint32_t* b) const {
+  // Weights at pixel (x, y) (the first covered pixel of a row: independent of tiling). Inlined
+  // (-Os would call it once a row).
+  __attribute__((always_inline)) void at(int32_t x, int32_t y, uint32_t* a, uint32_t* b) const {
     *a = a_ref + dadx * uint32_t(x - xr) + dady * uint32_t(y - yr);
     *b = b_ref + dbdx * uint32_t(x - xr) + dbdy * uint32_t(y - yr);
   }
