@@ -9,6 +9,7 @@
 #include <stdint.h>
 
 #include "active_set.h"
+#include "band_tiles.h"
 #include "frame_plan.h"
 #include "tile_renderer.h"
 #include "workspace_layout.h"
@@ -73,56 +74,24 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
     if (sets[l].capacity < blob.layers[l].triangle_count && sets[l].capacity < detail::max_window(blob.layers[l], r))
       return Status::workspace_too_small;
   const detail::TileRenderer draw = detail::tile_renderer(r.format);
-  // With a second buffer the tiles alternate between the two (first, second, first, ...).
-  uint8_t* const base[2] = {static_cast<uint8_t*>(tile_buffer),
-                            static_cast<uint8_t*>(buffers.tile[1] ? buffers.tile[1] : tile_buffer)};
-  int next = 0;
+  detail::TileBuffers tiles(buffers);
   for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
     const int32_t by1 = by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1;
     for (int l = 0; l < blob.layer_count; ++l)
       if (!sets[l].advance(r.map, by, by1 - 1)) return Status::workspace_too_small;  // excluded above
-    for (int32_t bx = r.view.x0; bx < r.view.x1; bx += r.tile_w) {
-      const int32_t bx1 = bx + r.tile_w < r.view.x1 ? bx + r.tile_w : r.view.x1;
-      Tile tile;
-      tile.pixels = base[next];
-      tile.stride = (params.packed_tiles ? bx1 - bx : r.tile_w) * bpp;
-      tile.rect = Rect{bx, by, bx1, by1};
-      tile.format = r.format;
-      draw(blob, params, r.map, sets, tile.rect, tile.pixels, tile.stride, scratch_ptr);
-      // The sink gets output positions (the drawing positions less the frame's shift).
-      tile.rect = Rect{bx - r.shift_x, by - r.shift_y, bx1 - r.shift_x, by1 - r.shift_y};
-      if (!sink(context, &tile)) return Status::stopped;
-      next ^= 1;
-    }
+    s = detail::draw_band(draw, blob, params, r, sets, by, by1, scratch_ptr, &tiles, sink, context);
+    if (s != Status::ok) return s;
   }
   return Status::ok;
 }
 
-namespace {
-
-struct TileSinkAdapter {
-  TileSink sink;
-  void* context;
-};
-
-bool forward_tile(void* context, const Tile* tile) {
-  const TileSinkAdapter* a = static_cast<const TileSinkAdapter*>(context);
-  a->sink(a->context, tile);
-  return true;
-}
-
-}  // namespace
 
 Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,
               void* workspace, size_t workspace_bytes, TileSink sink, void* context) {
   if (!sink) return Status::null_argument;
-  RenderBuffers buffers;
-  buffers.tile[0] = tile_buffer;
-  buffers.tile_bytes = tile_buffer_bytes;
-  buffers.workspace = workspace;
-  buffers.workspace_bytes = workspace_bytes;
-  TileSinkAdapter adapter{sink, context};
-  return render(blob, params, buffers, forward_tile, &adapter);
+  detail::TileSinkAdapter adapter{sink, context};
+  return render(blob, params, detail::single_buffers(tile_buffer, tile_buffer_bytes, workspace, workspace_bytes),
+                detail::forward_tile, &adapter);
 }
 
 }  // namespace tristream::core
