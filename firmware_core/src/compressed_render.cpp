@@ -114,7 +114,7 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
   if (s != Status::ok) return s;
   if (scratch_bytes < need) return Status::workspace_too_small;
   uint8_t* at = static_cast<uint8_t*>(scratch) + pad_of(scratch);
-  LayerDecoder* decoder = new (at) LayerDecoder;
+  LayerDecoder* decoder = new (at) LayerDecoder;  // placement: constructed in the caller's scratch, no allocation
   uint8_t* ring = at + align8(sizeof(LayerDecoder));
   const size_t ring_bytes = align8(expand_workspace_size(blob));
   uint32_t* live = reinterpret_cast<uint32_t*>(ring + ring_bytes);  // per band: live triangles' difference
@@ -192,7 +192,7 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
   detail::ActiveSet sets[3];
   uint8_t* at = ws + pad_of(ws) + scratch;
   for (int l = 0; l < blob.layer_count; ++l) {
-    streams[l] = new (at) LayerStream;
+    streams[l] = new (at) LayerStream;  // placement: constructed in the caller's workspace, no allocation
     uint8_t* ring = at + align8(sizeof(LayerStream));
     const size_t ring_bytes = align8(compressed_ring_bytes(blob, l));
     s = streams[l]->decoder.begin(blob, l, ring, ring_bytes);

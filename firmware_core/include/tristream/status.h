@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
 // Result of every fallible core call. Host tools turn these into messages. Each value has a C
-// name in tristream.h (TS_ plus the enumerator in capitals; c_api.cpp checks them): a new status
-// needs one there and a text in status_text.
+// name in tristream.h (TS_ plus the enumerator in capitals; c_api.cpp checks them): a status added
+// here needs one there and a text in status_text.
 #include <stdint.h>
 
 namespace tristream::core {
