@@ -181,7 +181,7 @@ struct SpanStepper {
 // The long edge (t, b) bounds one side on every row; the short edge on the other side is the upper
 // one (t, m) above m and the lower one (m, b) from the first row past m on. A row exactly through
 // m takes both short edges. A short edge with a == 0 is a neutral bound (rows only, restrict_rows).
-// Same bounds, same spans as SpanStepper (test_core_golden_portable, the differential tests).
+// The same spans as SpanStepper (test_core_span_stepper checks both against every sample point).
 struct SplitSpanStepper {
   FloorStepper longb, shortb;
   const Edge* edges = nullptr;
@@ -201,7 +201,7 @@ struct SplitSpanStepper {
     f->init(e.b * y + e.c, e.b, den);
   }
 
-  // ys: the vertices' y (position_fx raw), vertex k the start of edge k; S the sub-pixel bits.
+  // ys: the vertices' y (position_fx raw), vertex k the start of edge k; y0 the first row.
   void init(const Edge* e, const int32_t* ys, int32_t y0) {
     edges = e;
     // t and b: the lowest and highest y (ties: the first index); m the other one.
