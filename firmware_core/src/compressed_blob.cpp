@@ -131,6 +131,7 @@ uint32_t LayerDecoder::offset() const {
 
 Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, size_t ring_bytes, VertexSink sink,
                            void* sink_context) {
+  layer_ = nullptr;  // offset() is 0 after a failed begin
   if (layer < 0 || layer >= blob.layer_count) return Status::bad_params;
   if (!ring) return Status::null_argument;
   if (ring_bytes < compressed_ring_bytes(blob, layer)) return Status::workspace_too_small;
@@ -699,7 +700,7 @@ Status expand_compressed_blob(const CompressedBlob& blob, void* out, size_t out_
   for (int k = 12; k < 36; ++k) b[k] = blob.bytes[k];  // the fields v1 and the compressed form share
   store_u32(b + 28, blob_header_size);
   uint32_t at = blob_header_size + blob_layer_entry_size * blob.layer_count;
-  LayerDecoder decoder;
+  LayerDecoder decoder;  // set by begin
   for (int l = 0; l < blob.layer_count; ++l) {
     const CompressedLayer& cl = blob.layers[l];
     const V1Layer o = v1_layer(blob, cl, at);

@@ -5,7 +5,6 @@
 // past the band waits in the layer's stream state for the next band. The band stores are read
 // through a Blob whose layers point into them, by the same tile path as a v1 blob (this
 // translation unit has its own copy of the private headers' internal-linkage code, as render.cpp).
-#include <new>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -22,13 +21,17 @@ namespace tristream::core {
 namespace {
 
 // A layer's decoding state, in the workspace (its ring follows it).
+// A trivial type, like LayerDecoder: 8-aligned workspace bytes are taken as one and its fields
+// set by render, with no construction.
 struct LayerStream {
   LayerDecoder decoder;
   DecodedTriangle held;  // decoded and not yet taken (its top row is past the last band's)
-  uint32_t remaining = 0;  // triangles not decoded yet
-  bool has_held = false;
+  uint32_t remaining;    // triangles not decoded yet
+  bool has_held;
 };
 static_assert(alignof(LayerStream) <= 8, "the workspace sections are 8-aligned");
+static_assert(__is_trivial(LayerDecoder) && __is_trivial(LayerStream),
+              "the decoding state lives in caller memory without construction");
 
 constexpr size_t align8(size_t n) { return (n + 7) / 8 * 8; }
 
@@ -114,7 +117,7 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
   if (s != Status::ok) return s;
   if (scratch_bytes < need) return Status::workspace_too_small;
   uint8_t* at = static_cast<uint8_t*>(scratch) + pad_of(scratch);
-  LayerDecoder* decoder = new (at) LayerDecoder;  // placement: constructed in the caller's scratch, no allocation
+  LayerDecoder* decoder = reinterpret_cast<LayerDecoder*>(at);  // set by begin
   uint8_t* ring = at + align8(sizeof(LayerDecoder));
   const size_t ring_bytes = align8(expand_workspace_size(blob));
   uint32_t* live = reinterpret_cast<uint32_t*>(ring + ring_bytes);  // per band: live triangles' difference
@@ -192,12 +195,13 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
   detail::ActiveSet sets[3];
   uint8_t* at = ws + pad_of(ws) + scratch;
   for (int l = 0; l < blob.layer_count; ++l) {
-    streams[l] = new (at) LayerStream;  // placement: constructed in the caller's workspace, no allocation
+    streams[l] = reinterpret_cast<LayerStream*>(at);
     uint8_t* ring = at + align8(sizeof(LayerStream));
     const size_t ring_bytes = align8(compressed_ring_bytes(blob, l));
     s = streams[l]->decoder.begin(blob, l, ring, ring_bytes);
     if (s != Status::ok) return s;
     streams[l]->remaining = blob.layers[l].triangle_count;
+    streams[l]->has_held = false;
     at = ring + ring_bytes;
   }
   for (int l = 0; l < blob.layer_count; ++l) {

@@ -120,12 +120,13 @@ struct StreamModels {
   Prob flag_bit[9];
 };
 
+// Set by start() (range_decoder.h); no initializers, so that LayerDecoder stays a trivial type.
 struct RangeDecoder {
-  const uint8_t* p = nullptr;
-  const uint8_t* end = nullptr;
-  uint32_t range = 0;
-  uint32_t code = 0;
-  bool overrun = false;  // asked for bytes past the end (never in a valid stream)
+  const uint8_t* p;
+  const uint8_t* end;
+  uint32_t range;
+  uint32_t code;
+  bool overrun;  // asked for bytes past the end (never in a valid stream)
 };
 
 }  // namespace detail
@@ -144,7 +145,9 @@ using VertexSink = void (*)(void* context, uint32_t index, uint16_t x, uint16_t 
                             const int32_t* gradients);
 
 // Decodes one layer's stream triangle by triangle, keeping the last `window` vertices in a ring
-// of caller memory (compressed_ring_bytes). Its own state is this object (about 1.8 KiB).
+// of caller memory (compressed_ring_bytes). Its own state is this object (about 1.8 KiB). A
+// trivial type: begin sets every field, so it can live in caller memory (8-aligned bytes taken as
+// a LayerDecoder) without being constructed; call begin before the other members.
 class LayerDecoder {
  public:
   // Starts layer `layer` of `blob` (both must outlive the decoding); `ring` must hold
@@ -174,27 +177,27 @@ class LayerDecoder {
   void add_edge(uint32_t from, uint32_t to, bool positive);
   uint8_t* record(uint32_t index) const;
 
-  const CompressedBlob* blob_ = nullptr;
-  const CompressedLayer* layer_ = nullptr;
-  uint8_t* ring_ = nullptr;
-  uint8_t* pins_ = nullptr;       // pinned records, then their indices (u32 each)
-  uint32_t pin_slot_ = 0;         // the pinned slot the next lift takes
-  uint32_t next_pinned_ = 0;      // smallest index pending in a pinned slot (0xFFFFFFFF: none)
-  uint32_t record_ = 0;
-  VertexSink sink_ = nullptr;
-  void* sink_context_ = nullptr;
+  const CompressedBlob* blob_;
+  const CompressedLayer* layer_;
+  uint8_t* ring_;
+  uint8_t* pins_;  // pinned records, then their indices (u32 each)
+  uint32_t pin_slot_;  // the pinned slot the next lift takes
+  uint32_t next_pinned_;  // smallest index pending in a pinned slot (0xFFFFFFFF: none)
+  uint32_t record_;
+  VertexSink sink_;
+  void* sink_context_;
   detail::RangeDecoder rc_;
   detail::StreamModels m_;
-  uint32_t decoded_ = 0;       // vertices decoded: indices [0, decoded_)
-  uint32_t slot_ = 0;          // ring slot of vertex decoded_
-  uint32_t triangles_ = 0;     // triangles decoded
-  uint32_t pixel_ = 0;         // raster pixel index of the last vertex
-  uint32_t previous_top_ = 0;  // first index of the previous triangle
-  int32_t previous_row_ = 0;   // top y (position_fx) of the previous triangle
-  uint8_t previous_picks_ = 0;  // context of the next triangle's first vertex
-  uint16_t last_values_[3] = {0, 0, 0};
-  int32_t last_gradients_[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-  Status failed_ = Status::ok;
+  uint32_t decoded_;  // vertices decoded: indices [0, decoded_)
+  uint32_t slot_;  // ring slot of vertex decoded_
+  uint32_t triangles_;  // triangles decoded
+  uint32_t pixel_;  // raster pixel index of the last vertex
+  uint32_t previous_top_;  // first index of the previous triangle
+  int32_t previous_row_;  // top y (position_fx) of the previous triangle
+  uint8_t previous_picks_;  // context of the next triangle's first vertex
+  uint16_t last_values_[3];
+  int32_t last_gradients_[3][2];
+  Status failed_;
 };
 
 // Bytes of the v1 blob expand_compressed_blob writes (the layout tripack's packer writes).
