@@ -47,6 +47,16 @@ inline bool convert(const ts_params* p, core::RenderParams* out) {
   return true;
 }
 
+inline core::RenderBuffers render_buffers(const ts_buffers& c) {
+  core::RenderBuffers b;
+  b.tile[0] = c.tile[0];
+  b.tile[1] = c.tile[1];
+  b.tile_bytes = c.tile_size;
+  b.workspace = c.workspace;
+  b.workspace_bytes = c.workspace_size;
+  return b;
+}
+
 struct SinkAdapter {
   ts_sink sink;
   void* context;

@@ -50,12 +50,7 @@ ts_status ts_render_compressed(const ts_compressed_blob* blob, const ts_params* 
   core::RenderParams p;
   if (!blob || !buffers || !sink) return ts_status(core::Status::null_argument);
   if (!convert(params, &p)) return ts_status(core::Status::bad_params);
-  core::RenderBuffers b;
-  b.tile[0] = buffers->tile[0];
-  b.tile[1] = buffers->tile[1];
-  b.tile_bytes = buffers->tile_size;
-  b.workspace = buffers->workspace;
-  b.workspace_bytes = buffers->workspace_size;
+  const core::RenderBuffers b = render_buffers(*buffers);
   FrameSinkAdapter adapter{sink, context};
   core::BlobError error;
   const core::Status s = core::render(*view(blob), p, b, forward_frame, &adapter, &error);
