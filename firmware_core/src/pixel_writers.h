@@ -74,14 +74,13 @@ struct DirectWriter {
         }
         return;
       }
-      // Dithered: the row's four Bayer offsets (scaled for pack565_dithered) once per span, then
-      // one per pixel by column.
-      uint32_t offset[4];
-      for (int32_t i = 0; i < 4; ++i) offset[i] = bayer_offset(i, y) * dither_scale;
+      // Dithered: one of the row's four scaled Bayer offsets per pixel, chosen by the pixel's
+      // address (dither_span_offsets).
+      const uint32_t* const offset = dither_span_offsets(y, x0, p);
       const uint32_t k31 = in_register(dither_k31), k63 = in_register(dither_k63);
       uint8_t* const end = p + (x1 - x0 + 1) * bpp;
-      for (uint32_t column = uint32_t(x0); p != end; p += bpp, ++column, v0 += d0, v1 += d1, v2 += d2) {
-        const uint32_t o = offset[column & 3];
+      for (; p != end; p += bpp, v0 += d0, v1 += d1, v2 += d2) {
+        const uint32_t o = offset[dither_index(p)];
         if constexpr (Channels == 1) {
           const uint32_t u = v0 >> s;
           store565_bytes(p, rgb565_bytes<F>(pack565_dithered(u, u, u, o, k31, k63)));

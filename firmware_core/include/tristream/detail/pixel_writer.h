@@ -40,9 +40,9 @@ inline uint8_t luma(uint8_t r, uint8_t g, uint8_t b) {
 // The per-pixel helpers below are always inlined: at -Os GCC otherwise calls them once per pixel.
 
 // 4x4 Bayer thresholds scaled to [8, 248]: the rounding offset of an 8-bit to n-bit conversion.
-__attribute__((always_inline)) inline uint32_t bayer_offset(int32_t x, int32_t y) {
-  static const uint8_t matrix[4][4] = {{0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
-  return uint32_t(matrix[y & 3][x & 3]) * 16u + 8u;
+inline constexpr uint8_t bayer_matrix[4][4] = {{0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
+__attribute__((always_inline)) constexpr uint32_t bayer_offset(int32_t x, int32_t y) {
+  return uint32_t(bayer_matrix[y & 3][x & 3]) * 16u + 8u;
 }
 
 // n-bit value of an 8-bit one: round(v * max / 255) without dithering (offset 127).
@@ -59,12 +59,43 @@ __attribute__((always_inline)) inline uint16_t pack565(uint8_t r, uint8_t g, uin
 inline constexpr uint32_t dither_scale = 0x8081u;
 inline constexpr uint32_t dither_k31 = 31u * dither_scale, dither_k63 = 63u * dither_scale;
 // k31 and k63: dither_k31 and dither_k63, passed in by loops that keep them in registers (see
-// in_register). The fields are masked in place: t < 2^28 for 31 and 2^29 for 63, so t >> 23 fits
-// the field and (t >> 12) & 0xF800 is (t >> 23) << 11.
+// in_register). t < 2^28 for 31 and 2^29 for 63, so t >> 23 fits its field: the fields are joined
+// by shifted ORs, ((R << 6 | G) << 5) | B, with no mask (a mask constant is one more register in a
+// pixel loop that has none to spare).
 __attribute__((always_inline)) inline uint16_t pack565_dithered(uint32_t r, uint32_t g, uint32_t b, uint32_t o_scaled,
                                                                 uint32_t k31 = dither_k31, uint32_t k63 = dither_k63) {
   const uint32_t tr = r * k31 + o_scaled, tg = g * k63 + o_scaled, tb = b * k31 + o_scaled;
-  return uint16_t(((tr >> 12) & 0xF800u) | ((tg >> 18) & 0x07E0u) | (tb >> 23));
+  return uint16_t(((tr >> 23) << 6 | (tg >> 23)) << 5 | (tb >> 23));
+}
+
+// The scaled offsets bayer_offset(x, y) * dither_scale of pack565_dithered, row (y & 3) by row,
+// each row twice (eight entries: a row read from any of its first four entries on, see
+// dither_span_offsets).
+struct DitherOffsets {
+  uint32_t v[32];
+};
+constexpr DitherOffsets make_dither_offsets() {
+  DitherOffsets t{};
+  for (int32_t y = 0; y < 4; ++y)
+    for (int32_t x = 0; x < 8; ++x) t.v[8 * y + x] = bayer_offset(x, y) * dither_scale;
+  return t;
+}
+inline constexpr DitherOffsets dither_offsets = make_dither_offsets();
+__attribute__((always_inline)) inline uint32_t dither_offset_scaled(int32_t x, int32_t y) {
+  return dither_offsets.v[8 * (y & 3) + (x & 3)];
+}
+// The offsets of a span of row y whose pixel x0 is at address p0, by pixel address: the pixel of
+// address p (2 bytes per pixel, any alignment) takes o[(p >> 1) & 3]. floor(p / 2) grows by one a
+// pixel, so x & 3 = ((p >> 1) + x0 - (p0 >> 1)) & 3, and the row's entry s + i (s, i < 4) is its
+// entry (s + i) & 3: the pixel loop needs no column count.
+__attribute__((always_inline)) inline const uint32_t* dither_span_offsets(int32_t y, int32_t x0, const uint8_t* p0) {
+  const uint32_t s = (uint32_t(x0) - uint32_t(reinterpret_cast<uintptr_t>(p0) >> 1)) & 3u;
+  const uint32_t* o = dither_offsets.v + 8 * (y & 3) + s;
+  __asm__("" : "+r"(o));  // one pointer in a register, not the table's address and an index
+  return o;
+}
+__attribute__((always_inline)) inline uint32_t dither_index(const uint8_t* p) {
+  return uint32_t(reinterpret_cast<uintptr_t>(p) >> 1) & 3u;
 }
 
 // v unchanged, but opaque to the optimizer: a constant multiplier kept in a register for a
@@ -158,7 +189,7 @@ inline void store_rgb(uint8_t* p, uint8_t r, uint8_t g, uint8_t b, int32_t x, in
     p[1] = g;
     p[2] = b;
   } else if constexpr (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be) {
-    store565<F>(p, dither ? pack565_dithered(r, g, b, bayer_offset(x, y) * dither_scale) : pack565_nearest(r, g, b));
+    store565<F>(p, dither ? pack565_dithered(r, g, b, dither_offset_scaled(x, y)) : pack565_nearest(r, g, b));
   } else if constexpr (F == PixelFormat::xrgb8888) {
     p[0] = b;
     p[1] = g;
