@@ -31,27 +31,32 @@ constexpr uint64_t scan_numerator_bound(int m, int s) {
 constexpr bool short_division_fits(int m, int s) {
   return scan_numerator_bound(m, s) < ~uint64_t(0) / (2 * scan_area2_bound(m, s));
 }
-// Whether ChunkedRoundingDivider is exact for them.
-constexpr bool chunked_division_fits(int m, int s) {
-  return 2 * scan_area2_bound(m, s) <= ChunkedRoundingDivider::max_divisor &&
-         scan_numerator_bound(m, s) < (uint64_t(1) << ChunkedRoundingDivider::numerator_bits);
+// Whether Mod32RoundingDivider is exact for them: 2d within its divisor range, the gradient
+// numerators sum v a and sum v b (|A|, |B| < e 2^(2S), v < 2^16) in int32, and sum v e_ref below
+// 2^46.
+constexpr bool mod32_division_fits(int m, int s) {
+  return 2 * scan_area2_bound(m, s) <= Mod32RoundingDivider::max_divisor &&
+         (uint64_t(3) * 65535 * (uint64_t(m + 1) << (2 * s))) < (uint64_t(1) << 31) &&
+         (uint64_t(3) * 65535 * (uint64_t(2 * (m + 1) * (m + 2)) << (2 * s))) <
+             (uint64_t(1) << Mod32RoundingDivider::wide_bits);
 }
 // Where the high multiply is one instruction (a 128-bit type) the short division for the scan
-// path and RoundingDivider for the span path. Else (Cortex-M) the chunked division for the scan
-// path where the budget allows (three hardware divides of small quotients: fewer cycles than a
-// reciprocal per triangle), and PreinvRoundingDivider for the span path (RoundingDivider for
+// path and RoundingDivider for the span path. Else (Cortex-M) Mod32RoundingDivider for the scan
+// path where the budget allows (two or three hardware divides of small quotients per numerator and
+// no 64-bit arithmetic: fewer cycles than a reciprocal per triangle), and PreinvRoundingDivider
+// for the span path (RoundingDivider for
 // doubled areas of 2^31 or more, none in the default configuration).
 #if TS_USE_INT128
 constexpr bool bilinear_short_division = short_division_fits(scan_max_extent, config::subpixel_bits);
-constexpr bool bilinear_chunked_division = false;
+constexpr bool bilinear_mod32_division = false;
 constexpr bool bilinear_preinv_division = false;
 #else
 constexpr bool bilinear_short_division = false;
-constexpr bool bilinear_chunked_division = chunked_division_fits(scan_max_extent, config::subpixel_bits);
+constexpr bool bilinear_mod32_division = mod32_division_fits(scan_max_extent, config::subpixel_bits);
 constexpr bool bilinear_preinv_division = true;
 #endif
 static_assert(short_division_fits(16, 4), "the default configuration divides scan-path numerators without correction");
-static_assert(chunked_division_fits(12, 4), "the default configuration divides scan-path numerators in chunks");
+static_assert(mod32_division_fits(12, 4), "the default configuration divides scan-path numerators in 32 bits");
 
 #if TS_USE_SSE2
 // Lane by lane, the low 32 bits of v * k (SSE2 has no 32-bit lane product: two 32 x 32 -> 64
@@ -99,8 +104,8 @@ struct BilinearShader {
       } else {
         setup(ShortRoundingDivider(s.area2), s.e_ref32);
       }
-    } else if (bilinear_chunked_division && s.scan_path) {
-      setup(ChunkedRoundingDivider(s.area2), s.e_ref32);
+    } else if (bilinear_mod32_division && s.scan_path) {
+      setup(Mod32RoundingDivider(int32_t(s.area2)), s.e_ref32);
     } else if (bilinear_preinv_division && PreinvRoundingDivider::fits(s.area2)) {
       setup(PreinvRoundingDivider(s.area2), s.e_ref);
     } else {
@@ -110,10 +115,9 @@ struct BilinearShader {
     if constexpr (in_lanes) {
       // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded in.
       constexpr uint32_t half = 1u << (q16_16::frac_bits - 1);
-      lane_ref = Writer::lanes(uint32_t(ch[0].v_ref) + half, uint32_t(ch[1].v_ref) + half, uint32_t(ch[2].v_ref) + half,
-                               true);
-      lane_dx = Writer::lanes(uint32_t(ch[0].dvdx), uint32_t(ch[1].dvdx), uint32_t(ch[2].dvdx), false);
-      lane_dy = Writer::lanes(uint32_t(ch[0].dvdy), uint32_t(ch[1].dvdy), uint32_t(ch[2].dvdy), false);
+      lane_ref = Writer::lanes(ch[0].v_ref + half, ch[1].v_ref + half, ch[2].v_ref + half, true);
+      lane_dx = Writer::lanes(ch[0].dvdx, ch[1].dvdx, ch[2].dvdx, false);
+      lane_dy = Writer::lanes(ch[0].dvdy, ch[1].dvdy, ch[2].dvdy, false);
     }
 #endif
   }

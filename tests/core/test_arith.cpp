@@ -110,32 +110,38 @@ TEST_CASE("ShortRoundingDivider equals round_div wherever |2n + d| 2d < 2^64") {
   }
 }
 
-TEST_CASE("ChunkedRoundingDivider equals round_div wherever 2d <= 2^17 and |2n + d| < 2^47") {
+TEST_CASE("Mod32RoundingDivider equals round_div of m 2^8 modulo 2^32 wherever 2d <= 2^17") {
   std::mt19937_64 rng(17);
-  constexpr std::int64_t d_max = std::int64_t(ChunkedRoundingDivider::max_divisor / 2);
-  constexpr std::int64_t x_max = (std::int64_t(1) << ChunkedRoundingDivider::numerator_bits) - 1;
-  // Both methods: D = 2d up to two_chunk_divisor (two divisions) and above it (three).
+  constexpr std::int64_t d_max = std::int64_t(Mod32RoundingDivider::max_divisor / 2);
+  constexpr std::int64_t wide_max = (std::int64_t(1) << Mod32RoundingDivider::wide_bits) - 1;
   std::vector<std::int64_t> divisors = {1, 2, 3, 255, 256, 257, 32767, 32768, 32769, d_max - 1, d_max};
   for (int i = 0; i < 3000; ++i) divisors.push_back(1 + std::int64_t(rng() % std::uint64_t(d_max)));
+  auto expected = [](std::int64_t m, std::int64_t d) { return std::uint32_t(round_div(m * 256, d)); };
   for (std::int64_t d : divisors) {
-    const ChunkedRoundingDivider round(d);
-    // n at the ends of the range (2n + d = +-x_max, or as near as integers allow), around 0 and
-    // at the halves (2n + d a multiple of 2d: the ties).
-    const std::int64_t specials[] = {0, 1, -1, d, -d, d - 1, -d + 1, d / 2, -d / 2, (x_max - d) / 2,
-                                     (-x_max - d) / 2 + 1, (x_max - d) / 2 - 1, (-x_max - d) / 2 + 2};
-    for (std::int64_t n : specials) {
-      INFO("n " << n << " d " << d);
-      REQUIRE(round(n) == round_div(n, d));
+    const Mod32RoundingDivider round{std::int32_t(d)};
+    // The ends of both ranges, around 0, multiples of 2d and their neighbours (remainders 0 and
+    // 2d - 1 of either sign), and the ties: m 2^9 + d a multiple of 2d needs d a multiple of 2^9.
+    std::vector<std::int64_t> specials = {0, 1, -1, 2 * d, -2 * d, 2 * d - 1, -2 * d + 1, 2 * d + 1, -2 * d - 1,
+                                          INT32_MAX, INT32_MIN, INT32_MAX - 1, INT32_MIN + 1};
+    if (d % 512 == 0)
+      for (std::int64_t k = -3; k <= 3; ++k) specials.push_back((k * 2 * d - d) / 512);
+    for (std::int64_t m : specials) {
+      INFO("m " << m << " d " << d);
+      REQUIRE(round.small(std::int32_t(m)) == expected(m, d));
+      REQUIRE(round.wide(m) == expected(m, d));
     }
-    for (int i = 0; i < 500; ++i) {
-      const std::int64_t x = std::int64_t(rng() >> (17 + rng() % 40)) % x_max;
-      const std::int64_t n = (((rng() & 1) ? x : -x) - d) / 2;
-      INFO("n " << n << " d " << d);
-      REQUIRE(round(n) == round_div(n, d));
+    for (std::int64_t m : {wide_max, -wide_max, wide_max - 2 * d, -wide_max + 2 * d}) {
+      INFO("m " << m << " d " << d);
+      REQUIRE(round.wide(m) == expected(m, d));
     }
-    for (std::int64_t k = -3; k <= 3; ++k) {  // exact halves: 2n + d = k 2d
-      const std::int64_t n = (k * 2 * d - d) / 2;
-      if ((k * 2 * d - d) % 2 == 0) REQUIRE(round(n) == round_div(n, d));
+    for (int i = 0; i < 300; ++i) {
+      const auto m32 = std::int32_t(std::uint32_t(rng() >> (32 + rng() % 32)) * ((rng() & 1) ? 1u : ~0u));
+      INFO("m " << m32 << " d " << d);
+      REQUIRE(round.small(m32) == expected(m32, d));
+      const std::int64_t x = std::int64_t(rng() >> (64 - Mod32RoundingDivider::wide_bits + rng() % 40));
+      const std::int64_t m = (rng() & 1) ? x : -x;
+      INFO("m " << m << " d " << d);
+      REQUIRE(round.wide(m) == expected(m, d));
     }
   }
 }

@@ -149,44 +149,44 @@ class ShortRoundingDivider {
   uint64_t m_;
 };
 
-// n / d rounded to nearest (halves up) like RoundingDivider, for small divisors: 2d <= 2^17 and
-// |2n + d| < 2^47 (the caller proves both from its bit budget). x = 2n + d is divided by D = 2d in
-// 32-bit divisions of chunks: each remainder is below D, so remainder * 2^k + chunk < 2^32 for
-// chunks of k bits with D <= 2^(32 - k). D <= 2^16 (most triangles of the scan path): two
-// divisions, of x >> 16 (below 2^31) and of 16 bits; else three of 15 bits. No reciprocal and no
-// 64-bit product: on Cortex-M4 two or three hardware divides of a few cycles against a library
-// division for the reciprocal and four-multiply high products. Negative x: floor(x / D) =
-// ~floor(~x / D), both as s ^ q(x ^ s) with s = x >> 63 (as ShortRoundingDivider).
-class ChunkedRoundingDivider {
+// round(m 2^8 / d) modulo 2^32, halves up (RoundingDivider of n = m 2^8: q16_16 quotients of q8_8
+// numerators, the bilinear set-up's), for 2 <= D = 2d <= 2^17, in 32-bit operations only. With m =
+// q D + r, 0 <= r < D: floor((m 2^9 + d) / D) = q 2^9 + floor((r 2^9 + d) / D), and r 2^9 + d <
+// 2^27. small: any int32 m; one signed division (floored) and one unsigned. wide: |m| < 2^46, q and
+// r of m in two chunks, m = h 2^15 + l (h = m >> 15 fits int32, 0 <= l < 2^15): h = q_h D + r_h,
+// then r_h 2^15 + l < D 2^15 <= 2^32 is divided unsigned; three divisions. Only the quotient modulo
+// 2^32 is computed: the bilinear set-up's every use is modulo 2^32 (BilinearChannel). On
+// Cortex-M4 no 64-bit addition, shift or sign fold per quotient.
+class Mod32RoundingDivider {
  public:
-  static constexpr int chunk_bits = 15;
-  static constexpr uint64_t max_divisor = uint64_t(1) << (32 - chunk_bits);  // D = 2d at most this
-  static constexpr int numerator_bits = 3 * chunk_bits + 2;                  // |2n + d| < 2^47
-  static constexpr uint32_t two_chunk_divisor = uint32_t(1) << 16;           // D at most this: two divisions
+  static constexpr uint32_t max_divisor = uint32_t(1) << 17;  // D = 2d at most this
+  static constexpr int wide_bits = 46;                        // |m| < 2^46 for wide
 
-  explicit ChunkedRoundingDivider(int64_t d) : half_(d), den_(uint32_t(2 * d)) {}
-  __attribute__((always_inline)) int64_t operator()(int64_t n) const {
-    const int64_t x = 2 * n + half_;
-    const int64_t s = x >> 63;
-    const uint64_t u = uint64_t(x ^ s);
-    if (den_ <= two_chunk_divisor) {
-      const uint32_t top = uint32_t(u >> 16);  // u < 2^47: below 2^31
-      const uint32_t q1 = top / den_;
-      const uint32_t t0 = ((top - q1 * den_) << 16) | (uint32_t(u) & 0xFFFFu);
-      return int64_t((uint64_t(q1) << 16) | (t0 / den_)) ^ s;
-    }
-    constexpr uint32_t mask = (uint32_t(1) << chunk_bits) - 1;
-    const uint32_t top = uint32_t(u >> (2 * chunk_bits));
-    const uint32_t q2 = top / den_;
-    const uint32_t t1 = ((top - q2 * den_) << chunk_bits) | (uint32_t(u >> chunk_bits) & mask);
-    const uint32_t q1 = t1 / den_;
-    const uint32_t t0 = ((t1 - q1 * den_) << chunk_bits) | (uint32_t(u) & mask);
-    const uint32_t q0 = t0 / den_;
-    return int64_t((uint64_t(q2) << (2 * chunk_bits)) | (uint64_t(q1) << chunk_bits) | q0) ^ s;
+  explicit Mod32RoundingDivider(int32_t d) : half_(uint32_t(d)), den_(uint32_t(2 * d)) {}
+  __attribute__((always_inline)) uint32_t small(int32_t m) const {
+    int32_t q, r;
+    floor_divmod(m, &q, &r);
+    return (uint32_t(q) << 9) + ((uint32_t(r) << 9) + half_) / den_;
+  }
+  __attribute__((always_inline)) uint32_t wide(int64_t m) const {
+    int32_t qh, rh;
+    floor_divmod(int32_t(m >> 15), &qh, &rh);
+    const uint32_t t = (uint32_t(rh) << 15) | (uint32_t(m) & 0x7FFFu);
+    const uint32_t q = t / den_;
+    const uint32_t r = t - q * den_;
+    return (uint32_t(qh) << 24) + (q << 9) + ((r << 9) + half_) / den_;
   }
 
  private:
-  int64_t half_;
+  // m = q D + r with 0 <= r < D (D below 2^31: the truncated remainder is above -D).
+  __attribute__((always_inline)) void floor_divmod(int32_t m, int32_t* q, int32_t* r) const {
+    const int32_t den = int32_t(den_);
+    int32_t qq = m / den, rr = m - qq * den;
+    if (rr < 0) rr += den, --qq;
+    *q = qq;
+    *r = rr;
+  }
+  uint32_t half_;
   uint32_t den_;
 };
 

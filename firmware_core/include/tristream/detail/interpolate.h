@@ -15,9 +15,11 @@ namespace tristream::core::detail {
 // Bilinear: v(x, y) = v_ref + dvdx (x - xr) + dvdy (y - yr) in q16_16 with gradients rounded once
 // per triangle; the error at a pixel is below (1 + |x - xr| + |y - yr|) / 2 units of 2^-16.
 struct BilinearChannel {
-  int64_t v_ref = 0;
-  int64_t dvdx = 0;
-  int64_t dvdy = 0;
+  // Modulo 2^32: every use (the value at a pixel, the step) is a sum modulo 2^32, exact for a
+  // covered pixel.
+  uint32_t v_ref = 0;
+  uint32_t dvdx = 0;
+  uint32_t dvdy = 0;
 
   // values: q8_8 of vertices 0, 1, 2. a[k], b[k]: edge k's coefficients; e_ref[k]: edge k's exact
   // value at a reference pixel (xr, yr) near the triangle. by_area2: division by the doubled area,
@@ -33,19 +35,27 @@ struct BilinearChannel {
     const int64_t ny = v2 * b[0] + v0 * b[1] + v1 * b[2];
     const int64_t nv = v2 * e_ref[0] + v0 * e_ref[1] + v1 * e_ref[2];
     constexpr int shift = q16_16::frac_bits - q8_8::frac_bits;
-    dvdx = by_area2(nx * (int64_t(1) << shift));
-    dvdy = by_area2(ny * (int64_t(1) << shift));
-    v_ref = by_area2(nv * (int64_t(1) << shift));
+    dvdx = uint32_t(by_area2(nx * (int64_t(1) << shift)));
+    dvdy = uint32_t(by_area2(ny * (int64_t(1) << shift)));
+    v_ref = uint32_t(by_area2(nv * (int64_t(1) << shift)));
+  }
+  // The same from numerators that the caller proves within Mod32RoundingDivider's ranges: Σ v a
+  // and Σ v b in int32 (small), Σ v e_ref below 2^46 (wide).
+  __attribute__((always_inline)) void setup(const int32_t* a, const int32_t* b, const int32_t* e_ref,
+                                            const Mod32RoundingDivider& by_area2, const int32_t* values) {
+    static_assert(q16_16::frac_bits - q8_8::frac_bits == 8, "Mod32RoundingDivider divides m 2^8");
+    const int32_t v2 = values[2], v0 = values[0], v1 = values[1];
+    dvdx = by_area2.small(v2 * a[0] + v0 * a[1] + v1 * a[2]);
+    dvdy = by_area2.small(v2 * b[0] + v0 * b[1] + v1 * b[2]);
+    v_ref = by_area2.wide(int64_t(v2) * e_ref[0] + int64_t(v0) * e_ref[1] + int64_t(v1) * e_ref[2]);
   }
   // q16_16 value at (x, y), modulo 2^32 (exact when the pixel is covered).
   uint32_t at(int32_t x, int32_t y, int32_t xr, int32_t yr) const {
-    return uint32_t(v_ref) + uint32_t(dvdx) * uint32_t(x - xr) + uint32_t(dvdy) * uint32_t(y - yr);
+    return v_ref + dvdx * uint32_t(x - xr) + dvdy * uint32_t(y - yr);
   }
   // The same at offsets (dx, dy) = (x - xr, y - yr) from the reference pixel.
-  uint32_t at_offset(uint32_t dx, uint32_t dy) const {
-    return uint32_t(v_ref) + uint32_t(dvdx) * dx + uint32_t(dvdy) * dy;
-  }
-  uint32_t step() const { return uint32_t(dvdx); }
+  uint32_t at_offset(uint32_t dx, uint32_t dy) const { return v_ref + dvdx * dx + dvdy * dy; }
+  uint32_t step() const { return dvdx; }
 };
 
 // Forward differences of a cubic along a row: the value and its first three differences,
