@@ -25,7 +25,6 @@ struct ActiveSet {
   uint32_t capacity = 0;  // bits, a multiple of 32
   uint32_t base = 0;
   uint32_t cursor = 0;
-  int32_t view_x1 = 0;  // the viewport's right end: tiles ending there are the last of their band
 
   // Bit positions: pos(t) = t mod capacity, stepped with next() to avoid a division per test.
   // A capacity of 0 (a workspace without room for a bitmap) is valid for a window of 0.

@@ -209,7 +209,6 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
     sets[l].layer = &view.layers[l];
     sets[l].words = stores[l].words;
     sets[l].capacity = uint32_t(detail::bitmap_bytes(capacity) * 8);
-    sets[l].view_x1 = r.view.x1;
   }
   const detail::TileRenderer draw = detail::tile_renderer(r.format);
   detail::TileBuffers tiles(buffers);

@@ -65,7 +65,6 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
     sets[l].layer = &blob.layers[l];
     sets[l].words = reinterpret_cast<uint32_t*>(ws + pad + scratch + size_t(l) * set_bytes);
     sets[l].capacity = uint32_t(set_bytes * 8 > 0xFFFFFFE0u ? 0xFFFFFFE0u : set_bytes * 8);
-    sets[l].view_x1 = r.view.x1;
     if (sets[l].capacity) sets[l].reset();
   }
   // Every buffer is checked before the first tile goes to the sink (no partial frame): a bitmap

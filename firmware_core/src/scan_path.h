@@ -55,8 +55,9 @@ struct SmallEdges {
   // first pixel.
   __m128i pairs, a, b, row;
 #else
-  int32_t dx[3], dy[3];
   int32_t a[3], b[3], row[3];
+  int32_t first[3];  // E_k at the box's first pixel (row without the bias), for small_setup
+  int32_t left, y0;
 #endif
   int32_t area2;
 };
@@ -91,21 +92,22 @@ inline void small_edges(const TriangleView& tv, int32_t area2, int32_t left, int
   // E - bias = E - 1 - (inclusive ? -1 : 0) = E + ~inclusive.
   e->row = _mm_add_epi32(_mm_madd_epi16(e->pairs, offsets), _mm_xor_si128(inclusive, _mm_set1_epi32(-1)));
 #else
+  e->left = left;
+  e->y0 = y0;
   for (int k = 0; k < 3; ++k) {
     const int n = k == 2 ? 0 : k + 1;
-    e->dx[k] = tv.x[n] - tv.x[k];
-    e->dy[k] = tv.y[n] - tv.y[k];
-    e->a[k] = -e->dy[k] * (1 << S);
-    e->b[k] = e->dx[k] * (1 << S);
-    const bool inclusive = inclusive_edge(e->dx[k], e->dy[k], (tv.flags & (boundary_edge0 << k)) != 0);
-    e->row[k] = -e->dy[k] * (left * (1 << S) - tv.x[k]) + e->dx[k] * (y0 * (1 << S) - tv.y[k]) - (inclusive ? 0 : 1);
+    const int32_t dx = tv.x[n] - tv.x[k], dy = tv.y[n] - tv.y[k];
+    e->a[k] = -dy * (1 << S);
+    e->b[k] = dx * (1 << S);
+    const bool inclusive = inclusive_edge(dx, dy, (tv.flags & (boundary_edge0 << k)) != 0);
+    e->first[k] = -dy * (left * (1 << S) - tv.x[k]) + dx * (y0 * (1 << S) - tv.y[k]);
+    e->row[k] = e->first[k] - (inclusive ? 0 : 1);
   }
 #endif
 }
 
 // The setup of a scan-path triangle for the shader (on its first covered row in the clip).
 inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSetup* s) {
-  constexpr int S = config::subpixel_bits;
   const int32_t xr = position_fx::from_raw(tv.x[0]).floor_to_int();
   const int32_t yr = position_fx::from_raw(tv.y[0]).floor_to_int();
   s->xr = xr;
@@ -113,6 +115,7 @@ inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSet
   s->area2 = e.area2;
   s->scan_path = true;
 #if TS_USE_SSE2
+  constexpr int S = config::subpixel_bits;
   const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tv.x));
   const __m128i y = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tv.y));
   const __m128i ref = _mm_madd_epi16(e.pairs, int16_pairs(_mm_sub_epi32(_mm_set1_epi32(xr * (1 << S)), x),
@@ -123,10 +126,12 @@ inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSet
   _mm_storeu_si128(reinterpret_cast<__m128i*>(s->e_ref), _mm_unpacklo_epi32(ref, sign));
   _mm_storel_epi64(reinterpret_cast<__m128i*>(s->e_ref + 2), _mm_unpackhi_epi32(ref, sign));
 #else
+  // E_k is A_k x + B_k y + C_k (per pixel: a = A 2^S, b = B 2^S): from the box's first pixel.
+  const int32_t ox = xr - e.left, oy = yr - e.y0;
   for (int k = 0; k < 3; ++k) {
     s->a[k] = e.a[k];
     s->b[k] = e.b[k];
-    s->e_ref32[k] = -e.dy[k] * (xr * (1 << S) - tv.x[k]) + e.dx[k] * (yr * (1 << S) - tv.y[k]);
+    s->e_ref32[k] = e.first[k] + e.a[k] * ox + e.b[k] * oy;
     s->e_ref[k] = s->e_ref32[k];
   }
 #endif

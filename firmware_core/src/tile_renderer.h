@@ -26,11 +26,11 @@ namespace {
 // Draws the live triangles of a layer that meet the tile `rect`. A triangle whose last pixel column
 // is in this tile or left of it (nothing for the band's later tiles) and whose last row is in this
 // band (the band advance would drop it) leaves the active set now: the later tiles of the band then
-// skip it without the column test. The pixels are the same (those tiles would have culled it).
+// skip it without the column test, and the band advance without reading its rows. The pixels are
+// the same (those tiles would have culled it, the advance dropped it).
 template <typename Shader>
 void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
   const ColumnWindow columns(map, rect);
-  const bool later_tiles = rect.x1 < set.view_x1;
   set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span, uint32_t p) {
     uint32_t done = 0;
     for (uint32_t hits = columns.meeting(*set.layer, t, live, span); hits; hits &= hits - 1) {
@@ -39,7 +39,7 @@ void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, Shader& sh
       load_triangle(*set.layer, t + i, map, &tv);
       done |= uint32_t(rasterize(tv, rect, shader)) << i;
     }
-    if (later_tiles) set.words[p / 32] &= ~(done << (p % 32));
+    set.words[p / 32] &= ~(done << (p % 32));
   });
 }
 
