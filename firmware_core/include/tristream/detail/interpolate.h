@@ -306,11 +306,26 @@ struct ZienkiewiczChannel {
     static_assert(32 - s == 17, "floor(w t / 2^15) as the high word of (w 2^15) (4 t)");
     // w 2^15 and 4 t by unsigned shifts (the same bits; no signed overflow).
     const int32_t wa = int32_t(uint32_t(a) << s), wb = int32_t(uint32_t(b) << s);
-    auto m = [](int32_t w, int32_t t) { return int32_t((int64_t(w) * int32_t(uint32_t(t) << 2)) >> 32); };
-    const int32_t pb = int32_t(p00) + m(wb, int32_t(p01) + m(wb, int32_t(p02) + m(wb, int32_t(p03))));
-    const int32_t pa = int32_t(p10) + m(wb, int32_t(p11) + m(wb, int32_t(p12))) +
-                       m(wa, int32_t(p20) + m(wb, int32_t(p21)) + m(wa, int32_t(p30)));
-    return pb + m(wa, pa);
+    // Each Horner step p + floor(w t / 2^15) as one multiply-accumulate of the high word.
+    auto m = [](int32_t w, int32_t t, int32_t p) __attribute__((always_inline)) {
+      return mla_high(w, int32_t(uint32_t(t) << 2), p);
+    };
+    const int32_t pb = m(wb, m(wb, m(wb, int32_t(p03), int32_t(p02)), int32_t(p01)), int32_t(p00));
+    const int32_t pa = m(wa, m(wa, int32_t(p30), m(wb, int32_t(p21), int32_t(p20))),
+                         m(wb, m(wb, int32_t(p12), int32_t(p11)), int32_t(p10)));
+    return m(wa, pa, pb);
+  }
+  // p + the high word of the 64-bit product w t (modulo 2^32; eval_narrow's sums fit). On a
+  // Cortex-M with the DSP extension one SMMLA, which GCC does not form from the C (it emits
+  // SMULL and an ADD); elsewhere the same integers in C.
+  __attribute__((always_inline)) static int32_t mla_high(int32_t w, int32_t t, int32_t p) {
+#if defined(__ARM_FEATURE_DSP) && defined(__thumb2__)
+    int32_t r;
+    __asm__("smmla %0, %1, %2, %3" : "=r"(r) : "r"(w), "r"(t), "r"(p));
+    return r;
+#else
+    return int32_t(uint32_t(p) + uint32_t(int32_t((int64_t(w) * t) >> 32)));
+#endif
   }
 
   // Whether the coefficients are within the forward-difference bit budget.
