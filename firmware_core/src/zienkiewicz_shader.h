@@ -50,8 +50,14 @@ struct ZienkiewiczTriangle {
 
   void begin(const TriangleView& tv, const TriangleSetup& s) {
     const int64_t a2 = s.area2;
-    const RoundingDivider by_area2(a2);
-    steps.setup(s.a, s.b, s.e_ref, by_area2, s.xr, s.yr);
+    // Where a 64 x 64 product is several instructions (Cortex-M) the division by a 32-bit
+    // reciprocal, as the bilinear setup: one 32 x 32 -> 64 product a quotient against a four-multiply
+    // high product and a 64-bit product (RoundingDivider for doubled areas of 2^31 or more).
+    if (zienkiewicz_narrow_forms && PreinvRoundingDivider::fits(a2)) {
+      steps.setup(s.a, s.b, s.e_ref, PreinvRoundingDivider(a2), s.xr, s.yr);
+    } else {
+      steps.setup(s.a, s.b, s.e_ref, RoundingDivider(a2), s.xr, s.yr);
+    }
     int32_t dx[3], dy[3];
     const uint8_t* values[3];
     const uint8_t* gradients[3];

@@ -496,8 +496,11 @@ struct BarycentricStepper {
     const int64_t e_ref[3] = {e[0].exact_at(x_ref, y_ref), e[1].exact_at(x_ref, y_ref), e[2].exact_at(x_ref, y_ref)};
     setup(a, b, e_ref, by_area2, x_ref, y_ref);
   }
-  // The same from edge coefficients a[k], b[k] and exact edge values e_ref[k] at (x_ref, y_ref).
-  void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const RoundingDivider& by_area2, int32_t x_ref,
+  // The same from edge coefficients a[k], b[k] and exact edge values e_ref[k] at (x_ref, y_ref);
+  // by_area2: RoundingDivider, or PreinvRoundingDivider where the doubled area fits it (the same
+  // quotients).
+  template <typename Divider>
+  void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const Divider& by_area2, int32_t x_ref,
              int32_t y_ref) {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
     xr = x_ref;
