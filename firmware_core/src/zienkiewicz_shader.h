@@ -195,7 +195,8 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     if constexpr (Writer::takes_rounded && Channels == 3) {
       // Rounding to nearest folded into the values (exact: the differences are unchanged). Each
       // channel's rounded bytes of up to `piece` pixels in a loop of its own (CubicSteps::high_bytes),
-      // then the pixels: the same values as stepping the three channels together.
+      // then the pixels by the writer's put_rounded_bytes (its step is bpp, as the shader's): the
+      // same values as stepping the three channels together.
       constexpr int32_t piece = 32;
       zienkiewicz_row_chunks<3>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),
                                 [&](int32_t n, int32_t end, CubicSteps* s) {
@@ -203,11 +204,8 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
                                   while (n <= end) {
                                     const int32_t count = end - n + 1 < piece ? end - n + 1 : piece;
                                     for (int c = 0; c < 3; ++c) s[c].high_bytes(bytes[c], count);
-                                    for (int32_t i = 0; i < count; ++i) {
-                                      const int32_t r[3] = {bytes[0][i], bytes[1][i], bytes[2][i]};
-                                      writer.put_rounded(p, xs + n + i, y, r);
-                                      p += step;
-                                    }
+                                    writer.put_rounded_bytes(p, xs + n, y, bytes[0], bytes[1], bytes[2], count);
+                                    p += count * step;
                                     n += count;
                                   }
                                 });
