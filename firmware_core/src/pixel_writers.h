@@ -52,14 +52,21 @@ struct DirectWriter {
     }
   }
   // count pixels of row y from p (the first at column x) from three channels' bytes r[i], g[i],
-  // b[i]: the pixels of put_rounded one by one; RGB565 without dithering by the tables, the flag
-  // read once (the forward-differenced rows of the zienkiewicz shader).
+  // b[i]: the pixels of put_rounded one by one; RGB565 without dithering by the tables (by
+  // multiply-adds where the code is optimized for size), the flag read once (the
+  // forward-differenced rows of the zienkiewicz shader).
   void put_rounded_bytes(uint8_t* p, int32_t x, int32_t y, const uint8_t* r, const uint8_t* g, const uint8_t* b,
                          int32_t count) const {
     constexpr int bpp = bytes_per_pixel(F);
     if constexpr (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be) {
       if (!dither) {
-        for (int32_t i = 0; i < count; ++i, p += bpp) store565_bytes(p, pack565_bytes_by_table<F>(r[i], g[i], b[i]));
+        for (int32_t i = 0; i < count; ++i, p += bpp) {
+#if defined(__OPTIMIZE_SIZE__)
+          store565_bytes(p, rgb565_bytes<F>(pack565_nearest(r[i], g[i], b[i])));  // no 1 KB of tables
+#else
+          store565_bytes(p, pack565_bytes_by_table<F>(r[i], g[i], b[i]));
+#endif
+        }
         return;
       }
     }

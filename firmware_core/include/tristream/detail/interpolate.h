@@ -505,12 +505,20 @@ struct BarycentricStepper {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
     xr = x_ref;
     yr = y_ref;
+#if defined(__OPTIMIZE_SIZE__)
+    // A loop: one copy of the divider's quotient (inlined; written out it costs 0.5 KB of flash).
+    const int64_t n[6] = {a[1], a[2], b[1], b[2], e_ref[1], e_ref[2]};
+    uint32_t q[6];
+    for (int i = 0; i < 6; ++i) q[i] = uint32_t(by_area2(n[i] * one));
+    dadx = q[0], dbdx = q[1], dady = q[2], dbdy = q[3], a_ref = q[4], b_ref = q[5];
+#else
     dadx = uint32_t(by_area2(a[1] * one));
     dbdx = uint32_t(by_area2(a[2] * one));
     dady = uint32_t(by_area2(b[1] * one));
     dbdy = uint32_t(by_area2(b[2] * one));
     a_ref = uint32_t(by_area2(e_ref[1] * one));
     b_ref = uint32_t(by_area2(e_ref[2] * one));
+#endif
   }
   // Weights at pixel (x, y) (the first covered pixel of a row: independent of tiling). Inlined
   // (-Os would call it once a row).
