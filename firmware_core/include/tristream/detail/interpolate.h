@@ -316,11 +316,26 @@ struct ZienkiewiczChannel {
     static_assert(32 - s == 17, "floor(w t / 2^15) as the high word of (w 2^15) (4 t)");
     // w 2^15 and 4 t by unsigned shifts (the same bits; no signed overflow).
     const int32_t wa = int32_t(uint32_t(a) << s), wb = int32_t(uint32_t(b) << s);
-    auto m = [](int32_t w, int32_t t) { return int32_t((int64_t(w) * int32_t(uint32_t(t) << 2)) >> 32); };
-    const int32_t pb = int32_t(p00) + m(wb, int32_t(p01) + m(wb, int32_t(p02) + m(wb, int32_t(p03))));
-    const int32_t pa = int32_t(p10) + m(wb, int32_t(p11) + m(wb, int32_t(p12))) +
-                       m(wa, int32_t(p20) + m(wb, int32_t(p21)) + m(wa, int32_t(p30)));
-    return pb + m(wa, pa);
+    // Each Horner step p + floor(w t / 2^15) as one multiply-accumulate of the high word.
+    auto m = [](int32_t w, int32_t t, int32_t p) __attribute__((always_inline)) {
+      return mla_high(w, int32_t(uint32_t(t) << 2), p);
+    };
+    const int32_t pb = m(wb, m(wb, m(wb, int32_t(p03), int32_t(p02)), int32_t(p01)), int32_t(p00));
+    const int32_t pa = m(wa, m(wa, int32_t(p30), m(wb, int32_t(p21), int32_t(p20))),
+                         m(wb, m(wb, int32_t(p12), int32_t(p11)), int32_t(p10)));
+    return m(wa, pa, pb);
+  }
+  // p + the high word of the 64-bit product w t (modulo 2^32; eval_narrow's sums fit). On a
+  // Cortex-M with the DSP extension one SMMLA, which GCC does not form from the C (it emits
+  // SMULL and an ADD); elsewhere the same integers in C.
+  __attribute__((always_inline)) static int32_t mla_high(int32_t w, int32_t t, int32_t p) {
+#if defined(__ARM_FEATURE_DSP) && defined(__thumb2__)
+    int32_t r;
+    __asm__("smmla %0, %1, %2, %3" : "=r"(r) : "r"(w), "r"(t), "r"(p));
+    return r;
+#else
+    return int32_t(uint32_t(p) + uint32_t(int32_t((int64_t(w) * t) >> 32)));
+#endif
   }
 
   // Whether the coefficients are within the forward-difference bit budget.
@@ -491,18 +506,29 @@ struct BarycentricStepper {
     const int64_t e_ref[3] = {e[0].exact_at(x_ref, y_ref), e[1].exact_at(x_ref, y_ref), e[2].exact_at(x_ref, y_ref)};
     setup(a, b, e_ref, by_area2, x_ref, y_ref);
   }
-  // The same from edge coefficients a[k], b[k] and exact edge values e_ref[k] at (x_ref, y_ref).
-  void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const RoundingDivider& by_area2, int32_t x_ref,
+  // The same from edge coefficients a[k], b[k] and exact edge values e_ref[k] at (x_ref, y_ref);
+  // by_area2: RoundingDivider, or PreinvRoundingDivider where the doubled area fits it (the same
+  // quotients).
+  template <typename Divider>
+  void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const Divider& by_area2, int32_t x_ref,
              int32_t y_ref) {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
     xr = x_ref;
     yr = y_ref;
+#if defined(__OPTIMIZE_SIZE__)
+    // A loop: one copy of the divider's quotient (inlined; written out it costs 0.5 KB of flash).
+    const int64_t n[6] = {a[1], a[2], b[1], b[2], e_ref[1], e_ref[2]};
+    uint32_t q[6];
+    for (int i = 0; i < 6; ++i) q[i] = uint32_t(by_area2(n[i] * one));
+    dadx = q[0], dbdx = q[1], dady = q[2], dbdy = q[3], a_ref = q[4], b_ref = q[5];
+#else
     dadx = uint32_t(by_area2(a[1] * one));
     dbdx = uint32_t(by_area2(a[2] * one));
     dady = uint32_t(by_area2(b[1] * one));
     dbdy = uint32_t(by_area2(b[2] * one));
     a_ref = uint32_t(by_area2(e_ref[1] * one));
     b_ref = uint32_t(by_area2(e_ref[2] * one));
+#endif
   }
   // Weights at pixel (x, y) (the first covered pixel of a row: independent of tiling). Inlined
   // (-Os would call it once a row).
