@@ -205,7 +205,6 @@ uint8_t* LayerDecoder::record(uint32_t index) const {
 // Whether the values of a record are decoded, and the sides of its open edges (edges_at).
 namespace {
 uint8_t& known_byte(uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
-uint8_t known_byte(const uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
 uint8_t& sides_byte(uint8_t* rec, int per_vertex) { return rec[5 + 2 * per_vertex]; }
 }  // namespace
 
@@ -433,26 +432,45 @@ uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, int side) const {
 // The vertex after `a` that `count` eligible unused ones precede: in the ring, those whose values
 // are not decoded (no triangle used them) and whose column is in `cols`; beyond the ring, every
 // one (pinned ones included, the encoder counts them alike). V (out of range) when `a + 1` is
-// older than the ring.
-uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) const {
-  const int nv = blob_->values_per_vertex;
+// older than the ring. The walk skips runs of used vertices by their known bytes: a used vertex's
+// byte k (1 .. 255) says it and the k - 1 after it are used (values are never undecoded, and all of
+// them are below decoded_, so in the ring while it is); each run's first byte is set to the run's
+// length as the walk finds it (capped at 255), so later walks skip it in one step.
+uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
+  const uint32_t known_at = 4 + 2 * uint32_t(blob_->values_per_vertex);
   uint32_t r = a + 1;
-  if (r < decoded_) {
-    const uint32_t back = decoded_ - r;
-    if (back > layer_->window) return layer_->vertex_count;
-    uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
-    const uint8_t* p = ring_ + size_t(slot) * record_;
-    for (; r < decoded_; ++r) {
+  const uint32_t end = decoded_;
+  if (r < end) {
+    const uint32_t window = layer_->window, bytes = record_;
+    uint8_t* const ring = ring_;
+    const uint32_t back = end - r;
+    if (back > window) return layer_->vertex_count;
+    uint32_t slot = slot_ >= back ? slot_ - back : slot_ + window - back;
+    const int32_t lo = cols.lo, hi = cols.hi;
+    while (r < end) {
+      uint8_t* p = ring + size_t(slot) * bytes;
+      uint32_t k = p[known_at];
+      if (k) {
+        uint8_t* const first = p;
+        uint32_t run = 0;
+        do {
+          run += k;
+          r += k;
+          slot += k;  // k <= end - r before the step, so below 2 window
+          if (slot >= window) slot -= window;
+          if (r >= end) break;
+          k = ring[size_t(slot) * bytes + known_at];
+        } while (k);
+        first[known_at] = uint8_t(run < 255 ? run : 255);
+        continue;
+      }
       const int32_t x = load_u16(p);
-      if (!known_byte(p, nv) && x >= cols.lo && x <= cols.hi) {
+      if (x >= lo && x <= hi) {
         if (count == 0) return r;
         --count;
       }
-      p += record_;
-      if (++slot == layer_->window) {
-        slot = 0;
-        p = ring_;
-      }
+      ++r;
+      if (++slot == window) slot = 0;
     }
   }
   return uint64_t(r) + count;

@@ -173,7 +173,7 @@ class LayerDecoder {
   };
   Columns columns(uint32_t a, uint32_t s) const;
   uint32_t predict(uint32_t a, uint32_t s, int side) const;
-  uint64_t fresh(uint32_t a, uint32_t count, Columns cols) const;
+  uint64_t fresh(uint32_t a, uint32_t count, Columns cols);
   void add_edge(uint32_t from, uint32_t to, bool positive);
   uint8_t* record(uint32_t index) const;
 
