@@ -194,11 +194,12 @@ void LayerDecoder::find_next_pinned() {
 }
 
 // The record of a vertex: in the ring, or pinned ahead of it; null when it is in neither.
-uint8_t* LayerDecoder::record(uint32_t index) const {
+// Inlined: it is called a dozen times per triangle.
+__attribute__((always_inline)) inline uint8_t* LayerDecoder::record(uint32_t index) const {
   if (index >= decoded_) return pinned_record(index);
-  if (decoded_ - index > layer_->window) return nullptr;
-  const uint32_t back = decoded_ - index;  // 1 .. window
-  const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
+  const uint32_t back = decoded_ - index, window = layer_->window;
+  if (back > window) return nullptr;
+  const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + window - back;  // back: 1 .. window
   return ring_ + size_t(slot) * record_;
 }
 
@@ -377,9 +378,7 @@ Status LayerDecoder::place(uint32_t index) {
 // The columns (1/16 pixel) where the third corner of a triangle on the edge a->s is looked for:
 // the edge's span widened by its length (L-infinity) and 2 pixels on each side; all of them when
 // a or s has no record.
-LayerDecoder::Columns LayerDecoder::columns(uint32_t a, uint32_t s) const {
-  const uint8_t* ra = record(a);
-  const uint8_t* rs = record(s);
+LayerDecoder::Columns LayerDecoder::columns(const uint8_t* ra, const uint8_t* rs) {
   if (!ra || !rs) return Columns{0, 0xFFFF};
   const int32_t ax = load_u16(ra), ay = load_u16(ra + 2), sx = load_u16(rs), sy = load_u16(rs + 2);
   const int32_t dx = ax > sx ? ax - sx : sx - ax, dy = ay > sy ? ay - sy : sy - ay;
@@ -392,11 +391,9 @@ LayerDecoder::Columns LayerDecoder::columns(uint32_t a, uint32_t s) const {
 // (the smallest dot / cross of (a - q, s - q)), compared exactly in 64 bits on pixel coordinates
 // (differences below 2^12, so dot and cross below 2^25); ties keep the first. 0xFFFFFFFF when a or
 // s has no record or no candidate is on that side.
-uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, int side) const {
+uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side) const {
   const int nv = blob_->values_per_vertex;
   const int S = config::subpixel_bits;
-  uint8_t* ra = record(a);
-  uint8_t* rs = record(s);
   if (!ra || !rs) return 0xFFFFFFFFu;
   const int32_t ax = load_u16(ra) >> S, ay = load_u16(ra + 2) >> S;
   const int32_t sx = load_u16(rs) >> S, sy = load_u16(rs + 2) >> S;
@@ -445,10 +442,12 @@ uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
     uint8_t* const ring = ring_;
     const uint32_t back = end - r;
     if (back > window) return layer_->vertex_count;
-    uint32_t slot = slot_ >= back ? slot_ - back : slot_ + window - back;
+    const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + window - back;
+    const size_t span = size_t(window) * bytes;
+    uint8_t* const ring_end = ring + span;
+    uint8_t* p = ring + size_t(slot) * bytes;
     const int32_t lo = cols.lo, hi = cols.hi;
     while (r < end) {
-      uint8_t* p = ring + size_t(slot) * bytes;
       uint32_t k = p[known_at];
       if (k) {
         uint8_t* const first = p;
@@ -456,10 +455,10 @@ uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
         do {
           run += k;
           r += k;
-          slot += k;  // k <= end - r before the step, so below 2 window
-          if (slot >= window) slot -= window;
+          p += size_t(k) * bytes;  // k <= end - r before the step, so within one wrap
+          if (p >= ring_end) p -= span;
           if (r >= end) break;
-          k = ring[size_t(slot) * bytes + known_at];
+          k = p[known_at];
         } while (k);
         first[known_at] = uint8_t(run < 255 ? run : 255);
         continue;
@@ -470,7 +469,8 @@ uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
         --count;
       }
       ++r;
-      if (++slot == window) slot = 0;
+      p += bytes;
+      if (p == ring_end) p = ring;
     }
   }
   return uint64_t(r) + count;
@@ -479,9 +479,8 @@ uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
 // Records the edge from->to (from < to) of a decoded triangle whose third corner is on its
 // positive side or not: a side already known closes the edge (both triangles decoded), else it
 // becomes the most recent open edge of `from`, the oldest of two dropped.
-void LayerDecoder::add_edge(uint32_t from, uint32_t to, bool positive) {
+void LayerDecoder::add_edge(uint8_t* rec, uint32_t to, bool positive) {
   const int nv = blob_->values_per_vertex;
-  uint8_t* rec = record(from);
   uint8_t* ends = rec + edges_at(uint32_t(nv));
   const uint32_t bit = positive ? 1u : 2u;
   uint32_t sides = sides_byte(rec, nv);
@@ -521,6 +520,7 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   const uint32_t step_class = step < 2 ? step : 2;
   const int64_t a = int64_t(previous_top_) + s;
   if (a < 0 || a >= V) return fail(Status::bad_index);
+  uint8_t* const ra = record(uint32_t(a));
   // The anchor: one of a's open edges (its third corner on the side not decoded yet) or a gap.
   const uint32_t pick = decode_symbol8(rc_, m_.anchor[step_class]);
   uint64_t anchor;
@@ -533,7 +533,6 @@ Status LayerDecoder::next(DecodedTriangle* out) {
     side = decode_bit(rc_, m_.side) ? -1 : 1;
     kind = 2;
   } else {
-    uint8_t* ra = record(uint32_t(a));
     const uint32_t m = pick < 2 && ra ? (sides_byte(ra, nv) >> (2 * pick)) & 3u : 0;
     if (!m) return fail(Status::bad_index);
     anchor = load_u16(ra + edges_at(uint32_t(nv)) + 2 * pick);
@@ -543,8 +542,9 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   if (anchor >= V) return fail(Status::bad_index);
   // The third corner: predicted, else a fresh vertex by its count among the unused ones after a,
   // else a gap.
-  const Columns cols = columns(uint32_t(a), uint32_t(anchor));
-  const uint32_t guess = predict(uint32_t(a), uint32_t(anchor), side);
+  uint8_t* const rs = record(uint32_t(anchor));
+  const Columns cols = columns(ra, rs);
+  const uint32_t guess = predict(uint32_t(a), uint32_t(anchor), ra, rs, side);
   uint64_t third;
   bool hit = false;
   if (guess != 0xFFFFFFFFu && decode_bit(rc_, m_.predicted[kind])) {
@@ -618,9 +618,9 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   previous_top_ = uint32_t(a);
   previous_picks_ = uint8_t(2 * kind + (hit ? 1 : 0));
   // (a, b, c) has the sign of `area`; (a, c, b) the other.
-  add_edge(index[0], index[1], area > 0);
-  add_edge(index[0], index[2], area < 0);
-  add_edge(index[1], index[2], area > 0);
+  add_edge(rec[0], index[1], area > 0);
+  add_edge(rec[0], index[2], area < 0);
+  add_edge(rec[1], index[2], area > 0);
   ++triangles_;
   return Status::ok;
 }

@@ -29,14 +29,16 @@ inline void start(RangeDecoder& d, const uint8_t* p, const uint8_t* end) {
   for (int i = 0; i < 4; ++i) d.code = (d.code << 8) | next_byte(d);
 }
 
+// After a bit the range is at least (2^24 >> 11) x 31 (a probability stays in [31, 2017]) or 2^23
+// (a direct bit), so one byte restores it to 2^24 or more: an `if`, not a loop.
 inline void normalize(RangeDecoder& d) {
-  while (d.range < range_top) {
+  if (d.range < range_top) {
     d.range <<= 8;
     d.code = (d.code << 8) | next_byte(d);
   }
 }
 
-inline uint32_t decode_bit(RangeDecoder& d, Prob& prob) {
+__attribute__((always_inline)) inline uint32_t decode_bit(RangeDecoder& d, Prob& prob) {
   const uint32_t bound = (d.range >> prob_bits) * prob;
   uint32_t bit;
   if (d.code < bound) {

@@ -171,10 +171,10 @@ class LayerDecoder {
   struct Columns {
     int32_t lo, hi;  // 1/16 pixel
   };
-  Columns columns(uint32_t a, uint32_t s) const;
-  uint32_t predict(uint32_t a, uint32_t s, int side) const;
+  static Columns columns(const uint8_t* ra, const uint8_t* rs);
+  uint32_t predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side) const;
   uint64_t fresh(uint32_t a, uint32_t count, Columns cols);
-  void add_edge(uint32_t from, uint32_t to, bool positive);
+  void add_edge(uint8_t* from, uint32_t to, bool positive);
   uint8_t* record(uint32_t index) const;
 
   const CompressedBlob* blob_;
