@@ -166,6 +166,7 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   detail::reset(m_.lift_gap);
   detail::reset(m_.flag_bit, 9);
   decoded_ = slot_ = triangles_ = pixel_ = previous_top_ = 0;
+  row_ = row_start_ = 0;
   previous_row_ = 0;
   for (int c = 0; c < 3; ++c) {
     last_values_[c] = 0;
@@ -219,6 +220,37 @@ int32_t gradient_prediction(const uint8_t* p0, const uint8_t* p1, int nv, int c,
 }
 }  // namespace
 
+// Vertex decoded_, of pixel row `row`, enters the ring. When it starts a new row, the previous
+// row's vertices still in the ring and unused get their skips for fresh(), in the 4 bytes their
+// open edges take once used: at edges_at the distance to the row's end (the first vertex after
+// the row), at edges_at + 2 the distance to the first later vertex of the row in another 32-pixel
+// block of columns, or to the row's end. 0 means not set (the last row, still open). Both stay
+// below the window and point before decoded_, whatever the stream.
+void LayerDecoder::enter_row(uint32_t row) {
+  if (decoded_ != 0 && row == row_) return;
+  const uint32_t end = decoded_, window = layer_->window;
+  const uint32_t oldest = end >= window ? end - window + 1 : 0;  // slot_ is being taken by `end`
+  uint32_t i = end;
+  if (decoded_ != 0 && end - row_start_ >= 2) {
+    const int S = config::subpixel_bits;
+    const uint32_t nv = blob_->values_per_vertex, known_at = 4 + 2 * nv, skips = edges_at(nv);
+    const uint32_t first = row_start_ > oldest ? row_start_ : oldest;
+    uint8_t* p = ring_ + size_t(slot_) * record_;
+    uint32_t next_block = end, block = 0xFFFFFFFFu;
+    while (i > first) {
+      --i;
+      p = p == ring_ ? ring_ + size_t(window - 1) * record_ : p - record_;
+      const uint32_t b = uint32_t(load_u16(p)) >> (S + 5);
+      if (b != block) next_block = i + 1, block = b;
+      if (p[known_at]) continue;
+      store_u16(p + skips, end - i);
+      store_u16(p + skips + 2, next_block - i);
+    }
+  }
+  row_ = row;
+  row_start_ = end;
+}
+
 Status LayerDecoder::decode_position() {
   using namespace detail;
   const CompressedBlob& blob = *blob_;
@@ -235,6 +267,7 @@ Status LayerDecoder::decode_position() {
     if (!pin) return fail(Status::bad_index);
     for (uint32_t i = 0; i < record_; ++i) rec[i] = pin[i];
     pixel_ = uint32_t(load_u16(rec + 2) >> S) * blob.width + uint32_t(load_u16(rec) >> S);
+    enter_row(pixel_ / blob.width);
     ++decoded_;
     slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
     find_next_pinned();
@@ -258,7 +291,9 @@ Status LayerDecoder::decode_position() {
   store_u16(rec + 2, y);
   known_byte(rec, blob.values_per_vertex) = 0;
   sides_byte(rec, blob.values_per_vertex) = 0;
+  store_u32(rec + edges_at(blob.values_per_vertex), 0);  // no skips yet (fresh)
   pixel_ = uint32_t(pixel);
+  enter_row(py);
   ++decoded_;
   slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
   return Status::ok;
@@ -369,6 +404,7 @@ Status LayerDecoder::place(uint32_t index) {
   store_u16(rec + 2, y);
   known_byte(rec, blob.values_per_vertex) = 0;
   sides_byte(rec, blob.values_per_vertex) = 0;
+  store_u32(rec + edges_at(blob.values_per_vertex), 0);  // no skips yet (fresh)
   store_u32(indices + 4 * pin_slot_, index);
   pin_slot_ = pin_slot_ + 1 == layer_->pinned ? 0 : pin_slot_ + 1;
   if (index < next_pinned_) next_pinned_ = index;
@@ -434,7 +470,9 @@ uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs,
 // them are below decoded_, so in the ring while it is); each run's first byte is set to the run's
 // length as the walk finds it (capped at 255), so later walks skip it in one step.
 uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
+  const int S = config::subpixel_bits;
   const uint32_t known_at = 4 + 2 * uint32_t(blob_->values_per_vertex);
+  const uint32_t skips = edges_at(uint32_t(blob_->values_per_vertex));
   uint32_t r = a + 1;
   const uint32_t end = decoded_;
   if (r < end) {
@@ -463,14 +501,23 @@ uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
         first[known_at] = uint8_t(run < 255 ? run : 255);
         continue;
       }
-      const int32_t x = load_u16(p);
-      if (x >= lo && x <= hi) {
+      // An unused vertex: counted when in the columns, else the rest of its row (right of hi) or
+      // of its 32-pixel block (left of lo) is skipped when the row is complete.
+      const uint32_t x = load_u16(p);
+      uint32_t step = 1;
+      if (int32_t(x) < lo) {
+        const uint32_t skip = load_u16(p + skips + 2);
+        if (skip && int32_t(((x >> (S + 5)) + 1) << (S + 5)) <= lo) step = skip;
+      } else if (int32_t(x) > hi) {
+        const uint32_t skip = load_u16(p + skips);
+        if (skip && int32_t((x >> S) << S) > hi) step = skip;
+      } else {
         if (count == 0) return r;
         --count;
       }
-      ++r;
-      p += bytes;
-      if (p == ring_end) p = ring;
+      r += step;
+      p += size_t(step) * bytes;  // the skips point before decoded_: within one wrap
+      if (p >= ring_end) p -= span;
     }
   }
   return uint64_t(r) + count;

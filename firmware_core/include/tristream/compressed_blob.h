@@ -164,6 +164,7 @@ class LayerDecoder {
  private:
   Status fail(Status s);
   Status decode_position();
+  void enter_row(uint32_t row);
   Status place(uint32_t index);
   uint8_t* pinned_record(uint32_t index) const;
   void find_next_pinned();
@@ -192,6 +193,8 @@ class LayerDecoder {
   uint32_t slot_;  // ring slot of vertex decoded_
   uint32_t triangles_;  // triangles decoded
   uint32_t pixel_;  // raster pixel index of the last vertex
+  uint32_t row_;  // its pixel row
+  uint32_t row_start_;  // the first vertex of that row
   uint32_t previous_top_;  // first index of the previous triangle
   int32_t previous_row_;  // top y (position_fx) of the previous triangle
   uint8_t previous_picks_;  // context of the next triangle's first vertex
