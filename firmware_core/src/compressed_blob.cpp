@@ -178,7 +178,8 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
 
 // The pinned record of a vertex not yet in the ring, or null.
 uint8_t* LayerDecoder::pinned_record(uint32_t index) const {
-  if (index < decoded_) return nullptr;
+  // next_pinned_ is the smallest index pending in a slot (decode_position takes it before it passes)
+  if (index < decoded_ || index < next_pinned_) return nullptr;
   const uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
   for (uint32_t i = 0; i < layer_->pinned; ++i)
     if (load_u32(indices + 4 * i) == index) return pins_ + size_t(i) * record_;
