@@ -624,8 +624,7 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   const int64_t area = (int64_t(load_u16(rec[1])) - xa) * (int64_t(load_u16(rec[2] + 2)) - ya) -
                        (int64_t(load_u16(rec[1] + 2)) - ya) * (int64_t(load_u16(rec[2])) - xa);
   if (area == 0) return fail(Status::bad_triangle);
-  // The cyclic order with positive area, then the rotation the v1 blob stored.
-  const int cyc[3] = {0, area > 0 ? 1 : 2, area > 0 ? 2 : 1};
+  // The rotation the v1 blob stored of the cyclic order with positive area.
   uint32_t r = 0;
   if (decode_bit(rc_, m_.rotation[0])) r = 1 + decode_bit(rc_, m_.rotation[1]);
   uint16_t flags = 0;
@@ -642,23 +641,34 @@ Status LayerDecoder::next(DecodedTriangle* out) {
     if (st != Status::ok) return st;
   }
   const bool z = blob_->method == Method::zienkiewicz;
+  // Corner k of the v1 order: the positive cyclic order, (0, 1, 2) or (0, 2, 1), rotated by r.
+  static constexpr uint8_t order[2][3][3] = {{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}}, {{0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+  const uint8_t* const corners = order[area > 0 ? 0 : 1][r];
   int32_t top = 0x7FFFFFFF;
   for (int k = 0; k < 3; ++k) {
-    const int corner = cyc[(r + uint32_t(k)) % 3];
+    const int corner = corners[k];
     const uint8_t* p = rec[corner];
     out->v[k] = index[corner];
+    const uint16_t y = load_u16(p + 2);
     out->x[k] = load_u16(p);
-    out->y[k] = load_u16(p + 2);
-    top = out->y[k] < top ? out->y[k] : top;
-    for (int ch = 0; ch < 3; ++ch) {
-      out->values[k][ch] = ch < nv ? load_u16(p + 4 + 2 * ch) : 0;
-      out->gradients[k][ch][0] = out->gradients[k][ch][1] = 0;
-      if (z && ch < nv) {
-        const uint8_t* g = p + gradients_at(uint32_t(nv)) + 8 * ch;
-        out->gradients[k][ch][0] = int32_t(load_u32(g));
-        out->gradients[k][ch][1] = int32_t(load_u32(g + 4));
-      }
+    out->y[k] = y;
+    top = y < top ? y : top;
+    if (nv == 1) {
+      out->values[k][0] = load_u16(p + 4);
+      out->values[k][1] = out->values[k][2] = 0;
+    } else {
+      out->values[k][0] = load_u16(p + 4);
+      out->values[k][1] = load_u16(p + 6);
+      out->values[k][2] = load_u16(p + 8);
     }
+    int32_t* g = &out->gradients[k][0][0];
+    for (int i = 0; i < 6; ++i) g[i] = 0;
+    if (z)
+      for (int ch = 0; ch < nv; ++ch) {
+        const uint8_t* q = p + gradients_at(uint32_t(nv)) + 8 * ch;
+        g[2 * ch] = int32_t(load_u32(q));
+        g[2 * ch + 1] = int32_t(load_u32(q + 4));
+      }
   }
   out->flags = flags;
   if (top < previous_row_) return fail(Status::unsorted);
