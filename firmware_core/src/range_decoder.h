@@ -95,10 +95,14 @@ inline bool decode_uint(RangeDecoder& d, UintModel& m, int max_bits, uint32_t* o
     if (++k > max_bits) return false;
   }
   uint32_t n = 1;
-  Prob* tree = m.mantissa[k < 15 ? k : 15];
-  int i = 0;
-  for (; i < k && i < 2; ++i) n = (n << 1) | decode_bit(d, tree[i == 0 ? 0 : 1 + (n & 1)]);
-  if (k > 2) n = (n << (k - 2)) | decode_direct(d, k - 2);
+  if (k > 0) {
+    Prob* tree = m.mantissa[k < 15 ? k : 15];
+    n = 2 | decode_bit(d, tree[0]);
+    if (k > 1) {
+      n = (n << 1) | decode_bit(d, tree[1 + (n & 1)]);
+      if (k > 2) n = (n << (k - 2)) | decode_direct(d, k - 2);
+    }
+  }
   *out = n - 1;
   return true;
 }
