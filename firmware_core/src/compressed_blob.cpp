@@ -166,6 +166,7 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   detail::reset(m_.lift_gap);
   detail::reset(m_.flag_bit, 9);
   decoded_ = slot_ = triangles_ = pixel_ = previous_top_ = 0;
+  row_ = row_start_ = 0;
   previous_row_ = 0;
   for (int c = 0; c < 3; ++c) {
     last_values_[c] = 0;
@@ -177,7 +178,8 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
 
 // The pinned record of a vertex not yet in the ring, or null.
 uint8_t* LayerDecoder::pinned_record(uint32_t index) const {
-  if (index < decoded_) return nullptr;
+  // next_pinned_ is the smallest index pending in a slot (decode_position takes it before it passes)
+  if (index < decoded_ || index < next_pinned_) return nullptr;
   const uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
   for (uint32_t i = 0; i < layer_->pinned; ++i)
     if (load_u32(indices + 4 * i) == index) return pins_ + size_t(i) * record_;
@@ -194,18 +196,18 @@ void LayerDecoder::find_next_pinned() {
 }
 
 // The record of a vertex: in the ring, or pinned ahead of it; null when it is in neither.
-uint8_t* LayerDecoder::record(uint32_t index) const {
+// Inlined: it is called a dozen times per triangle.
+__attribute__((always_inline)) inline uint8_t* LayerDecoder::record(uint32_t index) const {
   if (index >= decoded_) return pinned_record(index);
-  if (decoded_ - index > layer_->window) return nullptr;
-  const uint32_t back = decoded_ - index;  // 1 .. window
-  const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
+  const uint32_t back = decoded_ - index, window = layer_->window;
+  if (back > window) return nullptr;
+  const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + window - back;  // back: 1 .. window
   return ring_ + size_t(slot) * record_;
 }
 
 // Whether the values of a record are decoded, and the sides of its open edges (edges_at).
 namespace {
 uint8_t& known_byte(uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
-uint8_t known_byte(const uint8_t* rec, int per_vertex) { return rec[4 + 2 * per_vertex]; }
 uint8_t& sides_byte(uint8_t* rec, int per_vertex) { return rec[5 + 2 * per_vertex]; }
 }  // namespace
 
@@ -218,6 +220,37 @@ int32_t gradient_prediction(const uint8_t* p0, const uint8_t* p1, int nv, int c,
   return p1 ? int32_t((g0 + int32_t(load_u32(p1 + at))) >> 1) : int32_t(g0);
 }
 }  // namespace
+
+// Vertex decoded_, of pixel row `row`, enters the ring. When it starts a new row, the previous
+// row's vertices still in the ring and unused get their skips for fresh(), in the 4 bytes their
+// open edges take once used: at edges_at the distance to the row's end (the first vertex after
+// the row), at edges_at + 2 the distance to the first later vertex of the row in another 32-pixel
+// block of columns, or to the row's end. 0 means not set (the last row, still open). Both stay
+// below the window and point before decoded_, whatever the stream.
+void LayerDecoder::enter_row(uint32_t row) {
+  if (decoded_ != 0 && row == row_) return;
+  const uint32_t end = decoded_, window = layer_->window;
+  const uint32_t oldest = end >= window ? end - window + 1 : 0;  // slot_ is being taken by `end`
+  uint32_t i = end;
+  if (decoded_ != 0 && end - row_start_ >= 2) {
+    const int S = config::subpixel_bits;
+    const uint32_t nv = blob_->values_per_vertex, known_at = 4 + 2 * nv, skips = edges_at(nv);
+    const uint32_t first = row_start_ > oldest ? row_start_ : oldest;
+    uint8_t* p = ring_ + size_t(slot_) * record_;
+    uint32_t next_block = end, block = 0xFFFFFFFFu;
+    while (i > first) {
+      --i;
+      p = p == ring_ ? ring_ + size_t(window - 1) * record_ : p - record_;
+      const uint32_t b = uint32_t(load_u16(p)) >> (S + 5);
+      if (b != block) next_block = i + 1, block = b;
+      if (p[known_at]) continue;
+      store_u16(p + skips, end - i);
+      store_u16(p + skips + 2, next_block - i);
+    }
+  }
+  row_ = row;
+  row_start_ = end;
+}
 
 Status LayerDecoder::decode_position() {
   using namespace detail;
@@ -235,6 +268,7 @@ Status LayerDecoder::decode_position() {
     if (!pin) return fail(Status::bad_index);
     for (uint32_t i = 0; i < record_; ++i) rec[i] = pin[i];
     pixel_ = uint32_t(load_u16(rec + 2) >> S) * blob.width + uint32_t(load_u16(rec) >> S);
+    enter_row(pixel_ / blob.width);
     ++decoded_;
     slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
     find_next_pinned();
@@ -258,7 +292,9 @@ Status LayerDecoder::decode_position() {
   store_u16(rec + 2, y);
   known_byte(rec, blob.values_per_vertex) = 0;
   sides_byte(rec, blob.values_per_vertex) = 0;
+  store_u32(rec + edges_at(blob.values_per_vertex), 0);  // no skips yet (fresh)
   pixel_ = uint32_t(pixel);
+  enter_row(py);
   ++decoded_;
   slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
   return Status::ok;
@@ -369,6 +405,7 @@ Status LayerDecoder::place(uint32_t index) {
   store_u16(rec + 2, y);
   known_byte(rec, blob.values_per_vertex) = 0;
   sides_byte(rec, blob.values_per_vertex) = 0;
+  store_u32(rec + edges_at(blob.values_per_vertex), 0);  // no skips yet (fresh)
   store_u32(indices + 4 * pin_slot_, index);
   pin_slot_ = pin_slot_ + 1 == layer_->pinned ? 0 : pin_slot_ + 1;
   if (index < next_pinned_) next_pinned_ = index;
@@ -378,9 +415,7 @@ Status LayerDecoder::place(uint32_t index) {
 // The columns (1/16 pixel) where the third corner of a triangle on the edge a->s is looked for:
 // the edge's span widened by its length (L-infinity) and 2 pixels on each side; all of them when
 // a or s has no record.
-LayerDecoder::Columns LayerDecoder::columns(uint32_t a, uint32_t s) const {
-  const uint8_t* ra = record(a);
-  const uint8_t* rs = record(s);
+LayerDecoder::Columns LayerDecoder::columns(const uint8_t* ra, const uint8_t* rs) {
   if (!ra || !rs) return Columns{0, 0xFFFF};
   const int32_t ax = load_u16(ra), ay = load_u16(ra + 2), sx = load_u16(rs), sy = load_u16(rs + 2);
   const int32_t dx = ax > sx ? ax - sx : sx - ax, dy = ay > sy ? ay - sy : sy - ay;
@@ -393,11 +428,9 @@ LayerDecoder::Columns LayerDecoder::columns(uint32_t a, uint32_t s) const {
 // (the smallest dot / cross of (a - q, s - q)), compared exactly in 64 bits on pixel coordinates
 // (differences below 2^12, so dot and cross below 2^25); ties keep the first. 0xFFFFFFFF when a or
 // s has no record or no candidate is on that side.
-uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, int side) const {
+uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side) const {
   const int nv = blob_->values_per_vertex;
   const int S = config::subpixel_bits;
-  uint8_t* ra = record(a);
-  uint8_t* rs = record(s);
   if (!ra || !rs) return 0xFFFFFFFFu;
   const int32_t ax = load_u16(ra) >> S, ay = load_u16(ra + 2) >> S;
   const int32_t sx = load_u16(rs) >> S, sy = load_u16(rs + 2) >> S;
@@ -433,26 +466,59 @@ uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, int side) const {
 // The vertex after `a` that `count` eligible unused ones precede: in the ring, those whose values
 // are not decoded (no triangle used them) and whose column is in `cols`; beyond the ring, every
 // one (pinned ones included, the encoder counts them alike). V (out of range) when `a + 1` is
-// older than the ring.
-uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) const {
-  const int nv = blob_->values_per_vertex;
+// older than the ring. The walk skips runs of used vertices by their known bytes: a used vertex's
+// byte k (1 .. 255) says it and the k - 1 after it are used (values are never undecoded, and all of
+// them are below decoded_, so in the ring while it is); each run's first byte is set to the run's
+// length as the walk finds it (capped at 255), so later walks skip it in one step.
+uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
+  const int S = config::subpixel_bits;
+  const uint32_t known_at = 4 + 2 * uint32_t(blob_->values_per_vertex);
+  const uint32_t skips = edges_at(uint32_t(blob_->values_per_vertex));
   uint32_t r = a + 1;
-  if (r < decoded_) {
-    const uint32_t back = decoded_ - r;
-    if (back > layer_->window) return layer_->vertex_count;
-    uint32_t slot = slot_ >= back ? slot_ - back : slot_ + layer_->window - back;
-    const uint8_t* p = ring_ + size_t(slot) * record_;
-    for (; r < decoded_; ++r) {
-      const int32_t x = load_u16(p);
-      if (!known_byte(p, nv) && x >= cols.lo && x <= cols.hi) {
+  const uint32_t end = decoded_;
+  if (r < end) {
+    const uint32_t window = layer_->window, bytes = record_;
+    uint8_t* const ring = ring_;
+    const uint32_t back = end - r;
+    if (back > window) return layer_->vertex_count;
+    const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + window - back;
+    const size_t span = size_t(window) * bytes;
+    uint8_t* const ring_end = ring + span;
+    uint8_t* p = ring + size_t(slot) * bytes;
+    const int32_t lo = cols.lo, hi = cols.hi;
+    while (r < end) {
+      uint32_t k = p[known_at];
+      if (k) {
+        uint8_t* const first = p;
+        uint32_t run = 0;
+        do {
+          run += k;
+          r += k;
+          p += size_t(k) * bytes;  // k <= end - r before the step, so within one wrap
+          if (p >= ring_end) p -= span;
+          if (r >= end) break;
+          k = p[known_at];
+        } while (k);
+        first[known_at] = uint8_t(run < 255 ? run : 255);
+        continue;
+      }
+      // An unused vertex: counted when in the columns, else the rest of its row (right of hi) or
+      // of its 32-pixel block (left of lo) is skipped when the row is complete.
+      const uint32_t x = load_u16(p);
+      uint32_t step = 1;
+      if (int32_t(x) < lo) {
+        const uint32_t skip = load_u16(p + skips + 2);
+        if (skip && int32_t(((x >> (S + 5)) + 1) << (S + 5)) <= lo) step = skip;
+      } else if (int32_t(x) > hi) {
+        const uint32_t skip = load_u16(p + skips);
+        if (skip && int32_t((x >> S) << S) > hi) step = skip;
+      } else {
         if (count == 0) return r;
         --count;
       }
-      p += record_;
-      if (++slot == layer_->window) {
-        slot = 0;
-        p = ring_;
-      }
+      r += step;
+      p += size_t(step) * bytes;  // the skips point before decoded_: within one wrap
+      if (p >= ring_end) p -= span;
     }
   }
   return uint64_t(r) + count;
@@ -461,9 +527,8 @@ uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) const {
 // Records the edge from->to (from < to) of a decoded triangle whose third corner is on its
 // positive side or not: a side already known closes the edge (both triangles decoded), else it
 // becomes the most recent open edge of `from`, the oldest of two dropped.
-void LayerDecoder::add_edge(uint32_t from, uint32_t to, bool positive) {
+void LayerDecoder::add_edge(uint8_t* rec, uint32_t to, bool positive) {
   const int nv = blob_->values_per_vertex;
-  uint8_t* rec = record(from);
   uint8_t* ends = rec + edges_at(uint32_t(nv));
   const uint32_t bit = positive ? 1u : 2u;
   uint32_t sides = sides_byte(rec, nv);
@@ -503,6 +568,7 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   const uint32_t step_class = step < 2 ? step : 2;
   const int64_t a = int64_t(previous_top_) + s;
   if (a < 0 || a >= V) return fail(Status::bad_index);
+  uint8_t* const ra = record(uint32_t(a));
   // The anchor: one of a's open edges (its third corner on the side not decoded yet) or a gap.
   const uint32_t pick = decode_symbol8(rc_, m_.anchor[step_class]);
   uint64_t anchor;
@@ -515,7 +581,6 @@ Status LayerDecoder::next(DecodedTriangle* out) {
     side = decode_bit(rc_, m_.side) ? -1 : 1;
     kind = 2;
   } else {
-    uint8_t* ra = record(uint32_t(a));
     const uint32_t m = pick < 2 && ra ? (sides_byte(ra, nv) >> (2 * pick)) & 3u : 0;
     if (!m) return fail(Status::bad_index);
     anchor = load_u16(ra + edges_at(uint32_t(nv)) + 2 * pick);
@@ -525,8 +590,9 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   if (anchor >= V) return fail(Status::bad_index);
   // The third corner: predicted, else a fresh vertex by its count among the unused ones after a,
   // else a gap.
-  const Columns cols = columns(uint32_t(a), uint32_t(anchor));
-  const uint32_t guess = predict(uint32_t(a), uint32_t(anchor), side);
+  uint8_t* const rs = record(uint32_t(anchor));
+  const Columns cols = columns(ra, rs);
+  const uint32_t guess = predict(uint32_t(a), uint32_t(anchor), ra, rs, side);
   uint64_t third;
   bool hit = false;
   if (guess != 0xFFFFFFFFu && decode_bit(rc_, m_.predicted[kind])) {
@@ -558,8 +624,7 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   const int64_t area = (int64_t(load_u16(rec[1])) - xa) * (int64_t(load_u16(rec[2] + 2)) - ya) -
                        (int64_t(load_u16(rec[1] + 2)) - ya) * (int64_t(load_u16(rec[2])) - xa);
   if (area == 0) return fail(Status::bad_triangle);
-  // The cyclic order with positive area, then the rotation the v1 blob stored.
-  const int cyc[3] = {0, area > 0 ? 1 : 2, area > 0 ? 2 : 1};
+  // The rotation the v1 blob stored of the cyclic order with positive area.
   uint32_t r = 0;
   if (decode_bit(rc_, m_.rotation[0])) r = 1 + decode_bit(rc_, m_.rotation[1]);
   uint16_t flags = 0;
@@ -576,23 +641,34 @@ Status LayerDecoder::next(DecodedTriangle* out) {
     if (st != Status::ok) return st;
   }
   const bool z = blob_->method == Method::zienkiewicz;
+  // Corner k of the v1 order: the positive cyclic order, (0, 1, 2) or (0, 2, 1), rotated by r.
+  static constexpr uint8_t order[2][3][3] = {{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}}, {{0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+  const uint8_t* const corners = order[area > 0 ? 0 : 1][r];
   int32_t top = 0x7FFFFFFF;
   for (int k = 0; k < 3; ++k) {
-    const int corner = cyc[(r + uint32_t(k)) % 3];
+    const int corner = corners[k];
     const uint8_t* p = rec[corner];
     out->v[k] = index[corner];
+    const uint16_t y = load_u16(p + 2);
     out->x[k] = load_u16(p);
-    out->y[k] = load_u16(p + 2);
-    top = out->y[k] < top ? out->y[k] : top;
-    for (int ch = 0; ch < 3; ++ch) {
-      out->values[k][ch] = ch < nv ? load_u16(p + 4 + 2 * ch) : 0;
-      out->gradients[k][ch][0] = out->gradients[k][ch][1] = 0;
-      if (z && ch < nv) {
-        const uint8_t* g = p + gradients_at(uint32_t(nv)) + 8 * ch;
-        out->gradients[k][ch][0] = int32_t(load_u32(g));
-        out->gradients[k][ch][1] = int32_t(load_u32(g + 4));
-      }
+    out->y[k] = y;
+    top = y < top ? y : top;
+    if (nv == 1) {
+      out->values[k][0] = load_u16(p + 4);
+      out->values[k][1] = out->values[k][2] = 0;
+    } else {
+      out->values[k][0] = load_u16(p + 4);
+      out->values[k][1] = load_u16(p + 6);
+      out->values[k][2] = load_u16(p + 8);
     }
+    int32_t* g = &out->gradients[k][0][0];
+    for (int i = 0; i < 6; ++i) g[i] = 0;
+    if (z)
+      for (int ch = 0; ch < nv; ++ch) {
+        const uint8_t* q = p + gradients_at(uint32_t(nv)) + 8 * ch;
+        g[2 * ch] = int32_t(load_u32(q));
+        g[2 * ch + 1] = int32_t(load_u32(q + 4));
+      }
   }
   out->flags = flags;
   if (top < previous_row_) return fail(Status::unsorted);
@@ -600,9 +676,9 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   previous_top_ = uint32_t(a);
   previous_picks_ = uint8_t(2 * kind + (hit ? 1 : 0));
   // (a, b, c) has the sign of `area`; (a, c, b) the other.
-  add_edge(index[0], index[1], area > 0);
-  add_edge(index[0], index[2], area < 0);
-  add_edge(index[1], index[2], area > 0);
+  add_edge(rec[0], index[1], area > 0);
+  add_edge(rec[0], index[2], area < 0);
+  add_edge(rec[1], index[2], area > 0);
   ++triangles_;
   return Status::ok;
 }

@@ -29,14 +29,16 @@ inline void start(RangeDecoder& d, const uint8_t* p, const uint8_t* end) {
   for (int i = 0; i < 4; ++i) d.code = (d.code << 8) | next_byte(d);
 }
 
+// After a bit the range is at least (2^24 >> 11) x 31 (a probability stays in [31, 2017]) or 2^23
+// (a direct bit), so one byte restores it to 2^24 or more: an `if`, not a loop.
 inline void normalize(RangeDecoder& d) {
-  while (d.range < range_top) {
+  if (d.range < range_top) {
     d.range <<= 8;
     d.code = (d.code << 8) | next_byte(d);
   }
 }
 
-inline uint32_t decode_bit(RangeDecoder& d, Prob& prob) {
+__attribute__((always_inline)) inline uint32_t decode_bit(RangeDecoder& d, Prob& prob) {
   const uint32_t bound = (d.range >> prob_bits) * prob;
   uint32_t bit;
   if (d.code < bound) {
@@ -93,10 +95,14 @@ inline bool decode_uint(RangeDecoder& d, UintModel& m, int max_bits, uint32_t* o
     if (++k > max_bits) return false;
   }
   uint32_t n = 1;
-  Prob* tree = m.mantissa[k < 15 ? k : 15];
-  int i = 0;
-  for (; i < k && i < 2; ++i) n = (n << 1) | decode_bit(d, tree[i == 0 ? 0 : 1 + (n & 1)]);
-  if (k > 2) n = (n << (k - 2)) | decode_direct(d, k - 2);
+  if (k > 0) {
+    Prob* tree = m.mantissa[k < 15 ? k : 15];
+    n = 2 | decode_bit(d, tree[0]);
+    if (k > 1) {
+      n = (n << 1) | decode_bit(d, tree[1 + (n & 1)]);
+      if (k > 2) n = (n << (k - 2)) | decode_direct(d, k - 2);
+    }
+  }
   *out = n - 1;
   return true;
 }

@@ -164,6 +164,7 @@ class LayerDecoder {
  private:
   Status fail(Status s);
   Status decode_position();
+  void enter_row(uint32_t row);
   Status place(uint32_t index);
   uint8_t* pinned_record(uint32_t index) const;
   void find_next_pinned();
@@ -171,10 +172,10 @@ class LayerDecoder {
   struct Columns {
     int32_t lo, hi;  // 1/16 pixel
   };
-  Columns columns(uint32_t a, uint32_t s) const;
-  uint32_t predict(uint32_t a, uint32_t s, int side) const;
-  uint64_t fresh(uint32_t a, uint32_t count, Columns cols) const;
-  void add_edge(uint32_t from, uint32_t to, bool positive);
+  static Columns columns(const uint8_t* ra, const uint8_t* rs);
+  uint32_t predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side) const;
+  uint64_t fresh(uint32_t a, uint32_t count, Columns cols);
+  void add_edge(uint8_t* from, uint32_t to, bool positive);
   uint8_t* record(uint32_t index) const;
 
   const CompressedBlob* blob_;
@@ -192,6 +193,8 @@ class LayerDecoder {
   uint32_t slot_;  // ring slot of vertex decoded_
   uint32_t triangles_;  // triangles decoded
   uint32_t pixel_;  // raster pixel index of the last vertex
+  uint32_t row_;  // its pixel row
+  uint32_t row_start_;  // the first vertex of that row
   uint32_t previous_top_;  // first index of the previous triangle
   int32_t previous_row_;  // top y (position_fx) of the previous triangle
   uint8_t previous_picks_;  // context of the next triangle's first vertex
