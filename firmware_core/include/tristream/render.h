@@ -108,6 +108,7 @@ struct CompressedWorkspace {
   size_t decoders = 0;          // per layer: the decoder object, the held triangle, its ring
   size_t band_store = 0;        // per layer, for live_triangles
   uint32_t live_triangles = 0;  // C: the most live triangles of a layer in one band
+  uint32_t live_vertices = 0;   // V: the most vertices of a layer's live triangles in one band
 };
 Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
                       CompressedWorkspace* figures, BlobError* error = nullptr);
