@@ -63,33 +63,30 @@ inline void decoded_row_extent(const Mapping& map, const DecodedTriangle& t, int
 // the vertex count when the triangles or the bitmap would not fit otherwise, so a store of `bytes`
 // takes every band whose need is at most `bytes`. Invariant between calls: 4 slots bytes of map fit
 // after the triangles.
+// Its fields are few (the render's stack holds three stores): the positions are at `base`, the
+// other sections' addresses follow from `slots`.
 struct BandStore {
   BlobLayer* layer = nullptr;  // the view the tile path reads; triangle_count is the store's count
-  uint8_t* base = nullptr;
-  size_t bytes = 0;  // a multiple of 4; base is 4-aligned
-  uint32_t values_per_vertex = 1;
-  bool has_gradients = false;
-  uint32_t slots = 0;     // vertex capacity of the current layout
-  uint32_t vertices = 0;  // slots in use: [0, vertices)
-  uint32_t added = 0;     // vertices added in the current band
-  uint32_t added_before = 0;  // in the band before (the next band's first guess of slots)
-  uint8_t* positions = nullptr;
-  uint8_t* values = nullptr;
-  uint8_t* gradients = nullptr;
-  uint16_t* keys = nullptr;  // stream index of each slot
-  uint8_t* triangles = nullptr;
+  uint8_t* base = nullptr;     // 4-aligned; the positions
+  size_t bytes = 0;            // a multiple of 4
+  uint32_t slots = 0;          // vertex capacity of the current layout
+  uint32_t vertices = 0;       // slots in use: [0, vertices)
+  uint32_t added = 0;          // vertices added in the current band
+  uint16_t* keys = nullptr;    // stream index of each slot
   uint16_t* entries = nullptr;  // 2 slots map entries: a slot, or band_store_free
+  uint8_t values_per_vertex = 1;
+  bool has_gradients = false;
 
   void init(uint8_t* at, size_t size, uint32_t per_vertex, bool with_gradients, BlobLayer* view) {
     base = at;
     bytes = size / 4 * 4;
-    values_per_vertex = per_vertex;
+    values_per_vertex = uint8_t(per_vertex);
     has_gradients = with_gradients;
-    slots = vertices = added = added_before = 0;
+    vertices = added = 0;
     layer = view;
     layer->vertex_count = layer->triangle_count = 0;
     place(0);
-    layer->gradients = with_gradients ? gradients : nullptr;
+    layer->gradients = with_gradients ? gradients() : nullptr;
   }
 
   uint32_t count() const { return layer->triangle_count; }
@@ -100,9 +97,8 @@ struct BandStore {
   void begin_band(const Mapping& map, int32_t y0) {
     drop_ended(map, y0);
     compact_vertices();
-    added_before = added;
+    const uint32_t want = vertices + added + added / 4 + 16;
     added = 0;
-    const uint32_t want = vertices + added_before + added_before / 4 + 16;
     const uint32_t fit = most_slots(count());
     relayout(want < fit ? want : fit);  // fit >= vertices: the invariant held for more triangles
   }
@@ -121,7 +117,7 @@ struct BandStore {
       relayout(vertices);  // the slack of slots makes room
       if (!fits(slots, n + 1, 4 * size_t(slots))) return Status::workspace_too_small;
     }
-    uint8_t* p = triangles + size_t(blob_triangle_size) * n;
+    uint8_t* p = triangles() + size_t(blob_triangle_size) * n;
     for (int k = 0; k < 3; ++k) store16(p + 2 * k, slot[k]);
     store16(p + 6, t.flags);
     layer->triangle_count = n + 1;
@@ -137,13 +133,17 @@ struct BandStore {
       relayout(vertices);
       if (!fits(slots, n, bitmap_bytes(n))) return nullptr;
     }
-    uint32_t* words = reinterpret_cast<uint32_t*>(triangles + size_t(blob_triangle_size) * n);
+    uint32_t* words = reinterpret_cast<uint32_t*>(triangles() + size_t(blob_triangle_size) * n);
     for (uint32_t w = 0; w < n / 32; ++w) words[w] = 0xFFFFFFFFu;
     if (n % 32) words[n / 32] = (1u << (n % 32)) - 1;
     return words;
   }
 
  private:
+  uint8_t* values() const { return base + 4 * size_t(slots); }
+  uint8_t* gradients() const { return values() + align4_size(2 * size_t(slots) * values_per_vertex); }
+  uint8_t* triangles() const { return reinterpret_cast<uint8_t*>(keys) + align4_size(2 * size_t(slots)); }
+
   static void store16(uint8_t* p, uint16_t v) {
     p[0] = uint8_t(v);
     p[1] = uint8_t(v >> 8);
@@ -172,41 +172,40 @@ struct BandStore {
   // Section addresses for `cap` slots (the map at the end of the store).
   void place(uint32_t cap) {
     const size_t n = cap;
-    positions = base;
-    values = positions + 4 * n;
-    gradients = values + align4_size(2 * n * values_per_vertex);
-    keys = reinterpret_cast<uint16_t*>(gradients + (has_gradients ? 8 * n * values_per_vertex : 0));
-    triangles = reinterpret_cast<uint8_t*>(keys) + align4_size(2 * n);
-    entries = reinterpret_cast<uint16_t*>(base + bytes - 4 * n);
     slots = cap;
-    layer->positions = positions;
-    layer->values = values;
-    if (has_gradients) layer->gradients = gradients;
-    layer->triangles = triangles;
+    keys = reinterpret_cast<uint16_t*>(gradients() + (has_gradients ? 8 * n * values_per_vertex : 0));
+    entries = reinterpret_cast<uint16_t*>(base + bytes - 4 * n);
+    layer->positions = base;
+    layer->values = values();
+    if (has_gradients) layer->gradients = gradients();
+    layer->triangles = triangles();
     layer->vertex_count = cap;
   }
 
   // Moves to a layout of `cap` >= vertices slots (which must fit with the triangles and the map)
   // and rebuilds the map.
   void relayout(uint32_t cap) {
-    uint8_t* const old_values = values;
-    uint8_t* const old_gradients = gradients;
+    uint8_t* const old_values = values();
+    uint8_t* const old_gradients = gradients();
     uint8_t* const old_keys = reinterpret_cast<uint8_t*>(keys);
-    uint8_t* const old_triangles = triangles;
+    uint8_t* const old_triangles = triangles();
     const size_t nv = vertices, nt = count();
     const size_t value_bytes = 2 * nv * values_per_vertex, gradient_bytes = has_gradients ? 8 * nv * values_per_vertex : 0;
     place(cap);
+    uint8_t* const to_values = values();
+    uint8_t* const to_gradients = gradients();
+    uint8_t* const to_triangles = triangles();
     // The sections after the positions all move the same way: the last first when they move up.
-    if (triangles > old_triangles) {
-      memmove(triangles, old_triangles, size_t(blob_triangle_size) * nt);
+    if (to_triangles > old_triangles) {
+      memmove(to_triangles, old_triangles, size_t(blob_triangle_size) * nt);
       memmove(keys, old_keys, 2 * nv);
-      if (gradient_bytes) memmove(gradients, old_gradients, gradient_bytes);
-      memmove(values, old_values, value_bytes);
-    } else if (triangles < old_triangles) {
-      memmove(values, old_values, value_bytes);
-      if (gradient_bytes) memmove(gradients, old_gradients, gradient_bytes);
+      if (gradient_bytes) memmove(to_gradients, old_gradients, gradient_bytes);
+      memmove(to_values, old_values, value_bytes);
+    } else if (to_triangles < old_triangles) {
+      memmove(to_values, old_values, value_bytes);
+      if (gradient_bytes) memmove(to_gradients, old_gradients, gradient_bytes);
       memmove(keys, old_keys, 2 * nv);
-      memmove(triangles, old_triangles, size_t(blob_triangle_size) * nt);
+      memmove(to_triangles, old_triangles, size_t(blob_triangle_size) * nt);
     }
     rebuild_map();
   }
@@ -256,14 +255,16 @@ struct BandStore {
     ++added;
     entries[free_entry(key)] = uint16_t(s);
     keys[s] = key;
-    store16(positions + 4 * size_t(s), t.x[k]);
-    store16(positions + 4 * size_t(s) + 2, t.y[k]);
+    store16(base + 4 * size_t(s), t.x[k]);
+    store16(base + 4 * size_t(s) + 2, t.y[k]);
+    uint8_t* const v = values();
+    uint8_t* const g = gradients();
     for (uint32_t c = 0; c < values_per_vertex; ++c) {
       const size_t i = size_t(s) * values_per_vertex + c;
-      store16(values + 2 * i, t.values[k][c]);
+      store16(v + 2 * i, t.values[k][c]);
       if (has_gradients) {
-        store32(gradients + 8 * i, uint32_t(t.gradients[k][c][0]));
-        store32(gradients + 8 * i + 4, uint32_t(t.gradients[k][c][1]));
+        store32(g + 8 * i, uint32_t(t.gradients[k][c][0]));
+        store32(g + 8 * i + 4, uint32_t(t.gradients[k][c][1]));
       }
     }
     *out = uint16_t(s);
@@ -272,14 +273,16 @@ struct BandStore {
 
   void drop_ended(const Mapping& map, int32_t y0) {
     const uint32_t n = count();
+    uint8_t* const tri = triangles();
+    const uint8_t* const pos = base;
     uint32_t kept = 0;
     for (uint32_t i = 0; i < n; ++i) {
-      const uint8_t* p = triangles + size_t(blob_triangle_size) * i;
+      const uint8_t* p = tri + size_t(blob_triangle_size) * i;
       int32_t top, bottom;
-      raw_row_extent(map, load16(positions + 4 * size_t(load16(p)) + 2), load16(positions + 4 * size_t(load16(p + 2)) + 2),
-                     load16(positions + 4 * size_t(load16(p + 4)) + 2), &top, &bottom);
+      raw_row_extent(map, load16(pos + 4 * size_t(load16(p)) + 2), load16(pos + 4 * size_t(load16(p + 2)) + 2),
+                     load16(pos + 4 * size_t(load16(p + 4)) + 2), &top, &bottom);
       if (bottom < y0) continue;
-      if (kept != i) memcpy(triangles + size_t(blob_triangle_size) * kept, p, blob_triangle_size);
+      if (kept != i) memcpy(tri + size_t(blob_triangle_size) * kept, p, blob_triangle_size);
       ++kept;
     }
     layer->triangle_count = kept;
@@ -289,10 +292,13 @@ struct BandStore {
   // serve as the old-to-new slot table. The map is rebuilt after.
   void compact_vertices() {
     const uint32_t n = count(), nv = vertices;
+    uint8_t* const tri = triangles();
+    uint8_t* const v = values();
+    uint8_t* const g = gradients();
     uint16_t* const renumber = entries;
     for (uint32_t s = 0; s < nv; ++s) renumber[s] = band_store_free;
     for (uint32_t i = 0; i < n; ++i) {
-      const uint8_t* p = triangles + size_t(blob_triangle_size) * i;
+      const uint8_t* p = tri + size_t(blob_triangle_size) * i;
       for (int k = 0; k < 3; ++k) renumber[load16(p + 2 * k)] = 0;
     }
     uint32_t kept = 0;
@@ -301,15 +307,15 @@ struct BandStore {
       if (renumber[s] == band_store_free) continue;
       renumber[s] = uint16_t(kept);
       if (kept != s) {
-        memcpy(positions + 4 * size_t(kept), positions + 4 * size_t(s), 4);
-        memcpy(values + vb * kept, values + vb * s, vb);
-        if (has_gradients) memcpy(gradients + gb * kept, gradients + gb * s, gb);
+        memcpy(base + 4 * size_t(kept), base + 4 * size_t(s), 4);
+        memcpy(v + vb * kept, v + vb * s, vb);
+        if (has_gradients) memcpy(g + gb * kept, g + gb * s, gb);
         keys[kept] = keys[s];
       }
       ++kept;
     }
     for (uint32_t i = 0; i < n; ++i) {
-      uint8_t* p = triangles + size_t(blob_triangle_size) * i;
+      uint8_t* p = tri + size_t(blob_triangle_size) * i;
       for (int k = 0; k < 3; ++k) store16(p + 2 * k, renumber[load16(p + 2 * k)]);
     }
     vertices = kept;
