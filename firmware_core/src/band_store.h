@@ -302,14 +302,19 @@ struct BandStore {
       for (int k = 0; k < 3; ++k) renumber[load16(p + 2 * k)] = 0;
     }
     uint32_t kept = 0;
-    const size_t vb = 2 * size_t(values_per_vertex), gb = 8 * size_t(values_per_vertex);
     for (uint32_t s = 0; s < nv; ++s) {
       if (renumber[s] == band_store_free) continue;
       renumber[s] = uint16_t(kept);
       if (kept != s) {
+        // Copies of constant sizes, which compilers inline (a call per vertex costs more).
         memcpy(base + 4 * size_t(kept), base + 4 * size_t(s), 4);
-        memcpy(v + vb * kept, v + vb * s, vb);
-        if (has_gradients) memcpy(g + gb * kept, g + gb * s, gb);
+        if (values_per_vertex == 1) {
+          memcpy(v + 2 * size_t(kept), v + 2 * size_t(s), 2);
+          if (has_gradients) memcpy(g + 8 * size_t(kept), g + 8 * size_t(s), 8);
+        } else {
+          memcpy(v + 6 * size_t(kept), v + 6 * size_t(s), 6);
+          if (has_gradients) memcpy(g + 24 * size_t(kept), g + 24 * size_t(s), 24);
+        }
         keys[kept] = keys[s];
       }
       ++kept;
