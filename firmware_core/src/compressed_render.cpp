@@ -62,7 +62,7 @@ uint32_t band_count(const detail::FramePlan& r) {
 
 // Takes the layer to band [y0, y1]: drops what ended above y0, appends what starts by y1.
 Status advance(LayerStream& s, detail::BandStore& store, const detail::Mapping& map, int32_t y0, int32_t y1) {
-  store.drop_ended(map, y0);
+  store.begin_band(map, y0);
   for (;;) {
     if (!s.has_held) {
       if (s.remaining == 0) return Status::ok;
@@ -76,8 +76,8 @@ Status advance(LayerStream& s, detail::BandStore& store, const detail::Mapping& 
     if (top > y1) return Status::ok;
     s.has_held = false;
     if (bottom < y0 || top > bottom) continue;  // above the viewport, or no row's sample points
-    if (store.count() >= store.capacity) return Status::workspace_too_small;
-    store.append(s.held);
+    const Status st = store.append(s.held);
+    if (st != Status::ok) return st;
   }
 }
 
@@ -92,7 +92,11 @@ Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& para
   detail::FramePlan r;
   const Status s = detail::plan_frame(header_view(blob), params, &r);
   if (s != Status::ok) return s;
-  *bytes = 8 + align8(sizeof(LayerDecoder)) + align8(expand_workspace_size(blob)) + 4 * (size_t(band_count(r)) + 1);
+  uint32_t most_vertices = 0;
+  for (int l = 0; l < blob.layer_count; ++l)
+    most_vertices = blob.layers[l].vertex_count > most_vertices ? blob.layers[l].vertex_count : most_vertices;
+  *bytes = 8 + align8(sizeof(LayerDecoder)) + align8(expand_workspace_size(blob)) + 8 * (size_t(band_count(r)) + 1) +
+           2 * size_t(most_vertices);
   return Status::ok;
 }
 
@@ -120,13 +124,20 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
   LayerDecoder* decoder = reinterpret_cast<LayerDecoder*>(at);  // set by begin
   uint8_t* ring = at + align8(sizeof(LayerDecoder));
   const size_t ring_bytes = align8(expand_workspace_size(blob));
-  uint32_t* live = reinterpret_cast<uint32_t*>(ring + ring_bytes);  // per band: live triangles' difference
   const uint32_t bands = band_count(r);
-  uint32_t most = 0;
-  size_t fixed = 0;
+  uint32_t* live = reinterpret_cast<uint32_t*>(ring + ring_bytes);  // per band: live triangles' difference
+  uint32_t* live_vertices = live + (bands + 1);                     // and live vertices'
+  // Per stream index: the last band of a triangle using it, or 0xFFFF before the first (bands <=
+  // 65,535: the output height is a u16).
+  uint16_t* last_band = reinterpret_cast<uint16_t*>(live_vertices + (bands + 1));
+  const bool gradients = blob.method == Method::zienkiewicz;
+  uint32_t most = 0, most_vertices = 0;
+  size_t store = 0, fixed = 0;
   for (int l = 0; l < blob.layer_count; ++l) {
     fixed += stream_bytes(blob, l);
-    for (uint32_t b = 0; b <= bands; ++b) live[b] = 0;
+    const uint32_t vertex_count = blob.layers[l].vertex_count;
+    for (uint32_t b = 0; b <= bands; ++b) live[b] = live_vertices[b] = 0;
+    for (uint32_t v = 0; v < vertex_count; ++v) last_band[v] = 0xFFFF;
     s = decoder->begin(blob, l, ring, ring_bytes);
     if (s != Status::ok) return s;
     DecodedTriangle t;
@@ -146,23 +157,43 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
       const uint32_t b1 = uint32_t((last - r.view.y0) / r.tile_h);
       ++live[b0];
       --live[b1 + 1];
+      // A vertex is stored from the band of its first live triangle (the one with the least top
+      // row: the stream is in top-row order) to the last band of any of them, and in every band
+      // between: each of its triangles has the row floor(y) or floor(y) + 1 of the vertex, so
+      // their bands overlap or touch.
+      for (int k = 0; k < 3; ++k) {
+        if (t.v[k] >= vertex_count) return Status::bad_index;  // never from a decoder
+        uint16_t& last_of = last_band[t.v[k]];
+        if (last_of == 0xFFFF) {
+          ++live_vertices[b0];
+          last_of = uint16_t(b1);
+        } else if (b1 > last_of) {
+          last_of = uint16_t(b1);
+        }
+      }
     }
     s = decoder->finish();
     if (s != Status::ok) {
       if (error) error->offset = decoder->offset();
       return s;
     }
-    uint32_t n = 0;
+    for (uint32_t v = 0; v < vertex_count; ++v)
+      if (last_band[v] != 0xFFFF) --live_vertices[last_band[v] + 1];
+    uint32_t n = 0, nv = 0;
     for (uint32_t b = 0; b < bands; ++b) {
       n += live[b];
+      nv += live_vertices[b];
       most = n > most ? n : most;
+      most_vertices = nv > most_vertices ? nv : most_vertices;
+      const size_t need = detail::band_store_bytes(nv, n, blob.values_per_vertex, gradients);
+      store = need > store ? need : store;
     }
   }
-  if (most > detail::band_store_max_triangles) return Status::too_large;
   figures->channel_scratch = detail::scratch_bytes(view, r, r.format);
   figures->decoders = fixed;
   figures->live_triangles = most;
-  figures->band_store = detail::band_store_bytes(most, blob.values_per_vertex, blob.method == Method::zienkiewicz);
+  figures->live_vertices = most_vertices;
+  figures->band_store = store;
   figures->bytes = 8 + figures->channel_scratch + fixed + size_t(blob.layer_count) * figures->band_store;
   return Status::ok;
 }
@@ -189,7 +220,6 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
   int16_t* scratch_ptr = scratch ? reinterpret_cast<int16_t*>(ws + pad_of(ws)) : nullptr;
   const bool gradients = blob.method == Method::zienkiewicz;
   const size_t share = (buffers.workspace_bytes - fixed) / blob.layer_count / 4 * 4;
-  const uint32_t capacity = detail::band_store_capacity(share, blob.values_per_vertex, gradients);
   LayerStream* streams[3] = {nullptr, nullptr, nullptr};
   detail::BandStore stores[3];
   detail::ActiveSet sets[3];
@@ -205,10 +235,8 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
     at = ring + ring_bytes;
   }
   for (int l = 0; l < blob.layer_count; ++l) {
-    stores[l].init(at + size_t(l) * share, capacity, blob.values_per_vertex, gradients, &view.layers[l]);
+    stores[l].init(at + size_t(l) * share, share, blob.values_per_vertex, gradients, &view.layers[l]);
     sets[l].layer = &view.layers[l];
-    sets[l].words = stores[l].words;
-    sets[l].capacity = uint32_t(detail::bitmap_bytes(capacity) * 8);
   }
   const detail::TileRenderer draw = detail::tile_renderer(r.format);
   detail::TileBuffers tiles(buffers);
@@ -220,7 +248,10 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
         if (error && s != Status::workspace_too_small) error->offset = streams[l]->decoder.offset();
         return s;
       }
-      stores[l].mark_all_live();
+      // The bitmap's place and size follow the store's triangles, band by band.
+      sets[l].words = stores[l].mark_all_live();
+      if (!sets[l].words) return Status::workspace_too_small;
+      sets[l].capacity = uint32_t(detail::bitmap_bytes(stores[l].count()) * 8);
       sets[l].base = 0;
       sets[l].cursor = stores[l].count();
     }

@@ -5,7 +5,10 @@
 // is exactly sized).
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstring>
+#include <random>
+#include <set>
 #include <string>
 
 #include "core_bridge/compress.h"
@@ -264,4 +267,119 @@ TEST_CASE("every damaged byte and every truncation of a compressed blob renders 
       CHECK(attempt(std::vector<std::uint8_t>(good.begin(), good.begin() + std::ptrdiff_t(n))) != core::Status::ok);
     }
   }
+}
+
+namespace {
+
+// The store's need for V vertices and C triangles (render.h's formula): vertex slots (4 bytes of
+// position, 2 per value, 8 per gradient pair, 2 of stream index, each array 4-aligned), 8 bytes per
+// triangle, and the larger of the map (4 V) and the bitmap (4 ceil(C / 32)).
+std::size_t store_formula(std::size_t v, std::size_t c, std::size_t per_vertex, bool gradients) {
+  auto a4 = [](std::size_t n) { return (n + 3) / 4 * 4; };
+  const std::size_t map = 4 * v, bits = 4 * ((c + 31) / 32);
+  return 4 * v + a4(2 * v * per_vertex) + (gradients ? 8 * v * per_vertex : 0) + a4(2 * v) + 8 * c +
+         (map > bits ? map : bits);
+}
+
+core::CompressedWorkspace figures_of(const std::vector<std::uint8_t>& packed, const core::RenderParams& p) {
+  core::CompressedBlob blob;
+  REQUIRE(core::open_compressed_blob(packed.data(), packed.size(), &blob) == core::Status::ok);
+  std::size_t scratch_bytes = 0;
+  REQUIRE(core::measure_scratch_size(blob, p, &scratch_bytes) == core::Status::ok);
+  std::vector<std::uint8_t> scratch(scratch_bytes);
+  core::CompressedWorkspace f;
+  REQUIRE(core::workspace_size(blob, p, scratch.data(), scratch.size(), &f) == core::Status::ok);
+  return f;
+}
+
+// One band over the whole frame: every triangle of a lattice mesh has rows (its corners are on
+// pixel rows), so the band holds all of them and every vertex once.
+void check_one_band_store(const std::vector<std::uint8_t>& packed, const Mesh& mesh, core::Method m) {
+  const core::CompressedWorkspace f = figures_of(packed, params_of(CoreOptions{}, {0, 0}));
+  CHECK(f.live_vertices == mesh.points.size());
+  CHECK(f.live_triangles == mesh.triangles.size());
+  CHECK(f.band_store == store_formula(mesh.points.size(), mesh.triangles.size(), std::size_t(mesh.value_count),
+                                      m == core::Method::zienkiewicz));
+}
+
+}  // namespace
+
+TEST_CASE("the band store keeps each live vertex once") {
+  for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) {
+    CAPTURE(int(m));
+    DYNAMIC_SECTION("a band whose vertices are shared by many triangles: fans, method " << int(m)) {
+      // Two centres each with a ring of 48 points around it: a fan of 32 or more triangles on one
+      // vertex (the rounded ring is not quite a circle), all in the bands of 64 or more rows.
+      Mesh mesh;
+      mesh.value_count = 3;
+      for (auto [x, y] : {std::pair{0, 0}, {199, 0}, {0, 99}, {199, 99}}) mesh.points.push_back({double(x), double(y)});
+      for (int c = 0; c < 2; ++c) {
+        const double cx = 50 + 100 * c, cy = 50;
+        mesh.points.push_back({cx, cy});
+        for (int k = 0; k < 48; ++k) {
+          const double a = 2 * 3.14159265358979 * (k + 0.5 * c) / 48;
+          mesh.points.push_back({std::round(cx + 40 * std::cos(a)), std::round(cy + 40 * std::sin(a))});
+        }
+      }
+      std::mt19937 rng(7);
+      std::uniform_real_distribution<double> rv(0, 255);
+      for (std::size_t i = 0; i < mesh.points.size() * 3; ++i) mesh.values.push_back(rv(rng));
+      mesh.triangles = delaunay_triangulation(mesh.points);
+      int most = 0;  // the largest vertex degree
+      for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+        int d = 0;
+        for (const auto& t : mesh.triangles) d += t.v[0] == v || t.v[1] == v || t.v[2] == v;
+        most = d > most ? d : most;
+      }
+      CHECK(most >= 32);
+      const Triangulation tri = single_mesh(mesh, 200, 100, ColorSpace::rgb);
+      const std::vector<std::uint8_t> v1 = pack_blob(tri, m), packed = compress_blob(v1, "fans");
+      check_same_renders(v1, packed, every_format(), {{0, 0}, {0, 64}, {32, 32}, {0, 7}, {200, 100}});
+      for (const Tiling& t : {Tiling{0, 0}, Tiling{0, 64}, Tiling{16, 16}}) check_exact_workspace(packed, t);
+      check_one_band_store(packed, mesh, m);
+    }
+    DYNAMIC_SECTION("vertices carried across many bands: tall triangles, bands of one row, method " << int(m)) {
+      // Vertices only near the top and the bottom rows (and the corners): most triangles reach
+      // from the top to the bottom, so their corners stay in the store for 300 one-row bands,
+      // renumbered at every band as the triangles beside them end.
+      Mesh mesh;
+      mesh.value_count = 1;
+      std::mt19937 rng(11);
+      std::set<std::pair<int, int>> taken;
+      for (auto [x, y] : {std::pair{0, 0}, {99, 0}, {0, 299}, {99, 299}}) {
+        taken.insert({x, y});
+        mesh.points.push_back({double(x), double(y)});
+      }
+      std::uniform_int_distribution<int> rx(0, 99), ry(0, 9);
+      while (mesh.points.size() < 120) {
+        const int x = rx(rng), y = mesh.points.size() % 2 ? ry(rng) : 299 - ry(rng);
+        if (taken.insert({x, y}).second) mesh.points.push_back({double(x), double(y)});
+      }
+      std::uniform_real_distribution<double> rv(0, 255);
+      for (std::size_t i = 0; i < mesh.points.size(); ++i) mesh.values.push_back(rv(rng));
+      mesh.triangles = delaunay_triangulation(mesh.points);
+      const Triangulation tri = single_mesh(mesh, 100, 300);
+      const std::vector<std::uint8_t> v1 = pack_blob(tri, m), packed = compress_blob(v1, "tall");
+      check_same_renders(v1, packed, every_format(), {{0, 1}, {7, 1}, {0, 3}, {32, 32}});
+      for (const Tiling& t : {Tiling{0, 1}, Tiling{9, 2}}) check_exact_workspace(packed, t);
+      // The band across the middle rows holds the tall triangles and only their corners.
+      const core::CompressedWorkspace f = figures_of(packed, params_of(CoreOptions{}, {0, 1}));
+      CHECK(f.live_vertices < 3 * f.live_triangles / 2);
+      check_one_band_store(packed, mesh, m);
+    }
+  }
+}
+
+TEST_CASE("a band at the store's index limit: a layer of 65,535 vertices in one band") {
+  // Every vertex live at once: the u16 slots are all used (slot 65,534 the last), and the
+  // triangles (about 131,000) are bounded only by the workspace.
+  const Mesh mesh = random_lattice_mesh(320, 256, int(core::blob_max_vertices) - 4, 13);
+  REQUIRE(mesh.points.size() == core::blob_max_vertices);
+  const Triangulation tri = single_mesh(mesh, 320, 256);
+  const std::vector<std::uint8_t> v1 = pack_blob(tri, core::Method::bilinear), packed = compress_blob(v1, "limit");
+  CoreOptions o;
+  o.format = core::PixelFormat::l8;
+  check_same_renders(v1, packed, {o}, {{0, 0}, {0, 128}});
+  check_exact_workspace(packed, {0, 0}, o);
+  check_one_band_store(packed, mesh, core::Method::bilinear);
 }

@@ -167,6 +167,7 @@ int main(int argc, char** argv) {
                               {"decoders_bytes", f.decoders},
                               {"band_store_bytes", f.band_store},
                               {"live_triangles", f.live_triangles},
+                              {"live_vertices", f.live_vertices},
                               {"channel_scratch_bytes", f.channel_scratch},
                               {"stack_bytes", stream_stack},
                               {"ram_bytes", stream->tile_buffer_bytes() + f.bytes + stream_stack}};
@@ -199,10 +200,11 @@ int main(int argc, char** argv) {
                     core::expand_workspace_size(cblob), sizeof(core::LayerDecoder), core::expanded_blob_size(cblob));
         const core::CompressedWorkspace& f = stream->stream_workspace();
         std::printf("RAM rendered from the stream for %s, %s: tile buffer %zu + workspace %zu (8 + channel scratch %zu "
-                    "+ decoders and rings %zu + %d x band store %zu for %u live triangles) + stack %zu (Cortex-M4) "
-                    "= %zu bytes\n",
+                    "+ decoders and rings %zu + %d x band store %zu for at most %u live triangles and %u live "
+                    "vertices in a band) + stack %zu (Cortex-M4) = %zu bytes\n",
                     req.format.c_str(), tiles.c_str(), stream->tile_buffer_bytes(), f.bytes, f.channel_scratch,
-                    f.decoders, int(cblob.layer_count), f.band_store, unsigned(f.live_triangles), stream_stack,
+                    f.decoders, int(cblob.layer_count), f.band_store, unsigned(f.live_triangles), unsigned(f.live_vertices),
+                    stream_stack,
                     stream->tile_buffer_bytes() + f.bytes + stream_stack);
         std::printf("RAM of its v1 blob (read in place from flash, %zu bytes):\n", blob.size());
       } else {

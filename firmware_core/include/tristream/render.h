@@ -84,21 +84,23 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
 // A compressed blob ("TSTC", compressed_blob.h) rendered from its streams band by band, in the
 // same band and tile order as a v1 blob and with bit-identical pixels: per layer a LayerDecoder
 // and its ring, and the band's live triangles (those of the stream whose rows meet the band)
-// copied into a small v1-shaped layer, all in the workspace (docs/COMPRESSED_BLOB.md, "RAM of the
-// decoder"). Its workspace is
-//   8 + scratch + sum over layers (align8(decoder) + align8(ring))
-//     + layers x band store(C), band store(C) = 12 C + align4(6 v C) + 24 v C (zienkiewicz) + 8 C
-//     + 4 ceil(C / 32)
-// (v values per vertex; the channel scratch as for a v1 blob), with C the most live triangles of a
-// layer in one band, which only a decode of the streams finds: workspace_size decodes them once
-// with `scratch` (measure_scratch_size bytes) to measure C and checks every stream to its end.
+// copied into a small v1-shaped layer whose vertices each live triangle's corners share, all in
+// the workspace (docs/COMPRESSED_BLOB.md, "Rendering from the stream"). Its workspace is
+//   8 + scratch + sum over layers (align8(decoder) + align8(ring)) + layers x band store,
+//   band store = the largest over the layers and bands of need(V, C) with C the band's live
+//     triangles and V their vertices, need(V, C) = 4 V + align4(2 v V) + 8 v V (zienkiewicz)
+//     + align4(2 V) + 8 C + max(4 V, 4 ceil(C / 32))
+// (v values per vertex; the channel scratch as for a v1 blob), which only a decode of the streams
+// finds: workspace_size decodes them once with `scratch` (measure_scratch_size bytes) to count
+// each band's C and V and checks every stream to its end.
 Status tile_buffer_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes);
 // Bytes of scratch workspace_size(CompressedBlob) needs: 8 + align8(decoder) + align8(largest
-// ring) + 4 (bands + 1).
+// ring) + 8 (bands + 1) + 2 x the largest layer's vertex count.
 Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes);
 // Bytes of workspace `render` needs for this blob and these parameters (exact for an 8-aligned
 // workspace: one byte less is workspace_too_small). Decodes every stream: a damaged one returns
-// its status and `error` the decoder's byte offset. C above 21,845 (u16 indices) is too_large.
+// its status and `error` the decoder's byte offset. The store's u16 vertex slots hold any layer
+// (at most 65,535 vertices); its triangles are bounded by the workspace only.
 Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
                       size_t* bytes, BlobError* error = nullptr);
 // The terms of that workspace (bytes == 8 + channel_scratch + decoders + layers x band_store).
@@ -106,8 +108,9 @@ struct CompressedWorkspace {
   size_t bytes = 0;
   size_t channel_scratch = 0;
   size_t decoders = 0;          // per layer: the decoder object, the held triangle, its ring
-  size_t band_store = 0;        // per layer, for live_triangles
-  uint32_t live_triangles = 0;  // C: the most live triangles of a layer in one band
+  size_t band_store = 0;        // per layer: the largest need(V, C) of a band
+  uint32_t live_triangles = 0;  // the most live triangles of a layer in one band
+  uint32_t live_vertices = 0;   // the most vertices of a layer's live triangles in one band
 };
 Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
                       CompressedWorkspace* figures, BlobError* error = nullptr);
