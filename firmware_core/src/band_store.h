@@ -58,7 +58,7 @@ inline void decoded_row_extent(const Mapping& map, const DecodedTriangle& t, int
 
 // The store in `bytes` of workspace: [vertex slots for `slots` vertices: positions, values,
 // gradients, keys][triangles, growing]...[map: 2 slots u16 entries at the end]. Its need is
-// band_store_bytes(vertices, triangles) at every moment, whatever the slack: slots grow when a new
+// band_store_bytes(vertices, triangles) at every moment, whatever the slack: slots grow when a further
 // vertex finds none free (the arrays after the positions and the triangles move up), and shrink to
 // the vertex count when the triangles or the bitmap would not fit otherwise, so a store of `bytes`
 // takes every band whose need is at most `bytes`. Invariant between calls: 4 slots bytes of map fit
@@ -93,7 +93,7 @@ struct BandStore {
 
   // Starts band [y0, ...]: drops the triangles whose last row is above y0 (keeping the others in
   // order), then the vertices no kept triangle uses (renumbering the kept ones in order), and
-  // rebuilds the map with room for about as many new vertices as the band before added.
+  // rebuilds the map with room for about as many added vertices as the band before added.
   void begin_band(const Mapping& map, int32_t y0) {
     drop_ended(map, y0);
     compact_vertices();
@@ -103,7 +103,7 @@ struct BandStore {
     relayout(want < fit ? want : fit);  // fit >= vertices: the invariant held for more triangles
   }
 
-  // Appends a triangle (its corners' stream indices looked up, new ones stored). Returns
+  // Appends a triangle (its corners' stream indices looked up, unseen ones stored). Returns
   // workspace_too_small when the band's need passes `bytes`.
   Status append(const DecodedTriangle& t) {
     uint16_t slot[3];
@@ -228,7 +228,7 @@ struct BandStore {
     for (uint32_t s = 0; s < vertices; ++s) entries[free_entry(keys[s])] = uint16_t(s);
   }
 
-  // The slot of corner k of t: found in the map, or a new slot (more slots if none is free).
+  // The slot of corner k of t: found in the map, or a free slot (more slots if none is free).
   Status vertex_slot(const DecodedTriangle& t, int k, uint16_t* out) {
     if (t.v[k] >= band_store_max_vertices) return Status::bad_index;  // never from a decoder (< vertex count)
     const uint16_t key = uint16_t(t.v[k]);
@@ -289,7 +289,7 @@ struct BandStore {
   }
 
   // Keeps the vertices the triangles use, in slot order; the map's entries (2 slots >= vertices)
-  // serve as the old-to-new slot table. The map is rebuilt after.
+  // serve as the slot renumbering table. The map is rebuilt after.
   void compact_vertices() {
     const uint32_t n = count(), nv = vertices;
     uint8_t* const tri = triangles();

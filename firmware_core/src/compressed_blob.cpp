@@ -221,7 +221,7 @@ int32_t gradient_prediction(const uint8_t* p0, const uint8_t* p1, int nv, int c,
 }
 }  // namespace
 
-// Vertex decoded_, of pixel row `row`, enters the ring. When it starts a new row, the previous
+// Vertex decoded_, of pixel row `row`, enters the ring. When it starts a later row, the previous
 // row's vertices still in the ring and unused get their skips for fresh(), in the 4 bytes their
 // open edges take once used: at edges_at the distance to the row's end (the first vertex after
 // the row), at edges_at + 2 the distance to the first later vertex of the row in another 32-pixel
