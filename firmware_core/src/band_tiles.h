@@ -31,6 +31,7 @@ inline Status draw_band(TileRenderer draw, const Blob& blob, const RenderParams&
                         ActiveSet* sets, int32_t by, int32_t by1, int16_t* scratch, TileBuffers* buffers,
                         FrameSink sink, void* context) {
   const int bpp = bytes_per_pixel(r.format);
+  const bool cull_columns = r.tile_w < r.view.width();
   for (int32_t bx = r.view.x0; bx < r.view.x1; bx += r.tile_w) {
     const int32_t bx1 = bx + r.tile_w < r.view.x1 ? bx + r.tile_w : r.view.x1;
     Tile tile;
@@ -38,7 +39,7 @@ inline Status draw_band(TileRenderer draw, const Blob& blob, const RenderParams&
     tile.stride = (params.packed_tiles ? bx1 - bx : r.tile_w) * bpp;
     tile.rect = Rect{bx, by, bx1, by1};
     tile.format = r.format;
-    draw(blob, params, r.map, sets, tile.rect, tile.pixels, tile.stride, scratch);
+    draw(blob, params, r.map, sets, tile.rect, cull_columns, tile.pixels, tile.stride, scratch);
     // The sink gets output positions (the drawing positions less the frame's shift).
     tile.rect = Rect{bx - r.shift_x, by - r.shift_y, bx1 - r.shift_x, by1 - r.shift_y};
     if (!sink(context, &tile)) return Status::stopped;

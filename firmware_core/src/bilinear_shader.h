@@ -11,6 +11,7 @@
 #endif
 #include "tristream/detail/arith.h"
 #include "tristream/detail/interpolate.h"
+#include "tristream/detail/unroll.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {
@@ -78,6 +79,8 @@ struct BilinearShader {
   int bpp;
   BilinearChannel ch[Channels];
   int32_t xr = 0, yr = 0;
+  // Scan-path triangles are set up from e_ref32 where their division allows (begin).
+  static constexpr bool scan_e_ref64 = !(bilinear_short_division || bilinear_mod32_division) || TS_USE_SSE2;
 #if TS_USE_SSE2
   // RGB to a writer that takes rounded values: the channels' values (rounding offset included),
   // steps per column and per row in the writer's lanes.
@@ -89,8 +92,10 @@ struct BilinearShader {
     xr = s.xr;
     yr = s.yr;
     int32_t vals[3][Channels];
+    TS_UNROLL_FAST
     for (int k = 0; k < 3; ++k) vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
     auto setup = [&](const auto& by_area2, const auto* e_ref) {
+      TS_UNROLL_FAST
       for (int c = 0; c < Channels; ++c) {
         const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
         ch[c].setup(s.a, s.b, e_ref, by_area2, v3);

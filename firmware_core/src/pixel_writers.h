@@ -93,8 +93,15 @@ struct DirectWriter {
             store565_bytes(p, pack565_bytes_by_table<F>(u, u, u));
           }
         } else {
+          // G biased by 256 (the table's G half): v1 < 2^24 (put_span_in_range's range), so
+          // v1 + 2^24 does not wrap.
+          v1 += 256u << s;
+          // The table's address in a register for the whole row: an empty asm hides that it is a
+          // constant, which GCC otherwise reloads from the literal pool on every pixel.
+          const uint16_t* table = rgb565_table<F>.v;
+          __asm__("" : "+r"(table));
           for (; p != end; p += bpp, v0 += d0, v1 += d1, v2 += d2)
-            store565_bytes(p, pack565_bytes_by_table<F>(v0 >> s, v1 >> s, v2 >> s));
+            store565_bytes(p, pack565_bytes_by_table_biased<F>(v0 >> s, v1 >> s, v2 >> s, table));
         }
         return;
       }

@@ -11,6 +11,7 @@
 #include "tristream/blob.h"
 #include "tristream/detail/arith.h"
 #include "tristream/detail/edge.h"
+#include "tristream/detail/unroll.h"
 #include "tristream/fixed_point.h"
 #include "tristream/tile.h"
 
@@ -28,6 +29,7 @@ struct Corner {
 inline void edge_setup(const TriangleView& tv, const Edge* e, int64_t area2, TriangleSetup* s) {
   s->xr = position_fx::from_raw(tv.x[0]).floor_to_int();
   s->yr = position_fx::from_raw(tv.y[0]).floor_to_int();
+  TS_UNROLL_FAST
   for (int k = 0; k < 3; ++k) {
     s->a[k] = int32_t(e[k].a);
     s->b[k] = int32_t(e[k].b);
@@ -64,6 +66,7 @@ bool rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
                         (int64_t(tv.y[1]) - tv.y[0]) * (int64_t(tv.x[2]) - tv.x[0]);
   if (area2 <= 0) return done;  // collapsed by down-scaling
   Edge edges[3];
+  TS_UNROLL_FAST
   for (int k = 0; k < 3; ++k) {
     const int n = (k + 1) % 3;
     edges[k] = make_edge(tv.x[k], tv.y[k], tv.x[n], tv.y[n], (tv.flags & (boundary_edge0 << k)) != 0);
@@ -74,6 +77,7 @@ bool rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
   Corner corners[3];
   int corner_count = 0;
   int32_t first = r0, last = r1;
+  TS_UNROLL_FAST
   for (int k = 0; k < 3; ++k) {
     if (!(tv.flags & (corner_explicit0 << k))) continue;
     const position_fx cx = position_fx::from_raw(tv.x[k]), cy = position_fx::from_raw(tv.y[k]);

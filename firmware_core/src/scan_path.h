@@ -16,6 +16,7 @@
 #endif
 #include "tristream/blob.h"
 #include "tristream/detail/edge.h"
+#include "tristream/detail/unroll.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {
@@ -94,6 +95,7 @@ inline void small_edges(const TriangleView& tv, int32_t area2, int32_t left, int
 #else
   e->left = left;
   e->y0 = y0;
+  TS_UNROLL
   for (int k = 0; k < 3; ++k) {
     const int n = k == 2 ? 0 : k + 1;
     const int32_t dx = tv.x[n] - tv.x[k], dy = tv.y[n] - tv.y[k];
@@ -107,6 +109,8 @@ inline void small_edges(const TriangleView& tv, int32_t area2, int32_t left, int
 }
 
 // The setup of a scan-path triangle for the shader (on its first covered row in the clip).
+// Without SSE2 e_ref (int64) is set only for a shader that reads it (ReadsScanERef64).
+template <bool WithERef64 = true>
 inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSetup* s) {
   const int32_t xr = position_fx::from_raw(tv.x[0]).floor_to_int();
   const int32_t yr = position_fx::from_raw(tv.y[0]).floor_to_int();
@@ -128,11 +132,12 @@ inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSet
 #else
   // E_k is A_k x + B_k y + C_k (per pixel: a = A 2^S, b = B 2^S): from the box's first pixel.
   const int32_t ox = xr - e.left, oy = yr - e.y0;
+  TS_UNROLL
   for (int k = 0; k < 3; ++k) {
     s->a[k] = e.a[k];
     s->b[k] = e.b[k];
     s->e_ref32[k] = e.first[k] + e.a[k] * ox + e.b[k] * oy;
-    s->e_ref[k] = s->e_ref32[k];
+    if (WithERef64) s->e_ref[k] = s->e_ref32[k];
   }
 #endif
 }
@@ -180,7 +185,7 @@ void scan_rows(const TriangleView& tv, const SmallEdges& e, int32_t left, uint32
     if (cs > ce) continue;
     if (!started) {
       TriangleSetup s;
-      small_setup(tv, e, &s);
+      small_setup<ReadsScanERef64<Shader>::value>(tv, e, &s);
       shader.begin(tv, s);
       started = true;
     }

@@ -3,6 +3,7 @@
 // RowMasks without SIMD: the covered columns of a scan-path box row, column by column. The SSE2
 // alternative is scan_row_masks_sse2.h; both give the same masks.
 #include <stdint.h>
+#include "tristream/detail/unroll.h"
 
 namespace tristream::core::detail {
 namespace {
@@ -12,6 +13,7 @@ class RowMasks {
  public:
   // box: the box's columns as a mask (bits 0 .. width - 1); no column beyond it is tested.
   RowMasks(const int32_t* row, const int32_t* a, const int32_t* b, uint32_t box) : end_(box + 1) {
+    TS_UNROLL
     for (int k = 0; k < 3; ++k) row_[k] = row[k], a_[k] = a[k], b_[k] = b[k];
   }
   // The uncovered columns before the covered ones are skipped, then the covered ones counted: the
@@ -26,6 +28,7 @@ class RowMasks {
     return bit - first;
   }
   __attribute__((always_inline)) void next_row() {
+    TS_UNROLL
     for (int k = 0; k < 3; ++k) row_[k] += b_[k];
   }
 

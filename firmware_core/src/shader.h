@@ -46,5 +46,17 @@ struct TriangleSetup {
   bool scan_path;  // a triangle of the scan path (small: see SmallEdges)
 };
 
+// Whether a shader's begin reads the int64 e_ref of scan-path triangles: yes unless the shader
+// declares `static constexpr bool scan_e_ref64 = false` (it reads e_ref32 there); without SSE2 the
+// scan path then does not widen and store them.
+template <typename Shader, typename = void>
+struct ReadsScanERef64 {
+  static constexpr bool value = true;
+};
+template <typename Shader>
+struct ReadsScanERef64<Shader, decltype(void(Shader::scan_e_ref64))> {
+  static constexpr bool value = Shader::scan_e_ref64;
+};
+
 }  // namespace
 }  // namespace tristream::core::detail

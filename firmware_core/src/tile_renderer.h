@@ -27,13 +27,16 @@ namespace {
 // is in this tile or left of it (nothing for the band's later tiles) and whose last row is in this
 // band (the band advance would drop it) leaves the active set now: the later tiles of the band then
 // skip it without the column test, and the band advance without reading its rows. The pixels are
-// the same (those tiles would have culled it, the advance dropped it).
+// the same (those tiles would have culled it, the advance dropped it). When the tile spans the
+// band's whole width (cull_columns false) every live triangle is drawn without the column test:
+// the test only skips triangles that rasterize would clip away, so the pixels and the triangles
+// found done are the same.
 template <typename Shader>
-void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, Shader& shader) {
+void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, bool cull_columns, Shader& shader) {
   const ColumnWindow columns(map, rect);
   set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span, uint32_t p) {
     uint32_t done = 0;
-    for (uint32_t hits = columns.meeting(*set.layer, t, live, span); hits; hits &= hits - 1) {
+    for (uint32_t hits = cull_columns ? columns.meeting(*set.layer, t, live, span) : live; hits; hits &= hits - 1) {
       const uint32_t i = uint32_t(__builtin_ctz(hits));
       TriangleView tv;
       load_triangle(*set.layer, t + i, map, &tv);
@@ -45,18 +48,18 @@ void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, Shader& sh
 
 template <int Channels, typename Writer>
 void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& list, const Mapping& map,
-               const Rect& rect, const Writer& writer, int step) {
+               const Rect& rect, bool cull_columns, const Writer& writer, int step) {
   const BlobLayer* layer = &blob.layers[layer_index];
   // Only the methods compiled in (plan_frame rejects the others before any tile is drawn).
   if (blob.method == Method::bilinear) {
     if constexpr (config::methods & 1) {
       BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
-      draw_layer(list, map, rect, s);
+      draw_layer(list, map, rect, cull_columns, s);
     }
   } else {
     if constexpr (config::methods & 2) {
       ZienkiewiczShader<Channels, Writer> s{{layer, blob.values_per_vertex, first_channel, {}, {}, 0, false}, writer, step};
-      draw_layer(list, map, rect, s);
+      draw_layer(list, map, rect, cull_columns, s);
     }
   }
 }
@@ -98,7 +101,7 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
 
 template <PixelFormat F>
 void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, ActiveSet* sets, const Rect& rect,
-                 uint8_t* base, int32_t stride, int16_t* scratch) {
+                 bool cull_columns, uint8_t* base, int32_t stride, int16_t* scratch) {
   const bool grey = blob.space == ColorSpace::grey;
   fill_background<F>(base, stride, rect, p, grey);
   constexpr int bpp = bytes_per_pixel(F);
@@ -108,22 +111,22 @@ void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, Ac
     if (F == PixelFormat::coverage8 && layered(blob)) {
       if constexpr (config::layered) {
         const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
-        for (int l = 0; l < blob.layer_count; ++l) draw_with<1>(blob, l, 0, sets[l], map, rect, w, bpp);
+        for (int l = 0; l < blob.layer_count; ++l) draw_with<1>(blob, l, 0, sets[l], map, rect, cull_columns, w, bpp);
       }
     } else if (grey) {
       if constexpr (spaces & 1) {
         const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
-        draw_with<1>(blob, 0, 0, sets[0], map, rect, w, bpp);
+        draw_with<1>(blob, 0, 0, sets[0], map, rect, cull_columns, w, bpp);
       }
     } else if (blob.space == ColorSpace::ycbcr) {
       if constexpr (spaces & 4) {
         const DirectWriter<F, 3, true> w{base, stride, rect, p.dither};
-        draw_with<3>(blob, 0, 0, sets[0], map, rect, w, bpp);
+        draw_with<3>(blob, 0, 0, sets[0], map, rect, cull_columns, w, bpp);
       }
     } else {
       if constexpr (spaces & 2) {
         const DirectWriter<F, 3, false> w{base, stride, rect, p.dither};
-        draw_with<3>(blob, 0, 0, sets[0], map, rect, w, bpp);
+        draw_with<3>(blob, 0, 0, sets[0], map, rect, cull_columns, w, bpp);
       }
     }
     return;
@@ -133,14 +136,15 @@ void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, Ac
     for (int32_t i = 0; i < n; ++i) scratch[i] = scratch_empty;
     for (int l = 0; l < blob.layer_count; ++l) {
       const ScratchWriter w{scratch, rect.width(), rect, l};
-      draw_with<1>(blob, l, 0, sets[l], map, rect, w, 3);
+      draw_with<1>(blob, l, 0, sets[l], map, rect, cull_columns, w, 3);
     }
     convert_scratch<F>(scratch, base, stride, rect, p, blob.space == ColorSpace::ycbcr);
   }
 }
 
-using TileRenderer = void (*)(const Blob&, const RenderParams&, const Mapping&, ActiveSet*, const Rect&, uint8_t*,
-                              int32_t, int16_t*);
+// The tile function: cull_columns false when the tile spans its band's whole width.
+using TileRenderer = void (*)(const Blob&, const RenderParams&, const Mapping&, ActiveSet*, const Rect&, bool,
+                              uint8_t*, int32_t, int16_t*);
 
 template <PixelFormat F>
 constexpr TileRenderer compiled_renderer() {

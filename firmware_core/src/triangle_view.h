@@ -9,6 +9,7 @@
 #include "tristream/blob.h"
 #include "tristream/detail/arith.h"
 #include "tristream/detail/bytes.h"
+#include "tristream/detail/unroll.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {
@@ -23,6 +24,7 @@ struct TriangleView {
 
 inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map, TriangleView* tv) {
   const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
+  TS_UNROLL
   for (int k = 0; k < 3; ++k) {
     tv->v[k] = load_u16(p + 2 * k);
     const uint8_t* pos = layer.positions + 4 * size_t(tv->v[k]);

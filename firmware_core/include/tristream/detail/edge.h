@@ -33,7 +33,9 @@ struct Edge {
 // The tie rule, for an edge P -> Q with dx = Qx - Px, dy = Qy - Py: inclusive when on the domain
 // boundary, or A < 0, or A == 0 and B < 0 (A = -dy 2^S, B = dx 2^S), i.e. dy > 0, or dy == 0 and
 // dx < 0. Every path of the rasterizer takes its biases from here (or from the lane form below).
-constexpr bool inclusive_edge(int64_t dx, int64_t dy, bool boundary) {
+// In the width of the caller's differences (int32 on the scan path: no 64-bit compares).
+template <typename Int>
+constexpr bool inclusive_edge(Int dx, Int dy, bool boundary) {
   return boundary | (dy > 0) | ((dy == 0) & (dx < 0));
 }
 

@@ -121,36 +121,41 @@ constexpr uint16_t rgb565_bytes(uint32_t w) {
   return F == PixelFormat::rgb565_be ? uint16_t((w >> 8 | w << 8) & 0xFFFFu) : uint16_t(w);
 }
 
-// The R and G fields of every 8-bit value without dithering, reduce(v, 31, 127) << 11 and
-// reduce(v, 63, 127) << 5, already in the format's byte order (rgb565_bytes): a pixel is three
-// halfword loads and two ORs, with no shift, mask or byte swap. B is R's field moved: in LE order
-// the R field shifted right by 11, in BE order shifted left by 5 (R at bit 3, B at bit 8), so one
-// table serves both (1 KB of constant data per format; the same values by construction, and
-// test_formats checks every one).
-// Two arrays rather than one struct: each gets its own base register, so the G lookup needs no
-// offset added per pixel.
+// The R and G fields of every 8-bit value without dithering, reduce(v, 31, 127) << 11 at v and
+// reduce(v, 63, 127) << 5 at 256 + v, already in the format's byte order (rgb565_bytes): a pixel is
+// three halfword loads and two ORs, with no shift, mask or byte swap. B is R's field moved: in LE
+// order the R field shifted right by 11, in BE order shifted left by 5 (R at bit 3, B at bit 8), so
+// one table serves both (1 KB of constant data per format; the same values by construction, and
+// test_formats checks every one). One table, one base register: a row loop that keeps its G value
+// biased by 256 (pack565_bytes_by_table_biased) reads all three fields without an offset per pixel.
 struct Rgb565Table {
-  uint16_t v[256];
+  uint16_t v[512];
 };
 template <PixelFormat F>
-constexpr Rgb565Table make_rgb565_table(uint32_t max, int shift) {
+constexpr Rgb565Table make_rgb565_table() {
   Rgb565Table t{};
-  for (uint32_t v = 0; v < 256; ++v) t.v[v] = rgb565_bytes<F>(reduce(v, max, 127) << shift);
+  for (uint32_t v = 0; v < 256; ++v) {
+    t.v[v] = rgb565_bytes<F>(reduce(v, 31, 127) << 11);
+    t.v[256 + v] = rgb565_bytes<F>(reduce(v, 63, 127) << 5);
+  }
   return t;
 }
 template <PixelFormat F>
-inline constexpr Rgb565Table rgb565_r_table = make_rgb565_table<F>(31, 11);
-template <PixelFormat F>
-inline constexpr Rgb565Table rgb565_g_table = make_rgb565_table<F>(63, 5);
+inline constexpr Rgb565Table rgb565_table = make_rgb565_table<F>();
 
-// pack565_nearest by the tables, in the format's byte order (rgb565_bytes), for values already
-// known to be in [0, 255].
+// pack565_nearest by the table, in the format's byte order (rgb565_bytes), for r and b in [0, 255]
+// and g256 = g + 256 (g in [0, 255]).
+template <PixelFormat F>
+__attribute__((always_inline)) inline uint16_t pack565_bytes_by_table_biased(uint32_t r, uint32_t g256, uint32_t b,
+                                                                            const uint16_t* t = rgb565_table<F>.v) {
+  const uint32_t blue = F == PixelFormat::rgb565_be ? uint32_t(t[b]) << 5 : uint32_t(t[b]) >> 11;
+  return uint16_t(t[r] | t[g256] | blue);
+}
+
+// The same for values r, g, b in [0, 255].
 template <PixelFormat F>
 __attribute__((always_inline)) inline uint16_t pack565_bytes_by_table(uint32_t r, uint32_t g, uint32_t b) {
-  const uint16_t* const rt = rgb565_r_table<F>.v;
-  const uint16_t* const gt = rgb565_g_table<F>.v;
-  const uint32_t blue = F == PixelFormat::rgb565_be ? uint32_t(rt[b]) << 5 : uint32_t(rt[b]) >> 11;
-  return uint16_t(rt[r] | gt[g] | blue);
+  return pack565_bytes_by_table_biased<F>(r, g + 256, b);
 }
 
 // Stores a halfword made by rgb565_bytes or pack565_bytes_by_table: its two bytes in the
