@@ -86,13 +86,17 @@ struct BilinearShader {
   // steps per column and per row in the writer's lanes.
   static constexpr bool in_lanes = Channels == 3 && Writer::takes_rounded;
   __m128i lane_ref{}, lane_dx{}, lane_dy{};
+#else
+  static constexpr bool in_lanes = false;
 #endif
+  // A writer that takes rounded values, without lanes: span's scalar path (begin moves v_ref).
+  static constexpr bool rounded_scalar = Writer::takes_rounded && !in_lanes;
 
   void begin(const TriangleView& tv, const TriangleSetup& s) {
     xr = s.xr;
     yr = s.yr;
     int32_t vals[3][Channels];
-    TS_UNROLL_FAST
+    TS_UNROLL
     for (int k = 0; k < 3; ++k) vertex_values(*layer, per_vertex, first_channel, Channels, tv.v[k], vals[k]);
     auto setup = [&](const auto& by_area2, const auto* e_ref) {
       TS_UNROLL_FAST
@@ -125,6 +129,14 @@ struct BilinearShader {
       lane_dy = Writer::lanes(ch[0].dvdy, ch[1].dvdy, ch[2].dvdy, false);
     }
 #endif
+    if constexpr (rounded_scalar) {
+      // v_ref becomes the value at pixel (0, 0) with the rounding offset (modulo 2^32, as every
+      // use): a row's first value is then v_ref + dvdx x + dvdy y, without xr and yr.
+      constexpr uint32_t half = 1u << (q16_16::frac_bits - 1);
+      TS_UNROLL_FAST
+      for (int c = 0; c < Channels; ++c)
+        ch[c].v_ref = ch[c].v_ref + half - ch[c].dvdx * uint32_t(xr) - ch[c].dvdy * uint32_t(yr);
+    }
   }
   TS_SPAN_INLINE void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {
 #if TS_USE_SSE2
@@ -145,12 +157,12 @@ struct BilinearShader {
       // |y - yr|) / 2 < 2^12 units of it (docs/FIXED_POINT.md, max_dimension <= 4096): v + 2^15
       // stays in [0, 2^24), so (v + 2^15) >> 16 is in [0, 255].
       static_assert(config::max_dimension <= 4096, "the stepped values' error bound needs boxes below 4096 pixels");
-      constexpr uint32_t half = 1u << (q16_16::frac_bits - 1);
-      const uint32_t dx = uint32_t(x0 - xr), dy = uint32_t(y - yr);
+      // v_ref is at pixel (0, 0), the offset included (begin).
+      const uint32_t dx = uint32_t(x0), dy = uint32_t(y);
       const BilinearChannel &c0 = ch[0], &c1 = ch[Channels > 1 ? 1 : 0], &c2 = ch[Channels - 1];
-      const uint32_t v0 = c0.at_offset(dx, dy) + half, d0 = c0.step();
-      const uint32_t v1 = Channels == 3 ? c1.at_offset(dx, dy) + half : 0, d1 = Channels == 3 ? c1.step() : 0;
-      const uint32_t v2 = Channels == 3 ? c2.at_offset(dx, dy) + half : 0, d2 = Channels == 3 ? c2.step() : 0;
+      const uint32_t v0 = c0.at_offset(dx, dy), d0 = c0.step();
+      const uint32_t v1 = Channels == 3 ? c1.at_offset(dx, dy) : 0, d1 = Channels == 3 ? c1.step() : 0;
+      const uint32_t v2 = Channels == 3 ? c2.at_offset(dx, dy) : 0, d2 = Channels == 3 ? c2.step() : 0;
       writer.put_span_in_range(p, x0, x1, y, v0, v1, v2, d0, d1, d2);
       return;
     }
