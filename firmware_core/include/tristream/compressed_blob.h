@@ -137,7 +137,7 @@ struct DecodedTriangle {
   uint16_t flags;
   uint16_t x[3], y[3];
   uint16_t values[3][3];       // [corner][value], q8_8
-  int32_t gradients[3][3][2];  // [corner][value][gx, gy], zienkiewicz only
+  int32_t gradients[3][3][2];  // [corner][value][gx, gy], zienkiewicz only (not written otherwise)
 };
 
 // Receives each vertex once, when its values are decoded (not in index order; optional).
@@ -173,7 +173,7 @@ class LayerDecoder {
     int32_t lo, hi;  // 1/16 pixel
   };
   static Columns columns(const uint8_t* ra, const uint8_t* rs);
-  uint32_t predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side) const;
+  uint32_t predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side, uint8_t** record_out) const;
   uint64_t fresh(uint32_t a, uint32_t count, Columns cols);
   void add_edge(uint8_t* from, uint32_t to, bool positive);
   uint8_t* record(uint32_t index) const;
