@@ -149,13 +149,22 @@ struct BandStore {
   uint8_t* gradients() const { return values() + align4_size(2 * size_t(slots) * values_per_vertex); }
   uint8_t* triangles() const { return reinterpret_cast<uint8_t*>(keys) + align4_size(2 * size_t(slots)); }
 
+  // Little-endian (the v1 layout); on a little-endian target one store each.
   static void store16(uint8_t* p, uint16_t v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    memcpy(p, &v, 2);
+#else
     p[0] = uint8_t(v);
     p[1] = uint8_t(v >> 8);
+#endif
   }
   static void store32(uint8_t* p, uint32_t v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    memcpy(p, &v, 4);
+#else
     store16(p, uint16_t(v));
     store16(p + 2, uint16_t(v >> 16));
+#endif
   }
   static uint16_t load16(const uint8_t* p) { return uint16_t(p[0] | (p[1] << 8)); }
 

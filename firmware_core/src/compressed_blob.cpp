@@ -3,6 +3,8 @@
 // (docs/COMPRESSED_BLOB.md is the format; this file is its only reader).
 #include "tristream/compressed_blob.h"
 
+#include <string.h>
+
 #include "blob_header.h"
 #include "range_decoder.h"
 #include "tristream/detail/bytes.h"
@@ -14,13 +16,24 @@ using detail::load_u32;
 
 namespace {
 
+// Little-endian stores; on a little-endian target one (unaligned-safe) store each, which
+// compilers do not always make of the byte stores.
 void store_u16(uint8_t* p, uint32_t v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  const uint16_t x = uint16_t(v);
+  memcpy(p, &x, 2);
+#else
   p[0] = uint8_t(v & 0xFFu);
   p[1] = uint8_t((v >> 8) & 0xFFu);
+#endif
 }
 void store_u32(uint8_t* p, uint32_t v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  memcpy(p, &v, 4);
+#else
   store_u16(p, v & 0xFFFFu);
   store_u16(p + 2, v >> 16);
+#endif
 }
 
 constexpr uint32_t align4(uint32_t n) { return (n + 3u) & ~3u; }
@@ -294,7 +307,7 @@ Status LayerDecoder::decode_position() {
   sides_byte(rec, blob.values_per_vertex) = 0;
   store_u32(rec + edges_at(blob.values_per_vertex), 0);  // no skips yet (fresh)
   pixel_ = uint32_t(pixel);
-  enter_row(py);
+  if (py != row_ || decoded_ == 0) enter_row(py);  // (its test inlined: most vertices stay in the row)
   ++decoded_;
   slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
   return Status::ok;
@@ -303,10 +316,17 @@ Status LayerDecoder::decode_position() {
 // Values (and gradients) of the vertex at `rec`, predicted from the records `p0` and `p1` (the
 // triangle's corners whose values are known; either may be null) or else from the last vertex
 // whose values were decoded.
+// Values per vertex are 1 or 3 (open_compressed_blob): one copy for each, its loops unrolled.
 Status LayerDecoder::decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1) {
+  return blob_->values_per_vertex == 1 ? decode_values_of<1>(rec, index, p0, p1)
+                                       : decode_values_of<3>(rec, index, p0, p1);
+}
+
+template <int PerVertex>
+Status LayerDecoder::decode_values_of(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1) {
   using namespace detail;
   const CompressedBlob& blob = *blob_;
-  const int nv = blob.values_per_vertex;
+  constexpr int nv = PerVertex;
   if (!p0) p0 = p1, p1 = nullptr;
   int32_t predicted[3];
   for (int c = 0; c < 3; ++c) {

@@ -169,6 +169,8 @@ class LayerDecoder {
   uint8_t* pinned_record(uint32_t index) const;
   void find_next_pinned();
   Status decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
+  template <int PerVertex>
+  Status decode_values_of(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
   struct Columns {
     int32_t lo, hi;  // 1/16 pixel
   };
