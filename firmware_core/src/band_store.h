@@ -52,6 +52,11 @@ inline void raw_row_extent(const Mapping& map, int32_t y0, int32_t y1, int32_t y
   *bottom = position_fx::from_raw(map.y(max3(y0, y1, y2))).floor_to_int();
 }
 
+// The last of them alone (a triangle's end, all that dropping it needs).
+inline int32_t raw_row_bottom(const Mapping& map, int32_t y0, int32_t y1, int32_t y2) {
+  return position_fx::from_raw(map.y(max3(y0, y1, y2))).floor_to_int();
+}
+
 inline void decoded_row_extent(const Mapping& map, const DecodedTriangle& t, int32_t* top, int32_t* bottom) {
   raw_row_extent(map, t.y[0], t.y[1], t.y[2], top, bottom);
 }
@@ -144,15 +149,36 @@ struct BandStore {
   uint8_t* gradients() const { return values() + align4_size(2 * size_t(slots) * values_per_vertex); }
   uint8_t* triangles() const { return reinterpret_cast<uint8_t*>(keys) + align4_size(2 * size_t(slots)); }
 
+  // Little-endian (the v1 layout); on a little-endian target one store each.
   static void store16(uint8_t* p, uint16_t v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    memcpy(p, &v, 2);
+#else
     p[0] = uint8_t(v);
     p[1] = uint8_t(v >> 8);
+#endif
   }
   static void store32(uint8_t* p, uint32_t v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    memcpy(p, &v, 4);
+#else
     store16(p, uint16_t(v));
     store16(p + 2, uint16_t(v >> 16));
+#endif
   }
   static uint16_t load16(const uint8_t* p) { return uint16_t(p[0] | (p[1] << 8)); }
+
+  // memmove of align4(n) bytes between 4-aligned sections, a word at a time (the C library's
+  // memmove on a microcontroller is often a byte loop); the rounding stays inside both sections,
+  // which are 4-aligned and at least align4(n) bytes.
+  static void move_words(uint8_t* to, const uint8_t* from, size_t n) {
+    const size_t words = (n + 3) / 4;
+    if (to < from) {
+      for (size_t i = 0; i < words; ++i) memcpy(to + 4 * i, from + 4 * i, 4);
+    } else if (to > from) {
+      for (size_t i = words; i-- > 0;) memcpy(to + 4 * i, from + 4 * i, 4);
+    }
+  }
 
   // Whether `cap` slots, n triangles and `tail` bytes after them fit.
   bool fits(uint32_t cap, uint32_t n, size_t tail) const {
@@ -196,16 +222,17 @@ struct BandStore {
     uint8_t* const to_gradients = gradients();
     uint8_t* const to_triangles = triangles();
     // The sections after the positions all move the same way: the last first when they move up.
+    uint8_t* const to_keys = reinterpret_cast<uint8_t*>(keys);
     if (to_triangles > old_triangles) {
-      memmove(to_triangles, old_triangles, size_t(blob_triangle_size) * nt);
-      memmove(keys, old_keys, 2 * nv);
-      if (gradient_bytes) memmove(to_gradients, old_gradients, gradient_bytes);
-      memmove(to_values, old_values, value_bytes);
+      move_words(to_triangles, old_triangles, size_t(blob_triangle_size) * nt);
+      move_words(to_keys, old_keys, 2 * nv);
+      if (gradient_bytes) move_words(to_gradients, old_gradients, gradient_bytes);
+      move_words(to_values, old_values, value_bytes);
     } else if (to_triangles < old_triangles) {
-      memmove(to_values, old_values, value_bytes);
-      if (gradient_bytes) memmove(to_gradients, old_gradients, gradient_bytes);
-      memmove(keys, old_keys, 2 * nv);
-      memmove(to_triangles, old_triangles, size_t(blob_triangle_size) * nt);
+      move_words(to_values, old_values, value_bytes);
+      if (gradient_bytes) move_words(to_gradients, old_gradients, gradient_bytes);
+      move_words(to_keys, old_keys, 2 * nv);
+      move_words(to_triangles, old_triangles, size_t(blob_triangle_size) * nt);
     }
     rebuild_map();
   }
@@ -278,9 +305,9 @@ struct BandStore {
     uint32_t kept = 0;
     for (uint32_t i = 0; i < n; ++i) {
       const uint8_t* p = tri + size_t(blob_triangle_size) * i;
-      int32_t top, bottom;
-      raw_row_extent(map, load16(pos + 4 * size_t(load16(p)) + 2), load16(pos + 4 * size_t(load16(p + 2)) + 2),
-                     load16(pos + 4 * size_t(load16(p + 4)) + 2), &top, &bottom);
+      const int32_t bottom = raw_row_bottom(map, load16(pos + 4 * size_t(load16(p)) + 2),
+                                            load16(pos + 4 * size_t(load16(p + 2)) + 2),
+                                            load16(pos + 4 * size_t(load16(p + 4)) + 2));
       if (bottom < y0) continue;
       if (kept != i) memcpy(tri + size_t(blob_triangle_size) * kept, p, blob_triangle_size);
       ++kept;

@@ -3,6 +3,8 @@
 // (docs/COMPRESSED_BLOB.md is the format; this file is its only reader).
 #include "tristream/compressed_blob.h"
 
+#include <string.h>
+
 #include "blob_header.h"
 #include "range_decoder.h"
 #include "tristream/detail/bytes.h"
@@ -14,13 +16,24 @@ using detail::load_u32;
 
 namespace {
 
+// Little-endian stores; on a little-endian target one (unaligned-safe) store each, which
+// compilers do not always make of the byte stores.
 void store_u16(uint8_t* p, uint32_t v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  const uint16_t x = uint16_t(v);
+  memcpy(p, &x, 2);
+#else
   p[0] = uint8_t(v & 0xFFu);
   p[1] = uint8_t((v >> 8) & 0xFFu);
+#endif
 }
 void store_u32(uint8_t* p, uint32_t v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  memcpy(p, &v, 4);
+#else
   store_u16(p, v & 0xFFFFu);
   store_u16(p + 2, v >> 16);
+#endif
 }
 
 constexpr uint32_t align4(uint32_t n) { return (n + 3u) & ~3u; }
@@ -294,7 +307,7 @@ Status LayerDecoder::decode_position() {
   sides_byte(rec, blob.values_per_vertex) = 0;
   store_u32(rec + edges_at(blob.values_per_vertex), 0);  // no skips yet (fresh)
   pixel_ = uint32_t(pixel);
-  enter_row(py);
+  if (py != row_ || decoded_ == 0) enter_row(py);  // (its test inlined: most vertices stay in the row)
   ++decoded_;
   slot_ = slot_ + 1 == layer_->window ? 0 : slot_ + 1;
   return Status::ok;
@@ -303,10 +316,17 @@ Status LayerDecoder::decode_position() {
 // Values (and gradients) of the vertex at `rec`, predicted from the records `p0` and `p1` (the
 // triangle's corners whose values are known; either may be null) or else from the last vertex
 // whose values were decoded.
+// Values per vertex are 1 or 3 (open_compressed_blob): one copy for each, its loops unrolled.
 Status LayerDecoder::decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1) {
+  return blob_->values_per_vertex == 1 ? decode_values_of<1>(rec, index, p0, p1)
+                                       : decode_values_of<3>(rec, index, p0, p1);
+}
+
+template <int PerVertex>
+Status LayerDecoder::decode_values_of(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1) {
   using namespace detail;
   const CompressedBlob& blob = *blob_;
-  const int nv = blob.values_per_vertex;
+  constexpr int nv = PerVertex;
   if (!p0) p0 = p1, p1 = nullptr;
   int32_t predicted[3];
   for (int c = 0; c < 3; ++c) {
@@ -321,19 +341,22 @@ Status LayerDecoder::decode_values(uint8_t* rec, uint32_t index, const uint8_t* 
   const bool rgb = blob.space == ColorSpace::rgb && nv == 3;
   int32_t high[3] = {0, 0, 0};
   int32_t shared = 0;
+  // The coder's range and code in registers for the vertex (written back at the end; a failed
+  // decoder is not read again).
+  LocalCoder coder(rc_);
   for (int k = 0; k < nv; ++k) {
     const int c = rgb ? (k == 0 ? 1 : (k == 1 ? 0 : 2)) : k;
-    int64_t r;
-    if (!decode_int(rc_, m_.value[k], value_bits, &r)) return fail(Status::value_out_of_range);
-    const int64_t h = int64_t(predicted[c]) + r + (rgb && k > 0 ? shared : 0);
+    int32_t r;
+    if (!decode_int32(coder, m_.value[k], value_bits, &r)) return fail(Status::value_out_of_range);
+    const int32_t h = predicted[c] + r + (rgb && k > 0 ? shared : 0);
     if (h < 0 || h > 255) return fail(Status::value_out_of_range);
-    if (rgb && k == 0) shared = int32_t(r);
-    high[c] = int32_t(h);
+    if (rgb && k == 0) shared = r;
+    high[c] = h;
   }
   uint16_t values[3] = {0, 0, 0};
-  const bool fraction = decode_bit(rc_, m_.fraction);
+  const bool fraction = coder.bit(m_.fraction);
   for (int c = 0; c < nv; ++c) {
-    const uint32_t low = fraction ? decode_direct(rc_, 8) : 0;
+    const uint32_t low = fraction ? coder.direct(8) : 0;
     const uint32_t v = (uint32_t(high[c]) << 8) | low;
     if (v > 255u * 256u) return fail(Status::value_out_of_range);
     values[c] = uint16_t(v);
@@ -344,12 +367,13 @@ Status LayerDecoder::decode_values(uint8_t* rec, uint32_t index, const uint8_t* 
     for (int c = 0; c < nv; ++c)
       for (int a = 0; a < 2; ++a) {
         int64_t r;
-        if (!decode_int(rc_, m_.gradient[a], gradient_bits, &r)) return fail(Status::value_out_of_range);
+        if (!decode_int(coder, m_.gradient[a], gradient_bits, &r)) return fail(Status::value_out_of_range);
         const int32_t g = int32_t(uint32_t(gradient_prediction(p0, p1, nv, c, a, last_gradients_[c][a])) + uint32_t(r));
         if (g > limit || g < -limit) return fail(Status::value_out_of_range);
         gradients[c][a] = g;
       }
   }
+  coder.done();
   if (rc_.overrun) return fail(Status::truncated);
   for (int c = 0; c < nv; ++c) store_u16(rec + 4 + 2 * c, values[c]);
   if (blob.method == Method::zienkiewicz) {
@@ -427,24 +451,27 @@ LayerDecoder::Columns LayerDecoder::columns(const uint8_t* ra, const uint8_t* rs
 // the other ends of the open edges of a and of s (vertices some triangle used), the one above a with the largest angle over a->s
 // (the smallest dot / cross of (a - q, s - q)), compared exactly in 64 bits on pixel coordinates
 // (differences below 2^12, so dot and cross below 2^25); ties keep the first. 0xFFFFFFFF when a or
-// s has no record or no candidate is on that side.
-uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side) const {
+// s has no record or no candidate is on that side; its record in *record_out (null when none).
+uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side, uint8_t** record_out) const {
   const int nv = blob_->values_per_vertex;
   const int S = config::subpixel_bits;
+  *record_out = nullptr;
   if (!ra || !rs) return 0xFFFFFFFFu;
   const int32_t ax = load_u16(ra) >> S, ay = load_u16(ra + 2) >> S;
   const int32_t sx = load_u16(rs) >> S, sy = load_u16(rs + 2) >> S;
   uint32_t best = 0xFFFFFFFFu;
-  int64_t best_dot = 0, best_cross = 0;
+  uint8_t* best_record = nullptr;
+  int32_t best_dot = 0, best_cross = 0;  // below 2^25: their products fit 64 bits (one SMULL each)
   // A fresh vertex (no triangle used it) is not tried: that would mean walking the ring.
-  auto consider = [&](uint32_t q, const uint8_t* rq) {
+  auto consider = [&](uint32_t q, uint8_t* rq) {
     const int32_t qx = load_u16(rq) >> S, qy = load_u16(rq + 2) >> S;
     const int32_t x1 = ax - qx, y1 = ay - qy, x2 = sx - qx, y2 = sy - qy;
     const int32_t cross = (x1 * y2 - y1 * x2) * side;
     if (cross <= 0) return;
     const int32_t dot = x1 * x2 + y1 * y2;
-    if (best == 0xFFFFFFFFu || int64_t(dot) * best_cross < best_dot * cross) {
+    if (best == 0xFFFFFFFFu || int64_t(dot) * best_cross < int64_t(best_dot) * cross) {
       best = q;
+      best_record = rq;
       best_dot = dot;
       best_cross = cross;
     }
@@ -456,10 +483,11 @@ uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs,
       if (!((sides >> (2 * j)) & 3u)) continue;
       const uint32_t q = load_u16(e + edges_at(uint32_t(nv)) + 2 * j);
       if (q <= a || q == s || q == best) continue;
-      const uint8_t* rq = record(q);
+      uint8_t* rq = record(q);
       if (rq) consider(q, rq);
     }
   }
+  *record_out = best_record;
   return best;
 }
 
@@ -527,7 +555,7 @@ uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
 // Records the edge from->to (from < to) of a decoded triangle whose third corner is on its
 // positive side or not: a side already known closes the edge (both triangles decoded), else it
 // becomes the most recent open edge of `from`, the oldest of two dropped.
-void LayerDecoder::add_edge(uint8_t* rec, uint32_t to, bool positive) {
+__attribute__((always_inline)) inline void LayerDecoder::add_edge(uint8_t* rec, uint32_t to, bool positive) {
   const int nv = blob_->values_per_vertex;
   uint8_t* ends = rec + edges_at(uint32_t(nv));
   const uint32_t bit = positive ? 1u : 2u;
@@ -592,7 +620,8 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   // else a gap.
   uint8_t* const rs = record(uint32_t(anchor));
   const Columns cols = columns(ra, rs);
-  const uint32_t guess = predict(uint32_t(a), uint32_t(anchor), ra, rs, side);
+  uint8_t* guess_record;
+  const uint32_t guess = predict(uint32_t(a), uint32_t(anchor), ra, rs, side, &guess_record);
   uint64_t third;
   bool hit = false;
   if (guess != 0xFFFFFFFFu && decode_bit(rc_, m_.predicted[kind])) {
@@ -611,15 +640,26 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   const uint32_t b = uint32_t(anchor < third ? anchor : third), c = uint32_t(anchor < third ? third : anchor);
   if (rc_.overrun) return fail(Status::truncated);
   const uint32_t index[3] = {uint32_t(a), uint32_t(b), uint32_t(c)};
+  const uint32_t before = decoded_;
   for (int k = 0; k < 3; ++k)
     if (index[k] >= decoded_ && !pinned_record(index[k])) {
       const Status st = place(index[k]);
       if (st != Status::ok) return st;
     }
-  // Every corner must be in the ring (the window the header promised) or pinned.
+  // Every corner must be in the ring (the window the header promised) or pinned. When every corner
+  // was in the ring already, the records found above still hold (the ring did not move): a's,
+  // the anchor's and a predicted third corner's.
   uint8_t* rec[3];
-  for (int k = 0; k < 3; ++k)
-    if (!(rec[k] = record(index[k]))) return fail(Status::bad_index);
+  if (decoded_ == before && c < before && ra && rs) {
+    uint8_t* const rt = hit ? guess_record : record(uint32_t(third));
+    if (!rt) return fail(Status::bad_index);
+    rec[0] = ra;
+    rec[1] = b == anchor ? rs : rt;
+    rec[2] = b == anchor ? rt : rs;
+  } else {
+    for (int k = 0; k < 3; ++k)
+      if (!(rec[k] = record(index[k]))) return fail(Status::bad_index);
+  }
   const int64_t xa = load_u16(rec[0]), ya = load_u16(rec[0] + 2);
   const int64_t area = (int64_t(load_u16(rec[1])) - xa) * (int64_t(load_u16(rec[2] + 2)) - ya) -
                        (int64_t(load_u16(rec[1] + 2)) - ya) * (int64_t(load_u16(rec[2])) - xa);
@@ -661,14 +701,15 @@ Status LayerDecoder::next(DecodedTriangle* out) {
       out->values[k][1] = load_u16(p + 6);
       out->values[k][2] = load_u16(p + 8);
     }
-    int32_t* g = &out->gradients[k][0][0];
-    for (int i = 0; i < 6; ++i) g[i] = 0;
-    if (z)
+    if (z) {
+      int32_t* g = &out->gradients[k][0][0];
+      for (int i = 0; i < 6; ++i) g[i] = 0;
       for (int ch = 0; ch < nv; ++ch) {
         const uint8_t* q = p + gradients_at(uint32_t(nv)) + 8 * ch;
         g[2 * ch] = int32_t(load_u32(q));
         g[2 * ch + 1] = int32_t(load_u32(q + 4));
       }
+    }
   }
   out->flags = flags;
   if (top < previous_row_) return fail(Status::unsorted);

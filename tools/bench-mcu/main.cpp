@@ -154,13 +154,6 @@ Outcome run_on(M4Emulator& emu, const ElfImage& elf, const std::vector<std::uint
                   std::to_string(o.result.arena_bytes) + " bytes of RAM left";
       return o;
     }
-    if (o.result.status == int(core::Status::too_large)) {
-      // A compressed blob whose band holds more live triangles than the band store can index
-      // (band_store_max_triangles, e.g. the 40,000-triangle mesh as one band): not renderable from
-      // its streams in that tiling, as the core documents.
-      o.skipped = "too_large: a band's live triangles exceed the band store's limit";
-      return o;
-    }
     throw std::runtime_error("M4: prepare failed: " + std::string(core::status_text(core::Status(o.result.status))));
   }
   emu.fill(limit, stack_paint, (top - limit) / 4);

@@ -137,7 +137,7 @@ struct DecodedTriangle {
   uint16_t flags;
   uint16_t x[3], y[3];
   uint16_t values[3][3];       // [corner][value], q8_8
-  int32_t gradients[3][3][2];  // [corner][value][gx, gy], zienkiewicz only
+  int32_t gradients[3][3][2];  // [corner][value][gx, gy], zienkiewicz only (not written otherwise)
 };
 
 // Receives each vertex once, when its values are decoded (not in index order; optional).
@@ -169,11 +169,13 @@ class LayerDecoder {
   uint8_t* pinned_record(uint32_t index) const;
   void find_next_pinned();
   Status decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
+  template <int PerVertex>
+  Status decode_values_of(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
   struct Columns {
     int32_t lo, hi;  // 1/16 pixel
   };
   static Columns columns(const uint8_t* ra, const uint8_t* rs);
-  uint32_t predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side) const;
+  uint32_t predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side, uint8_t** record_out) const;
   uint64_t fresh(uint32_t a, uint32_t count, Columns cols);
   void add_edge(uint8_t* from, uint32_t to, bool positive);
   uint8_t* record(uint32_t index) const;
