@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "pixel_writers.h"
 #include "shader.h"
 #include "triangle_view.h"
 #include "tristream/config.h"
@@ -34,6 +35,33 @@ struct VertexGradients {
     return load_i32(vertex[j >> 1] + offset + 4 * (j & 1));
   }
 };
+
+// RGB565 written by DirectWriter from three channels (rounded): the forward-differenced rows then go
+// channel by channel into the pixels (ZienkiewiczShader::rgb565_channel), with no staging.
+template <typename W>
+struct DirectRgb565 {
+  static constexpr bool value = false;
+};
+template <PixelFormat F>
+struct DirectRgb565<DirectWriter<F, 3, false>> {
+  static constexpr bool value = F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be;
+  static constexpr PixelFormat format = F;
+};
+template <int N>
+struct IntConstant {
+  static constexpr int value = N;
+};
+
+// The halfword that store565_bytes stored at p (its two bytes in little-endian order of their bits).
+__attribute__((always_inline)) inline uint16_t load565_bytes(const uint8_t* p) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  uint16_t h;
+  memcpy(&h, p, 2);  // one halfword load
+  return h;
+#else
+  return uint16_t(p[0] | p[1] << 8);
+#endif
+}
 
 // The writer-independent part of ZienkiewiczShader: a triangle's stepper and coefficients, and
 // their set-up (begin), so that the writers of one channel count share one copy of begin in the
@@ -85,7 +113,13 @@ struct ZienkiewiczTriangle {
 
 template <int Channels, typename Writer>
 struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
+#if TS_USE_SSE2
   Writer writer;
+#else
+  // The caller's writer (draw_with's argument, alive for the shader's life): not copied into the
+  // frame that holds the shader, the deepest of the render on Cortex-M4 (-24 bytes of stack).
+  const Writer& writer;
+#endif
   int bpp;
   using ZienkiewiczTriangle<Channels>::ch;
   using ZienkiewiczTriangle<Channels>::steps;
@@ -100,17 +134,37 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       if (!ch[c].setup_rows(int32_t(steps.dadx), int32_t(steps.dbdx))) fd_state = -1;
     return fd_state > 0;
   }
-  bool rows_ready() { return fd_state == 0 ? rows_ready_slow() : fd_state > 0; }
+  // The first row of at least zienkiewicz_fd_min_length pixels: forward differencing set up
+  // (rows_ready_slow), then the row drawn by span again (by forward differencing or, out of the
+  // budget, per pixel), a tail call. Out of span: the set-up's frames are not below span's
+  // (-64 bytes of the Cortex-M4 stack below span).
+  __attribute__((noinline)) void first_long_row(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
+    rows_ready_slow();
+    span(y, xs, xe, x0, x1);
+  }
   // Row y of the triangle covers [xs, xe]; pixels x0..x1 of it are in the tile. Rows of at least
   // zienkiewicz_fd_min_length pixels (of large enough triangles) are forward-differenced, others
   // evaluated per pixel: the choice depends on the whole row, not on the tile. Out of line (both
   // loops): their code generation then does not depend on the rest of the tile function (inlined,
   // changes elsewhere in it swung its speed by 20%).
   __attribute__((noinline)) void span(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
-    if (xe - xs + 1 >= zienkiewicz_fd_min_length && rows_ready()) {
+#if TS_USE_SSE2
+    // The set-up called from here, as before first_long_row (which cost x86-64 up to +0.3 % instructions).
+    if (xe - xs + 1 >= zienkiewicz_fd_min_length && (fd_state == 0 ? rows_ready_slow() : fd_state > 0)) {
       forward_differenced(y, xs, x0, x1);
       return;
     }
+#else
+    if (xe - xs + 1 >= zienkiewicz_fd_min_length && fd_state >= 0) {
+      // Tail calls: this frame is gone before the forward differencing's and the set-up's.
+      if (fd_state > 0) {
+        forward_differenced(y, xs, x0, x1);
+      } else {
+        first_long_row(y, xs, xe, x0, x1);
+      }
+      return;
+    }
+#endif
     uint32_t a, b;
     // The weights at x0 directly: the same sums modulo 2^32 as at xs plus (x0 - xs) steps.
     steps.at(x0, y, &a, &b);
@@ -164,6 +218,49 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       b += steps.dbdx;
     }
   }
+  // Channel C's RGB565 field of `count` pixels from p (2 bytes each) from the steps s (value in
+  // 2^-32 grey plus the rounding offset): clamp(int32(v / 2^32), 0, 255) as put_rounded takes it,
+  // its field alone (channel 0: stored; 1, 2: OR-ed into the pixel), dithered by the row's offsets
+  // (dither_span_offsets) or by the tables (where the code is optimized for size by the offsets
+  // of pack565_nearest: no tables). Its own loop over locals: the eight words of the steps stay
+  // in the registers of a Cortex-M4.
+  template <int C, bool Dither>
+  __attribute__((noinline)) static void rgb565_channel(const CubicSteps* s, uint8_t* p, int32_t count,
+                                                       const uint32_t* offsets) {
+    constexpr PixelFormat F = DirectRgb565<Writer>::format;
+    uint64_t value = s->v, first = s->d1, second = s->d2;
+    const uint64_t third = s->d3;
+    uint8_t* const end = p + 2 * count;
+    [[maybe_unused]] const uint32_t k = in_register(C == 1 ? dither_k63 : dither_k31);
+    for (; p != end; p += 2) {
+      const int32_t h = int32_t(uint32_t(value >> 32));
+      const uint32_t v = uint32_t(h < 0 ? 0 : (h > 255 ? 255 : h));
+      uint32_t field;
+      if constexpr (Dither) {
+        // pack565_dithered's field of this channel.
+        field = rgb565_bytes<F>(((v * k + offsets[dither_index(p)]) >> 23) << (C == 0 ? 11 : (C == 1 ? 5 : 0)));
+      } else {
+#if defined(__OPTIMIZE_SIZE__)
+        static_assert(Dither, "-Os: one loop, by the offsets");
+#else
+        // pack565_bytes_by_table's term of this channel.
+        const uint16_t* const rt = rgb565_r_table<F>.v;
+        if constexpr (C == 0) {
+          field = rt[v];
+        } else if constexpr (C == 1) {
+          field = rgb565_g_table<F>.v[v];
+        } else {
+          field = uint16_t(F == PixelFormat::rgb565_be ? uint32_t(rt[v]) << 5 : uint32_t(rt[v]) >> 11);
+        }
+#endif
+      }
+      if constexpr (C != 0) field |= load565_bytes(p);
+      store565_bytes(p, uint16_t(field));
+      value += first;
+      first += second;
+      second += third;
+    }
+  }
   // Pixels x0..x1 of row y by forward differencing from the weights at xs.
   __attribute__((noinline)) void forward_differenced(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
     constexpr int vf = ZienkiewiczChannel::value_frac_bits;
@@ -199,12 +296,50 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       return;
     }
 #endif
-    if constexpr (Writer::takes_rounded && Channels == 3) {
+    if constexpr (DirectRgb565<Writer>::value) {
+      // Rounding to nearest folded into the values (exact: the differences are unchanged). One
+      // channel at a time over the whole row, its field of each pixel stored (channel 0) or OR-ed
+      // into the halfword (1, 2): the RGB565 fields of put_rounded are separate bit fields of the
+      // same value (pack565_nearest, pack565_dithered), so the pixels are the same. No staging of
+      // the three channels' steps and bytes: -160 bytes of the deepest Cortex-M4 frames.
+      static_assert(bytes_per_pixel(DirectRgb565<Writer>::format) == 2, "RGB565");
+#if defined(__OPTIMIZE_SIZE__)
+      // One loop for both (half the code): without dithering pack565_dithered's fields with the
+      // offset 127 of pack565_nearest (the same values: t <= 16313 there too).
+      static constexpr uint32_t nearest[4] = {127 * dither_scale, 127 * dither_scale, 127 * dither_scale,
+                                              127 * dither_scale};
+      const uint32_t* const offsets = writer.dither ? dither_span_offsets(y, x0, p) : nearest;
+#else
+      const uint32_t* const offsets = writer.dither ? dither_span_offsets(y, x0, p) : nullptr;
+#endif
+      const uint64_t bias = uint64_t(1) << (vf - 1);
+      auto pass = [&](auto channel) __attribute__((always_inline)) {
+        constexpr int c = decltype(channel)::value;
+        zienkiewicz_row_chunks<1>(&ch[c], a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, bias,
+                                  [&](int32_t n, int32_t end, CubicSteps* s) {
+                                    uint8_t* const q = p + 2 * (n - (x0 - xs));
+#if defined(__OPTIMIZE_SIZE__)
+                                    rgb565_channel<c, true>(s, q, end - n + 1, offsets);
+#else
+                                    if (offsets) {
+                                      rgb565_channel<c, true>(s, q, end - n + 1, offsets);
+                                    } else {
+                                      rgb565_channel<c, false>(s, q, end - n + 1, offsets);
+                                    }
+#endif
+                                  });
+      };
+      pass(IntConstant<0>{});
+      pass(IntConstant<1>{});
+      pass(IntConstant<2>{});
+    } else if constexpr (Writer::takes_rounded && Channels == 3) {
       // Rounding to nearest folded into the values (exact: the differences are unchanged). Each
       // channel's rounded bytes of up to `piece` pixels in a loop of its own (CubicSteps::high_bytes),
       // then the pixels by the writer's put_rounded_bytes (its step is bpp, as the shader's): the
       // same values as stepping the three channels together.
-      constexpr int32_t piece = 32;
+      // 16 pixels a piece: the staging (three times `piece` bytes) is in the deepest frame of the
+      // zienkiewicz render for these formats (-48 bytes of Cortex-M4 stack against 32).
+      constexpr int32_t piece = 16;
       zienkiewicz_row_chunks<3>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),
                                 [&](int32_t n, int32_t end, CubicSteps* s) {
                                   uint8_t bytes[3][piece];

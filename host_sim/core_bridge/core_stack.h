@@ -14,7 +14,7 @@
 namespace tristream {
 
 inline constexpr std::size_t core_stack_bytes_bilinear = 1408;     // measured 1,360 (-O2)
-inline constexpr std::size_t core_stack_bytes_zienkiewicz = 1920;  // measured 1,904 (-O2)
+inline constexpr std::size_t core_stack_bytes_zienkiewicz = 1792;  // measured 1,728 (-O2)
 
 constexpr std::size_t core_stack_bytes(core::Method method) {
   return method == core::Method::zienkiewicz ? core_stack_bytes_zienkiewicz : core_stack_bytes_bilinear;
@@ -23,7 +23,7 @@ constexpr std::size_t core_stack_bytes(core::Method method) {
 // The same for a compressed blob rendered from its streams (render.h): the decoder's frames
 // below the band advance, besides the tile path's. Measured by make bench-mcu (--blobs compressed).
 inline constexpr std::size_t core_compressed_stack_bytes_bilinear = 1600;     // measured 1,576 (-O2)
-inline constexpr std::size_t core_compressed_stack_bytes_zienkiewicz = 2368;  // measured 2,312 (-O2)
+inline constexpr std::size_t core_compressed_stack_bytes_zienkiewicz = 2048;  // measured 1,952 (-O2)
 
 constexpr std::size_t core_compressed_stack_bytes(core::Method method) {
   return method == core::Method::zienkiewicz ? core_compressed_stack_bytes_zienkiewicz

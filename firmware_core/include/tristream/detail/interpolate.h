@@ -149,11 +149,13 @@ struct ZienkiewiczChannel {
 #else
   // Where a 64-bit product is not one instruction (Cortex-M, zienkiewicz_narrow_forms): the
   // coefficients in int32 when every one fits (40 bytes a channel less of the stack, which holds
-  // three channels' for a triangle), else `wide` and all ten in `w`, in the place of the
-  // forward-difference polynomials: such a triangle is outside their budget (fits_rows), so they
-  // are never set for it.
+  // three channels' for a triangle), else wide(): p30 is wide_mark and all ten are in `w`, in the
+  // place of the forward-difference polynomials: such a triangle is outside their budget
+  // (fits_rows), so they are never set for it. The mark in place of a flag: 8 bytes a channel
+  // less (the flag's padding). An int32 coefficient is never wide_mark (store sends it to `w`).
   int32_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
-  bool wide;
+  static constexpr int32_t wide_mark = INT32_MIN;
+  bool wide() const { return p30 == wide_mark; }
 #endif
 
   // Forward differencing: fraction bits of values and differences (grey levels).
@@ -169,8 +171,8 @@ struct ZienkiewiczChannel {
   RowCoefficients fd;
 #else
   union {
-    RowCoefficients fd;  // when !wide
-    WideCoefficients w;  // when wide
+    RowCoefficients fd;  // when !wide()
+    WideCoefficients w;  // when wide()
   };
 #endif
 
@@ -203,17 +205,27 @@ struct ZienkiewiczChannel {
     }
 #if TS_USE_INT128
     expand<int64_t>(values[0], u2, u3, values[1], u5, u6, values[2], u8, u9);
-#else
-    expand_wide(values[0], u2, u3, values[1], u5, u6, values[2], u8, u9);
-#endif
     return Narrow && fits_narrow();
+#else
+    return setup_wide<Narrow>(edge_dx, edge_dy, values, gradients);
+#endif
   }
-  // expand<int64_t> out of line where 64-bit arithmetic is several instructions (Cortex-M, where
-  // setup takes it only for large derivatives): inlined into setup it costs the deepest stack 56
-  // bytes and 1 % to 4 % modelled cycles at -O2.
-  __attribute__((noinline)) void expand_wide(int64_t u1, int64_t u2, int64_t u3, int64_t u4, int64_t u5, int64_t u6,
-                                             int64_t u7, int64_t u8, int64_t u9) {
-    expand<int64_t>(u1, u2, u3, u4, u5, u6, u7, u8, u9);
+  // setup's 64-bit expansion out of line where 64-bit arithmetic is several instructions
+  // (Cortex-M, where setup takes it only for large derivatives), the derivatives formed again
+  // there: inlined into setup it costs the deepest stack 56 bytes and 1 % to 4 % modelled cycles
+  // at -O2; called with the nine int64 inputs it costs the caller's frame their 64 bytes.
+  template <bool Narrow, typename Values, typename Gradients>
+  __attribute__((noinline)) bool setup_wide(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
+                                            const Gradients& gradients) {
+    constexpr int shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
+    auto dot = [&](int edge, int vertex) __attribute__((always_inline)) {
+      const int64_t d =
+          int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
+      return (d + (int64_t(1) << (shift - 1))) >> shift;
+    };
+    expand<int64_t>(values[0], dot(0, 0), dot(0, 1), values[1], dot(1, 1), dot(1, 2), values[2], dot(2, 2),
+                    dot(2, 0));
+    return Narrow && fits_narrow();
   }
   // Edge derivatives (and values, below 2^16) up to this in magnitude give coefficients within
   // max_narrow_coefficient, formed in 32 bits: every sum of expand is at most 20 max |u| (p21 and
@@ -240,7 +252,7 @@ struct ZienkiewiczChannel {
   // All ten coefficients in int64 (from either layout), and setting them as expand does (tests).
   WideCoefficients coefficients() const {
 #if !TS_USE_INT128
-    if (wide) return w;
+    if (wide()) return w;
 #endif
     return {p00, p01, p02, p03, p10, p11, p12, p20, p21, p30};
   }
@@ -251,15 +263,16 @@ struct ZienkiewiczChannel {
   __attribute__((always_inline)) void store(T q00, T q01, T q02, T q03, T q10, T q11, T q12, T q20, T q21, T q30) {
 #if !TS_USE_INT128
     if constexpr (sizeof(T) > sizeof(int32_t)) {
-      auto fits = [](T q) { return uint32_t(q >= INT32_MIN && q <= INT32_MAX); };
-      wide = !(fits(q00) & fits(q01) & fits(q02) & fits(q03) & fits(q10) & fits(q11) & fits(q12) & fits(q20) &
-               fits(q21) & fits(q30));
-      if (wide) {
+      // wide_mark itself goes wide (any value that large is outside both 32-bit budgets).
+      auto fits = [](T q) { return uint32_t(q > wide_mark && q <= INT32_MAX); };
+      if (!(fits(q00) & fits(q01) & fits(q02) & fits(q03) & fits(q10) & fits(q11) & fits(q12) & fits(q20) &
+            fits(q21) & fits(q30))) {
         w = {q00, q01, q02, q03, q10, q11, q12, q20, q21, q30};
+        p30 = wide_mark;
         return;
       }
     } else {
-      wide = false;
+      static_assert(max_narrow_coefficient < -int64_t(wide_mark), "a narrow coefficient is never wide_mark");
     }
     using P = int32_t;  // each fits (checked above, or T is int32_t)
 #else
@@ -271,7 +284,7 @@ struct ZienkiewiczChannel {
   // q24_8 value at barycentric weights a, b (q17_15), unclamped (below 2^45 in magnitude).
   int64_t eval_wide(int64_t a, int64_t b) const {
 #if !TS_USE_INT128
-    if (wide) return horner(w, a, b);
+    if (wide()) return horner(w, a, b);
 #endif
     return horner(*this, a, b);
   }
@@ -306,7 +319,7 @@ struct ZienkiewiczChannel {
       return uint32_t(uint64_t(c) + uint64_t(max_narrow_coefficient) > uint64_t(2 * max_narrow_coefficient));
     };
 #if !TS_USE_INT128
-    if (wide) return false;
+    if (wide()) return false;
 #endif
     return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
              out(p30));
@@ -346,7 +359,7 @@ struct ZienkiewiczChannel {
       return uint32_t(uint64_t(c) + uint64_t(max_fd_coefficient - 1) > uint64_t(2 * (max_fd_coefficient - 1)));
     };
 #if !TS_USE_INT128
-    if (wide) return false;
+    if (wide()) return false;
 #endif
     return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
              out(p30));
