@@ -244,11 +244,11 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
         static_assert(Dither, "-Os: one loop, by the offsets");
 #else
         // pack565_bytes_by_table's term of this channel.
-        const uint16_t* const rt = rgb565_r_table<F>.v;
+        const uint16_t* const rt = rgb565_table<F>.v;  // R fields at v, G fields at 256 + v
         if constexpr (C == 0) {
           field = rt[v];
         } else if constexpr (C == 1) {
-          field = rgb565_g_table<F>.v[v];
+          field = rt[256 + v];
         } else {
           field = uint16_t(F == PixelFormat::rgb565_be ? uint32_t(rt[v]) << 5 : uint32_t(rt[v]) >> 11);
         }
