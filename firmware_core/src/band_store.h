@@ -46,15 +46,16 @@ inline size_t band_store_bytes(uint32_t vertices, uint32_t triangles, uint32_t v
          (map > bits ? map : bits);
 }
 
-// First and last pixel row of a triangle with raw y coordinates y0, y1, y2 (as row_extent).
-inline void raw_row_extent(const Mapping& map, int32_t y0, int32_t y1, int32_t y2, int32_t* top, int32_t* bottom) {
-  *top = position_fx::from_raw(map.y(min3(y0, y1, y2))).ceil_to_int();
-  *bottom = position_fx::from_raw(map.y(max3(y0, y1, y2))).floor_to_int();
-}
-
-// The last of them alone (a triangle's end, all that dropping it needs).
+// Last pixel row of a triangle with raw y coordinates y0, y1, y2 (a triangle's end, all that
+// dropping it needs).
 inline int32_t raw_row_bottom(const Mapping& map, int32_t y0, int32_t y1, int32_t y2) {
   return position_fx::from_raw(map.y(max3(y0, y1, y2))).floor_to_int();
+}
+
+// First and last pixel row of such a triangle (as row_extent).
+inline void raw_row_extent(const Mapping& map, int32_t y0, int32_t y1, int32_t y2, int32_t* top, int32_t* bottom) {
+  *top = position_fx::from_raw(map.y(min3(y0, y1, y2))).ceil_to_int();
+  *bottom = raw_row_bottom(map, y0, y1, y2);
 }
 
 inline void decoded_row_extent(const Mapping& map, const DecodedTriangle& t, int32_t* top, int32_t* bottom) {

@@ -40,19 +40,22 @@ __attribute__((always_inline)) inline void normalize(RangeDecoder& d) {
   if (d.range < range_top) refill(d);
 }
 
-__attribute__((always_inline)) inline uint32_t decode_bit(RangeDecoder& d, Prob& prob) {
-  const uint32_t bound = (d.range >> prob_bits) * prob;
-  uint32_t bit;
-  if (d.code < bound) {
-    d.range = bound;
+// One adaptive decision on a range and code (before the renormalisation), and its bit.
+__attribute__((always_inline)) inline uint32_t decide(uint32_t& range, uint32_t& code, Prob& prob) {
+  const uint32_t bound = (range >> prob_bits) * prob;
+  if (code < bound) {
+    range = bound;
     prob = Prob(prob + (((1u << prob_bits) - prob) >> prob_shift));
-    bit = 0;
-  } else {
-    d.code -= bound;
-    d.range -= bound;
-    prob = Prob(prob - (prob >> prob_shift));
-    bit = 1;
+    return 0;
   }
+  code -= bound;
+  range -= bound;
+  prob = Prob(prob - (prob >> prob_shift));
+  return 1;
+}
+
+__attribute__((always_inline)) inline uint32_t decode_bit(RangeDecoder& d, Prob& prob) {
+  const uint32_t bit = decide(d.range, d.code, prob);
   normalize(d);
   return bit;
 }
@@ -71,18 +74,7 @@ struct LocalCoder {
     }
   }
   __attribute__((always_inline)) uint32_t bit(Prob& prob) {
-    const uint32_t bound = (range >> prob_bits) * prob;
-    uint32_t b;
-    if (code < bound) {
-      range = bound;
-      prob = Prob(prob + (((1u << prob_bits) - prob) >> prob_shift));
-      b = 0;
-    } else {
-      code -= bound;
-      range -= bound;
-      prob = Prob(prob - (prob >> prob_shift));
-      b = 1;
-    }
+    const uint32_t b = decide(range, code, prob);
     normalize();
     return b;
   }
