@@ -32,14 +32,12 @@ constexpr uint64_t scan_numerator_bound(int m, int s) {
 constexpr bool short_division_fits(int m, int s) {
   return scan_numerator_bound(m, s) < ~uint64_t(0) / (2 * scan_area2_bound(m, s));
 }
-// Whether Mod32RoundingDivider is exact for them: 2d within its divisor range, the gradient
-// numerators sum v a and sum v b (|A|, |B| < e 2^(2S), v < 2^16) in int32, and sum v e_ref below
-// 2^46.
+// Whether Mod32RoundingDivider is exact for them (BilinearChannel::setup_from_vertex0): 2d within
+// its divisor range and its numerators in int32: sum v a and sum v b (a = A 2^S, |A| < e 2^S, so
+// below 3 * 65535 * e 2^(2S)), and t = ox sum v A + oy sum v B (|ox|, |oy| < 2^S: below twice that).
 constexpr bool mod32_division_fits(int m, int s) {
   return 2 * scan_area2_bound(m, s) <= Mod32RoundingDivider::max_divisor &&
-         (uint64_t(3) * 65535 * (uint64_t(m + 1) << (2 * s))) < (uint64_t(1) << 31) &&
-         (uint64_t(3) * 65535 * (uint64_t(2 * (m + 1) * (m + 2)) << (2 * s))) <
-             (uint64_t(1) << Mod32RoundingDivider::wide_bits);
+         (uint64_t(2 * 3) * 65535 * (uint64_t(m + 1) << (2 * s))) < (uint64_t(1) << 31);
 }
 // Where the high multiply is one instruction (a 128-bit type) the short division for the scan
 // path and RoundingDivider for the span path. Else (Cortex-M) Mod32RoundingDivider for the scan
@@ -79,8 +77,12 @@ struct BilinearShader {
   int bpp;
   BilinearChannel ch[Channels];
   int32_t xr = 0, yr = 0;
-  // Scan-path triangles are set up from e_ref32 where their division allows (begin).
-  static constexpr bool scan_e_ref64 = !(bilinear_short_division || bilinear_mod32_division) || TS_USE_SSE2;
+  // The edge values that begin reads on scan-path triangles: none with Mod32RoundingDivider (it
+  // works from vertex 0), e_ref32 with the short division without SSE2, else e_ref.
+  static constexpr unsigned scan_e_refs = TS_USE_SSE2                 ? scan_e_ref64
+                                          : bilinear_mod32_division   ? 0u
+                                          : bilinear_short_division   ? scan_e_ref32
+                                                                      : scan_e_ref64;
 #if TS_USE_SSE2
   // RGB to a writer that takes rounded values: the channels' values (rounding offset included),
   // steps per column and per row in the writer's lanes.
@@ -114,7 +116,14 @@ struct BilinearShader {
         setup(ShortRoundingDivider(s.area2), s.e_ref32);
       }
     } else if (bilinear_mod32_division && s.scan_path) {
-      setup(Mod32RoundingDivider(int32_t(s.area2)), s.e_ref32);
+      constexpr int S = config::subpixel_bits;
+      const Mod32RoundingDivider by_area2(int32_t(s.area2));
+      const int32_t ox = s.xr * (1 << S) - tv.x[0], oy = s.yr * (1 << S) - tv.y[0];
+      TS_UNROLL_FAST
+      for (int c = 0; c < Channels; ++c) {
+        const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
+        ch[c].template setup_from_vertex0<S>(s.a, s.b, ox, oy, by_area2, v3);
+      }
     } else if (bilinear_preinv_division && PreinvRoundingDivider::fits(s.area2)) {
       setup(PreinvRoundingDivider(s.area2), s.e_ref);
     } else {

@@ -109,8 +109,8 @@ inline void small_edges(const TriangleView& tv, int32_t area2, int32_t left, int
 }
 
 // The setup of a scan-path triangle for the shader (on its first covered row in the clip).
-// Without SSE2 e_ref (int64) is set only for a shader that reads it (ReadsScanERef64).
-template <bool WithERef64 = true>
+// Without SSE2 e_ref32 and e_ref are set only where the shader reads them (ScanERefsRead).
+template <unsigned Reads = scan_e_ref32 | scan_e_ref64>
 inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSetup* s) {
   const int32_t xr = position_fx::from_raw(tv.x[0]).floor_to_int();
   const int32_t yr = position_fx::from_raw(tv.y[0]).floor_to_int();
@@ -136,8 +136,11 @@ inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSet
   for (int k = 0; k < 3; ++k) {
     s->a[k] = e.a[k];
     s->b[k] = e.b[k];
-    s->e_ref32[k] = e.first[k] + e.a[k] * ox + e.b[k] * oy;
-    if (WithERef64) s->e_ref[k] = s->e_ref32[k];
+    if (Reads != 0) {
+      const int32_t ref = e.first[k] + e.a[k] * ox + e.b[k] * oy;
+      if (Reads & scan_e_ref32) s->e_ref32[k] = ref;
+      if (Reads & scan_e_ref64) s->e_ref[k] = ref;
+    }
   }
 #endif
 }
@@ -185,7 +188,7 @@ void scan_rows(const TriangleView& tv, const SmallEdges& e, int32_t left, uint32
     if (cs > ce) continue;
     if (!started) {
       TriangleSetup s;
-      small_setup<ReadsScanERef64<Shader>::value>(tv, e, &s);
+      small_setup<ScanERefsRead<Shader>::value>(tv, e, &s);
       shader.begin(tv, s);
       started = true;
     }

@@ -46,16 +46,17 @@ struct TriangleSetup {
   bool scan_path;  // a triangle of the scan path (small: see SmallEdges)
 };
 
-// Whether a shader's begin reads the int64 e_ref of scan-path triangles: yes unless the shader
-// declares `static constexpr bool scan_e_ref64 = false` (it reads e_ref32 there); without SSE2 the
-// scan path then does not widen and store them.
+// Which of a scan-path triangle's edge values at the reference pixel a shader's begin reads:
+// e_ref32 and e_ref unless the shader declares `static constexpr unsigned scan_e_refs` (a mask of
+// these); without SSE2 the scan path then sets only those (none: begin works from the vertices).
+constexpr unsigned scan_e_ref32 = 1, scan_e_ref64 = 2;
 template <typename Shader, typename = void>
-struct ReadsScanERef64 {
-  static constexpr bool value = true;
+struct ScanERefsRead {
+  static constexpr unsigned value = scan_e_ref32 | scan_e_ref64;
 };
 template <typename Shader>
-struct ReadsScanERef64<Shader, decltype(void(Shader::scan_e_ref64))> {
-  static constexpr bool value = Shader::scan_e_ref64;
+struct ScanERefsRead<Shader, decltype(void(Shader::scan_e_refs))> {
+  static constexpr unsigned value = Shader::scan_e_refs;
 };
 
 }  // namespace

@@ -39,15 +39,23 @@ struct BilinearChannel {
     dvdy = uint32_t(by_area2(ny * (int64_t(1) << shift)));
     v_ref = uint32_t(by_area2(nv * (int64_t(1) << shift)));
   }
-  // The same from numerators that the caller proves within Mod32RoundingDivider's ranges: Σ v a
-  // and Σ v b in int32 (small), Σ v e_ref below 2^46 (wide).
-  __attribute__((always_inline)) void setup(const int32_t* a, const int32_t* b, const int32_t* e_ref,
-                                            const Mod32RoundingDivider& by_area2, const int32_t* values) {
+  // The same quotients from vertex 0's value, for numerators that the caller proves within
+  // Mod32RoundingDivider's range (int32): with a = A 2^S and b = B 2^S (per pixel) and (ox, oy) =
+  // (xr 2^S - x_0, yr 2^S - y_0) the offset of the reference pixel from vertex 0, E_k(xr, yr) =
+  // E_k(P_0) + A_k ox + B_k oy, and sum v_(k+2) E_k(P_0) = v_0 area2 (edges 0 and 2 pass through
+  // P_0, E_1(P_0) = area2). So 2^8 sum v e_ref / area2 = 2^8 v_0 + 2^8 t / area2 with t = ox sum v A
+  // + oy sum v B, and its rounding is 2^8 v_0 + round(2^8 t / area2): two divisions of an int32
+  // numerator instead of three of a 64-bit one, and no edge value at the reference pixel.
+  template <int S>
+  __attribute__((always_inline)) void setup_from_vertex0(const int32_t* a, const int32_t* b, int32_t ox, int32_t oy,
+                                                         const Mod32RoundingDivider& by_area2, const int32_t* values) {
     static_assert(q16_16::frac_bits - q8_8::frac_bits == 8, "Mod32RoundingDivider divides m 2^8");
     const int32_t v2 = values[2], v0 = values[0], v1 = values[1];
-    dvdx = by_area2.small(v2 * a[0] + v0 * a[1] + v1 * a[2]);
-    dvdy = by_area2.small(v2 * b[0] + v0 * b[1] + v1 * b[2]);
-    v_ref = by_area2.wide(int64_t(v2) * e_ref[0] + int64_t(v0) * e_ref[1] + int64_t(v1) * e_ref[2]);
+    const int32_t mx = v2 * a[0] + v0 * a[1] + v1 * a[2], my = v2 * b[0] + v0 * b[1] + v1 * b[2];
+    dvdx = by_area2.small(mx);
+    dvdy = by_area2.small(my);
+    // mx, my are multiples of 2^S (sum v A 2^S): the shifts are exact.
+    v_ref = (uint32_t(v0) << 8) + by_area2.small((mx >> S) * ox + (my >> S) * oy);
   }
   // q16_16 value at (x, y), modulo 2^32 (exact when the pixel is covered).
   uint32_t at(int32_t x, int32_t y, int32_t xr, int32_t yr) const {
