@@ -113,7 +113,6 @@ TEST_CASE("ShortRoundingDivider equals round_div wherever |2n + d| 2d < 2^64") {
 TEST_CASE("Mod32RoundingDivider equals round_div of m 2^8 modulo 2^32 wherever 2d <= 2^17") {
   std::mt19937_64 rng(17);
   constexpr std::int64_t d_max = std::int64_t(Mod32RoundingDivider::max_divisor / 2);
-  constexpr std::int64_t wide_max = (std::int64_t(1) << Mod32RoundingDivider::wide_bits) - 1;
   std::vector<std::int64_t> divisors = {1, 2, 3, 255, 256, 257, 32767, 32768, 32769, d_max - 1, d_max};
   for (int i = 0; i < 3000; ++i) divisors.push_back(1 + std::int64_t(rng() % std::uint64_t(d_max)));
   auto expected = [](std::int64_t m, std::int64_t d) { return std::uint32_t(round_div(m * 256, d)); };
@@ -128,20 +127,11 @@ TEST_CASE("Mod32RoundingDivider equals round_div of m 2^8 modulo 2^32 wherever 2
     for (std::int64_t m : specials) {
       INFO("m " << m << " d " << d);
       REQUIRE(round.small(std::int32_t(m)) == expected(m, d));
-      REQUIRE(round.wide(m) == expected(m, d));
-    }
-    for (std::int64_t m : {wide_max, -wide_max, wide_max - 2 * d, -wide_max + 2 * d}) {
-      INFO("m " << m << " d " << d);
-      REQUIRE(round.wide(m) == expected(m, d));
     }
     for (int i = 0; i < 300; ++i) {
       const auto m32 = std::int32_t(std::uint32_t(rng() >> (32 + rng() % 32)) * ((rng() & 1) ? 1u : ~0u));
       INFO("m " << m32 << " d " << d);
       REQUIRE(round.small(m32) == expected(m32, d));
-      const std::int64_t x = std::int64_t(rng() >> (64 - Mod32RoundingDivider::wide_bits + rng() % 40));
-      const std::int64_t m = (rng() & 1) ? x : -x;
-      INFO("m " << m << " d " << d);
-      REQUIRE(round.wide(m) == expected(m, d));
     }
   }
 }

@@ -150,31 +150,20 @@ class ShortRoundingDivider {
 };
 
 // round(m 2^8 / d) modulo 2^32, halves up (RoundingDivider of n = m 2^8: q16_16 quotients of q8_8
-// numerators, the bilinear set-up's), for 2 <= D = 2d <= 2^17, in 32-bit operations only. With m =
-// q D + r, 0 <= r < D: floor((m 2^9 + d) / D) = q 2^9 + floor((r 2^9 + d) / D), and r 2^9 + d <
-// 2^27. small: any int32 m; one signed division (floored) and one unsigned. wide: |m| < 2^46, q and
-// r of m in two chunks, m = h 2^15 + l (h = m >> 15 fits int32, 0 <= l < 2^15): h = q_h D + r_h,
-// then r_h 2^15 + l < D 2^15 <= 2^32 is divided unsigned; three divisions. Only the quotient modulo
-// 2^32 is computed: the bilinear set-up's every use is modulo 2^32 (BilinearChannel). On
-// Cortex-M4 no 64-bit addition, shift or sign fold per quotient.
+// numerators, the bilinear set-up's), for any int32 m and 2 <= D = 2d <= 2^17, in 32-bit operations
+// only: with m = q D + r, 0 <= r < D, floor((m 2^9 + d) / D) = q 2^9 + floor((r 2^9 + d) / D), and
+// r 2^9 + d < 2^27; one signed division (floored) and one unsigned. Only the quotient modulo 2^32
+// is computed: the bilinear set-up's every use is modulo 2^32 (BilinearChannel). On Cortex-M4 no
+// 64-bit addition, shift or sign fold per quotient.
 class Mod32RoundingDivider {
  public:
   static constexpr uint32_t max_divisor = uint32_t(1) << 17;  // D = 2d at most this
-  static constexpr int wide_bits = 46;                        // |m| < 2^46 for wide
 
   explicit Mod32RoundingDivider(int32_t d) : half_(uint32_t(d)), den_(uint32_t(2 * d)) {}
   __attribute__((always_inline)) uint32_t small(int32_t m) const {
     int32_t q, r;
     floor_divmod(m, &q, &r);
     return (uint32_t(q) << 9) + ((uint32_t(r) << 9) + half_) / den_;
-  }
-  __attribute__((always_inline)) uint32_t wide(int64_t m) const {
-    int32_t qh, rh;
-    floor_divmod(int32_t(m >> 15), &qh, &rh);
-    const uint32_t t = (uint32_t(rh) << 15) | (uint32_t(m) & 0x7FFFu);
-    const uint32_t q = t / den_;
-    const uint32_t r = t - q * den_;
-    return (uint32_t(qh) << 24) + (q << 9) + ((r << 9) + half_) / den_;
   }
 
  private:
