@@ -33,11 +33,12 @@ constexpr bool short_division_fits(int m, int s) {
   return scan_numerator_bound(m, s) < ~uint64_t(0) / (2 * scan_area2_bound(m, s));
 }
 // Whether Mod32RoundingDivider is exact for them (BilinearChannel::setup_from_vertex0): 2d within
-// its divisor range and its numerators in int32: sum v a and sum v b (a = A 2^S, |A| < e 2^S, so
-// below 3 * 65535 * e 2^(2S)), and t = ox sum v A + oy sum v B (|ox|, |oy| < 2^S: below twice that).
+// its divisor range and its numerators in int32, with value differences |u|, |w| < 2^16: u a_0 +
+// w a_1 and u b_0 + w b_1 (a = A 2^S, |A| < e 2^S: below 2 * 65535 * e 2^(2S)), and every product
+// and the sum of t = u p + w q (p = ox A_0 + oy B_0 with |ox|, |oy| < 2^S: below twice that).
 constexpr bool mod32_division_fits(int m, int s) {
   return 2 * scan_area2_bound(m, s) <= Mod32RoundingDivider::max_divisor &&
-         (uint64_t(2 * 3) * 65535 * (uint64_t(m + 1) << (2 * s))) < (uint64_t(1) << 31);
+         (uint64_t(4) * 65535 * (uint64_t(m + 1) << (2 * s))) < (uint64_t(1) << 31);
 }
 // Where the high multiply is one instruction (a 128-bit type) the short division for the scan
 // path and RoundingDivider for the span path. Else (Cortex-M) Mod32RoundingDivider for the scan
@@ -118,11 +119,12 @@ struct BilinearShader {
     } else if (bilinear_mod32_division && s.scan_path) {
       constexpr int S = config::subpixel_bits;
       const Mod32RoundingDivider by_area2(int32_t(s.area2));
-      const int32_t ox = s.xr * (1 << S) - tv.x[0], oy = s.yr * (1 << S) - tv.y[0];
+      const auto edges = BilinearChannel::VertexZeroEdges::of<S>(s.a, s.b, s.xr * (1 << S) - tv.x[0],
+                                                                 s.yr * (1 << S) - tv.y[0]);
       TS_UNROLL_FAST
       for (int c = 0; c < Channels; ++c) {
         const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
-        ch[c].template setup_from_vertex0<S>(s.a, s.b, ox, oy, by_area2, v3);
+        ch[c].setup_from_vertex0(edges, by_area2, v3);
       }
     } else if (bilinear_preinv_division && PreinvRoundingDivider::fits(s.area2)) {
       setup(PreinvRoundingDivider(s.area2), s.e_ref);

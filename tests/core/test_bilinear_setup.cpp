@@ -48,8 +48,8 @@ bool check(const Case& t) {
     e_ref[k] = std::int64_t(-dy) * ((xr << S) - t.x[k]) + std::int64_t(dx) * ((yr << S) - t.y[k]);
   }
   BilinearChannel ch;
-  ch.setup_from_vertex0<S>(a, b, (xr << S) - t.x[0], (yr << S) - t.y[0], Mod32RoundingDivider(std::int32_t(area2)),
-                           t.v);
+  ch.setup_from_vertex0(BilinearChannel::VertexZeroEdges::of<S>(a, b, (xr << S) - t.x[0], (yr << S) - t.y[0]),
+                        Mod32RoundingDivider(std::int32_t(area2)), t.v);
   // E_k / area2 weighs vertex k + 2.
   std::int64_t nx = 0, ny = 0, nv = 0;
   for (int k = 0; k < 3; ++k) {

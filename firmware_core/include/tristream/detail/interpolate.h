@@ -45,17 +45,26 @@ struct BilinearChannel {
   // E_k(P_0) + A_k ox + B_k oy, and sum v_(k+2) E_k(P_0) = v_0 area2 (edges 0 and 2 pass through
   // P_0, E_1(P_0) = area2). So 2^8 sum v e_ref / area2 = 2^8 v_0 + 2^8 t / area2 with t = ox sum v A
   // + oy sum v B, and its rounding is 2^8 v_0 + round(2^8 t / area2): two divisions of an int32
-  // numerator instead of three of a 64-bit one, and no edge value at the reference pixel.
-  template <int S>
-  __attribute__((always_inline)) void setup_from_vertex0(const int32_t* a, const int32_t* b, int32_t ox, int32_t oy,
-                                                         const Mod32RoundingDivider& by_area2, const int32_t* values) {
+  // numerator instead of three of a 64-bit one, and no edge value at the reference pixel. The
+  // coefficients sum to zero (a_2 = -a_0 - a_1), so with u = v_2 - v_1 and w = v_0 - v_1 the sums
+  // are u a_0 + w a_1, u b_0 + w b_1 and t = u p + w q (VertexZeroEdges: p, q once per triangle).
+  struct VertexZeroEdges {
+    int32_t a0, a1, b0, b1;
+    int32_t p, q;  // ox A_0 + oy B_0, ox A_1 + oy B_1
+    template <int S>
+    static VertexZeroEdges of(const int32_t* a, const int32_t* b, int32_t ox, int32_t oy) {
+      // a and b are multiples of 2^S: the shifts are exact.
+      return VertexZeroEdges{a[0], a[1], b[0], b[1], (a[0] >> S) * ox + (b[0] >> S) * oy,
+                             (a[1] >> S) * ox + (b[1] >> S) * oy};
+    }
+  };
+  __attribute__((always_inline)) void setup_from_vertex0(const VertexZeroEdges& e, const Mod32RoundingDivider& by_area2,
+                                                         const int32_t* values) {
     static_assert(q16_16::frac_bits - q8_8::frac_bits == 8, "Mod32RoundingDivider divides m 2^8");
-    const int32_t v2 = values[2], v0 = values[0], v1 = values[1];
-    const int32_t mx = v2 * a[0] + v0 * a[1] + v1 * a[2], my = v2 * b[0] + v0 * b[1] + v1 * b[2];
-    dvdx = by_area2.small(mx);
-    dvdy = by_area2.small(my);
-    // mx, my are multiples of 2^S (sum v A 2^S): the shifts are exact.
-    v_ref = (uint32_t(v0) << 8) + by_area2.small((mx >> S) * ox + (my >> S) * oy);
+    const int32_t u = values[2] - values[1], w = values[0] - values[1];
+    dvdx = by_area2.small(u * e.a0 + w * e.a1);
+    dvdy = by_area2.small(u * e.b0 + w * e.b1);
+    v_ref = (uint32_t(values[0]) << 8) + by_area2.small(u * e.p + w * e.q);
   }
   // q16_16 value at (x, y), modulo 2^32 (exact when the pixel is covered).
   uint32_t at(int32_t x, int32_t y, int32_t xr, int32_t yr) const {
