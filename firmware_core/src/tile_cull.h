@@ -76,7 +76,9 @@ struct ColumnWindow {
       const int32_t x0 = load_u16(positions + 4 * size_t(load_u16(p)));
       const int32_t x1 = load_u16(positions + 4 * size_t(load_u16(p + 2)));
       const int32_t x2 = load_u16(positions + 4 * size_t(load_u16(p + 4)));
-      const int32_t outside = (max3(x0, x1, x2) - low) | (high - min3(x0, x1, x2));  // < 0: misses
+      // Misses when every x is below low or every x above high: the sign of an AND of differences
+      // (fewer instructions than max3 and min3 on Cortex-M4).
+      const int32_t outside = ((x0 - low) & (x1 - low) & (x2 - low)) | ((high - x0) & (high - x1) & (high - x2));
       hits |= uint32_t(outside >= 0) << i;
     }
     return hits;
