@@ -76,9 +76,14 @@ struct ColumnWindow {
       const int32_t x0 = load_u16(positions + 4 * size_t(load_u16(p)));
       const int32_t x1 = load_u16(positions + 4 * size_t(load_u16(p + 2)));
       const int32_t x2 = load_u16(positions + 4 * size_t(load_u16(p + 4)));
-      // Misses when every x is below low or every x above high: the sign of an AND of differences
-      // (fewer instructions than max3 and min3 on Cortex-M4).
+#if TS_USE_SSE2
+      const int32_t outside = (max3(x0, x1, x2) - low) | (high - min3(x0, x1, x2));  // < 0: misses
+#else
+      // The same as the sign of ANDed differences (misses when every x is below low or every x
+      // above high): fewer instructions on Cortex-M4, where min and max take IT blocks; more on
+      // x86-64, where they are conditional moves (+0.15 % instructions in 32x32 tiles).
       const int32_t outside = ((x0 - low) & (x1 - low) & (x2 - low)) | ((high - x0) & (high - x1) & (high - x2));
+#endif
       hits |= uint32_t(outside >= 0) << i;
     }
     return hits;
