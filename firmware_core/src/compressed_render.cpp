@@ -220,9 +220,9 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
   int16_t* scratch_ptr = scratch ? reinterpret_cast<int16_t*>(ws + pad_of(ws)) : nullptr;
   const bool gradients = blob.method == Method::zienkiewicz;
   const size_t share = (buffers.workspace_bytes - fixed) / blob.layer_count / 4 * 4;
-  LayerStream* streams[3] = {nullptr, nullptr, nullptr};
-  detail::BandStore stores[3];
-  detail::ActiveSet sets[3];
+  LayerStream* streams[detail::max_layers] = {};
+  detail::BandStore stores[detail::max_layers];
+  detail::ActiveSet sets[detail::max_layers];
   uint8_t* at = ws + pad_of(ws) + scratch;
   for (int l = 0; l < blob.layer_count; ++l) {
     streams[l] = reinterpret_cast<LayerStream*>(at);

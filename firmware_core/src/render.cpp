@@ -60,7 +60,7 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
   if (workspace_bytes < pad + scratch) return Status::workspace_too_small;
   int16_t* scratch_ptr = scratch ? reinterpret_cast<int16_t*>(ws + pad) : nullptr;
   const size_t set_bytes = (workspace_bytes - pad - scratch) / blob.layer_count / 4 * 4;
-  detail::ActiveSet sets[3];
+  detail::ActiveSet sets[detail::max_layers];
   for (int l = 0; l < blob.layer_count; ++l) {
     sets[l].layer = &blob.layers[l];
     sets[l].words = reinterpret_cast<uint32_t*>(ws + pad + scratch + size_t(l) * set_bytes);

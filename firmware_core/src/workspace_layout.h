@@ -7,6 +7,7 @@
 
 #include "frame_plan.h"
 #include "tristream/blob.h"
+#include "tristream/config.h"
 
 namespace tristream::core::detail {
 namespace {
@@ -17,6 +18,10 @@ constexpr size_t workspace_alignment = 8;
 inline size_t bitmap_bytes(uint32_t bits) { return size_t((bits + 31) / 32) * 4; }
 
 inline bool layered(const Blob& blob) { return blob.layer_count > 1; }
+
+// The layers a render keeps state for: 1 without the layered path (plan_frame rejects layered
+// blobs there), which saves the others' stack.
+constexpr int max_layers = config::layered ? 3 : 1;
 
 inline size_t scratch_bytes(const Blob& blob, const FramePlan& r, PixelFormat f) {
   if (!layered(blob) || f == PixelFormat::coverage8) return 0;
