@@ -22,8 +22,8 @@ namespace {
 // the offsets of their vertices from the reference pixel below (e + 1) 2^S, the doubled area d
 // below (e 2^S)^2 (at most the box), and |e_ref| < 2 e (e + 1) 2^(2S). With values below 2^16 the
 // largest numerator, 2^8 sum v e_ref (dv/dx and dv/dy have |A|, |B| < e 2^(2S) instead), is below
-// 2^24 * 3 * 2 e (e + 1) 2^(2S). m = 16, S = 4: |2n + d| < 2^43.9 and 2d < 2^17.2; m = 12:
-// |2n + d| < 2^43.1 and 2d < 2^16.4.
+// 2^24 * 3 * 2 e (e + 1) 2^(2S). m = 16, S = 4: |2n + d| < 2^43.9 and 2d < 2^17.2; m = 15:
+// |2n + d| < 2^43.7 and 2d < 2^17.
 constexpr uint64_t scan_area2_bound(int m, int s) { return uint64_t(m + 1) * (m + 1) << (2 * s); }
 constexpr uint64_t scan_numerator_bound(int m, int s) {
   return (uint64_t(3 * 2 * (m + 1) * (m + 2)) << (25 + 2 * s)) + scan_area2_bound(m, s);
@@ -56,7 +56,7 @@ constexpr bool bilinear_mod32_division = mod32_division_fits(scan_max_extent, co
 constexpr bool bilinear_preinv_division = true;
 #endif
 static_assert(short_division_fits(16, 4), "the default configuration divides scan-path numerators without correction");
-static_assert(mod32_division_fits(12, 4), "the default configuration divides scan-path numerators in 32 bits");
+static_assert(mod32_division_fits(15, 4), "the default configuration divides scan-path numerators in 32 bits");
 
 #if TS_USE_SSE2
 // Lane by lane, the low 32 bits of v * k (SSE2 has no 32-bit lane product: two 32 x 32 -> 64

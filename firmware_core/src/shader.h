@@ -32,8 +32,10 @@ namespace {
 // doubled area.
 // Triangles of the scan path (scan_path.h): pixel box below this many pixels each way and no
 // explicit corner. With SSE2 a row of a 16-column box costs about as much as the span steppers'
-// row, without their setup; the column scan of other targets pays per column.
-constexpr int32_t scan_max_extent = TS_USE_SSE2 ? 16 : 12;
+// row, without their setup. Elsewhere the column scan pays per column, but the set-up it saves
+// costs more: 15, the largest box whose bilinear set-up divides in 32 bits (Mod32RoundingDivider,
+// 2d <= 2^17; 12 -> 15: -0.3 % to -2.8 % modelled Cortex-M4 cycles, bilinear).
+constexpr int32_t scan_max_extent = TS_USE_SSE2 ? 16 : 15;
 
 struct TriangleSetup {
   int32_t a[4], b[4];  // a[3], b[3] unused (whole vectors for SSE2)

@@ -3,7 +3,7 @@
 // (BilinearChannel::setup_from_vertex0, Mod32RoundingDivider): v_ref taken from vertex 0's value
 // must be the same quotient, modulo 2^32, as the rounded division of 2^8 sum v E(xr, yr) by the
 // doubled area, and the gradients those of 2^8 sum v a and 2^8 sum v b, for every triangle the
-// scan path of such a target takes (pixel box below 12 x 12, values q8_8 below 2^16).
+// scan path of such a target takes (pixel box below 15 x 15, values q8_8 below 2^16).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -17,7 +17,7 @@ using namespace tristream::core::detail;
 namespace {
 
 constexpr int S = 4;                        // config::subpixel_bits of the default configuration
-constexpr std::int32_t spread = (12 + 1) << S;  // vertex coordinates of a box below 12 pixels differ by less
+constexpr std::int32_t spread = (15 + 1) << S;  // vertex coordinates of a box below 15 pixels differ by less
 
 std::int64_t floor_div64(std::int64_t n, std::int64_t d) {
   const std::int64_t q = n / d;
