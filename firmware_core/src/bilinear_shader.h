@@ -78,12 +78,15 @@ struct BilinearShader {
   int bpp;
   BilinearChannel ch[Channels];
   int32_t xr = 0, yr = 0;
-  // The edge values that begin reads on scan-path triangles: none with Mod32RoundingDivider (it
-  // works from vertex 0), e_ref32 with the short division without SSE2, else e_ref.
-  static constexpr unsigned scan_e_refs = TS_USE_SSE2                 ? scan_e_ref64
-                                          : bilinear_mod32_division   ? 0u
-                                          : bilinear_short_division   ? scan_e_ref32
-                                                                      : scan_e_ref64;
+  // Without a 128-bit type (Cortex-M) every triangle is set up from vertex 0's value
+  // (BilinearChannel::setup_from_vertex0): no edge value at the reference pixel and fewer 64-bit
+  // products. The edge values that begin reads: none then; e_ref32 for the short division of the
+  // scan path without SSE2; else e_ref.
+  static constexpr bool from_vertex0 = !TS_USE_INT128;
+  static constexpr unsigned e_refs = TS_USE_SSE2       ? scan_e_ref64 | span_e_ref
+                                     : from_vertex0    ? span_e_ref
+                                     : bilinear_short_division ? scan_e_ref32 | span_e_ref
+                                                               : scan_e_ref64 | span_e_ref;
 #if TS_USE_SSE2
   // RGB to a writer that takes rounded values: the channels' values (rounding offset included),
   // steps per column and per row in the writer's lanes.
@@ -108,6 +111,16 @@ struct BilinearShader {
         ch[c].setup(s.a, s.b, e_ref, by_area2, v3);
       }
     };
+    const auto setup_from_vertex0 = [&](const auto& by_area2) {
+      constexpr int S = config::subpixel_bits;
+      const auto edges = BilinearChannel::VertexZeroEdges::of<S>(s.a, s.b, s.xr * (1 << S) - tv.x[0],
+                                                                 s.yr * (1 << S) - tv.y[0]);
+      TS_UNROLL_FAST
+      for (int c = 0; c < Channels; ++c) {
+        const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
+        ch[c].setup_from_vertex0(edges, by_area2, v3);
+      }
+    };
     // The scan path's numerators are small enough for the division without correction, and its
     // edge values fit int32 (e_ref32, set without SSE2).
     if (bilinear_short_division && s.scan_path) {
@@ -117,17 +130,13 @@ struct BilinearShader {
         setup(ShortRoundingDivider(s.area2), s.e_ref32);
       }
     } else if (bilinear_mod32_division && s.scan_path) {
-      constexpr int S = config::subpixel_bits;
-      const Mod32RoundingDivider by_area2(int32_t(s.area2));
-      const auto edges = BilinearChannel::VertexZeroEdges::of<S>(s.a, s.b, s.xr * (1 << S) - tv.x[0],
-                                                                 s.yr * (1 << S) - tv.y[0]);
-      TS_UNROLL_FAST
-      for (int c = 0; c < Channels; ++c) {
-        const int32_t v3[3] = {vals[0][c], vals[1][c], vals[2][c]};
-        ch[c].setup_from_vertex0(edges, by_area2, v3);
-      }
+      setup_from_vertex0(Mod32RoundingDivider(int32_t(s.area2)));
     } else if (bilinear_preinv_division && PreinvRoundingDivider::fits(s.area2)) {
-      setup(PreinvRoundingDivider(s.area2), s.e_ref);
+      if constexpr (from_vertex0) {
+        setup_from_vertex0(PreinvRoundingDivider(s.area2));
+      } else {
+        setup(PreinvRoundingDivider(s.area2), s.e_ref);
+      }
     } else {
       setup(RoundingDivider(s.area2), s.e_ref);
     }

@@ -109,7 +109,7 @@ inline void small_edges(const TriangleView& tv, int32_t area2, int32_t left, int
 }
 
 // The setup of a scan-path triangle for the shader (on its first covered row in the clip).
-// Without SSE2 e_ref32 and e_ref are set only where the shader reads them (ScanERefsRead).
+// Without SSE2 e_ref32 and e_ref are set only where the shader reads them (ERefsRead).
 template <unsigned Reads = scan_e_ref32 | scan_e_ref64>
 inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSetup* s) {
   const int32_t xr = position_fx::from_raw(tv.x[0]).floor_to_int();
@@ -188,7 +188,7 @@ void scan_rows(const TriangleView& tv, const SmallEdges& e, int32_t left, uint32
     if (cs > ce) continue;
     if (!started) {
       TriangleSetup s;
-      small_setup<ScanERefsRead<Shader>::value>(tv, e, &s);
+      small_setup<ERefsRead<Shader>::value>(tv, e, &s);
       shader.begin(tv, s);
       started = true;
     }

@@ -31,12 +31,13 @@ struct Case {
 };
 
 // Compares setup_from_vertex0 with the exact roundings; false (and nothing checked) for a triangle
-// that is not counter-clockwise.
-bool check(const Case& t) {
+// that is not counter-clockwise. wide: any triangle of the coordinate budget, with the divider of
+// 64-bit numerators the span path takes (PreinvRoundingDivider, RoundingDivider past 2^31).
+bool check(const Case& t, bool wide = false) {
   const std::int64_t area2 = std::int64_t(t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) -
                              std::int64_t(t.y[1] - t.y[0]) * (t.x[2] - t.x[0]);
   if (area2 <= 0) return false;
-  REQUIRE(2 * area2 <= std::int64_t(Mod32RoundingDivider::max_divisor));
+  if (!wide) REQUIRE(2 * area2 <= std::int64_t(Mod32RoundingDivider::max_divisor));
   const std::int32_t xr = t.x[0] >> S, yr = t.y[0] >> S;  // floor: coordinates are nonnegative
   std::int32_t a[3], b[3];
   std::int64_t e_ref[3];
@@ -48,8 +49,14 @@ bool check(const Case& t) {
     e_ref[k] = std::int64_t(-dy) * ((xr << S) - t.x[k]) + std::int64_t(dx) * ((yr << S) - t.y[k]);
   }
   BilinearChannel ch;
-  ch.setup_from_vertex0(BilinearChannel::VertexZeroEdges::of<S>(a, b, (xr << S) - t.x[0], (yr << S) - t.y[0]),
-                        Mod32RoundingDivider(std::int32_t(area2)), t.v);
+  const auto edges = BilinearChannel::VertexZeroEdges::of<S>(a, b, (xr << S) - t.x[0], (yr << S) - t.y[0]);
+  if (!wide) {
+    ch.setup_from_vertex0(edges, Mod32RoundingDivider(std::int32_t(area2)), t.v);
+  } else if (PreinvRoundingDivider::fits(area2)) {
+    ch.setup_from_vertex0(edges, PreinvRoundingDivider(area2), t.v);
+  } else {
+    ch.setup_from_vertex0(edges, RoundingDivider(area2), t.v);
+  }
   // E_k / area2 weighs vertex k + 2.
   std::int64_t nx = 0, ny = 0, nv = 0;
   for (int k = 0; k < 3; ++k) {
@@ -89,6 +96,34 @@ TEST_CASE("setup_from_vertex0 equals the rounded divisions of the edge values at
       }
     }
     CHECK(checked > 190000);
+  }
+  SECTION("any triangle of the coordinate budget, with the span path's dividers") {
+    constexpr std::int32_t budget = 4096 << S;  // drawing positions below max_dimension 2^S
+    for (int i = 0; i < 200000; ++i) {
+      Case t;
+      const std::int32_t reach = std::int32_t(1) << (1 + rng() % 16);  // slivers to the whole budget
+      const std::int32_t bx = std::int32_t(rng() % std::uint32_t(budget - reach + 1));
+      const std::int32_t by = std::int32_t(rng() % std::uint32_t(budget - reach + 1));
+      for (int k = 0; k < 3; ++k) {
+        t.x[k] = bx + std::int32_t(rng() % std::uint32_t(reach));
+        t.y[k] = by + std::int32_t(rng() % std::uint32_t(reach));
+        t.v[k] = (rng() & 7) ? std::int32_t(rng() % 65536) : std::int32_t((rng() & 1) * 65535);
+      }
+      if (!check(t, true)) {
+        std::swap(t.x[1], t.x[2]);
+        std::swap(t.y[1], t.y[2]);
+        checked += check(t, true);
+      } else {
+        ++checked;
+      }
+    }
+    CHECK(checked > 150000);
+    // The largest triangles (doubled areas past 2^31: RoundingDivider).
+    for (int mask = 0; mask < 8; ++mask) {
+      const std::int32_t v[2] = {0, 65535};
+      Case t{{0, budget - 1, 0}, {0, 0, budget - 1}, {v[mask & 1], v[(mask >> 1) & 1], v[(mask >> 2) & 1]}};
+      REQUIRE(check(t, true));
+    }
   }
   SECTION("the extremes: vertices at the corners of the spread, values 0 and 65535, slivers") {
     const std::int32_t ends[] = {0, 1, spread / 2, spread - 2, spread - 1};

@@ -66,6 +66,18 @@ struct BilinearChannel {
     dvdy = by_area2.small(u * e.b0 + w * e.b1);
     v_ref = (uint32_t(values[0]) << 8) + by_area2.small(u * e.p + w * e.q);
   }
+  // The same for any triangle, with a divider of int64 numerators (PreinvRoundingDivider,
+  // RoundingDivider): |a|, |b| < 2^20 (detail/edge.h), so |p|, |q| < 2^21 and every product fits
+  // int64; the roundings are those of setup (2^8 v_0 is a whole quotient).
+  template <typename Divider>
+  __attribute__((always_inline)) void setup_from_vertex0(const VertexZeroEdges& e, const Divider& by_area2,
+                                                         const int32_t* values) {
+    constexpr int shift = q16_16::frac_bits - q8_8::frac_bits;
+    const int64_t u = values[2] - values[1], w = values[0] - values[1];
+    dvdx = uint32_t(by_area2((u * e.a0 + w * e.a1) * (int64_t(1) << shift)));
+    dvdy = uint32_t(by_area2((u * e.b0 + w * e.b1) * (int64_t(1) << shift)));
+    v_ref = (uint32_t(values[0]) << shift) + uint32_t(by_area2((u * e.p + w * e.q) * (int64_t(1) << shift)));
+  }
   // q16_16 value at (x, y), modulo 2^32 (exact when the pixel is covered).
   uint32_t at(int32_t x, int32_t y, int32_t xr, int32_t yr) const {
     return v_ref + dvdx * uint32_t(x - xr) + dvdy * uint32_t(y - yr);
