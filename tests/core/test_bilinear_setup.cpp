@@ -73,6 +73,14 @@ bool check(const Case& t, bool wide = false) {
   return true;
 }
 
+// check in the given vertex order, or else with vertices 1 and 2 swapped; 1 if either was checked.
+int check_either_order(Case t, bool wide = false) {
+  if (check(t, wide)) return 1;
+  std::swap(t.x[1], t.x[2]);
+  std::swap(t.y[1], t.y[2]);
+  return check(t, wide) ? 1 : 0;
+}
+
 }  // namespace
 
 TEST_CASE("setup_from_vertex0 equals the rounded divisions of the edge values at the reference pixel") {
@@ -87,13 +95,7 @@ TEST_CASE("setup_from_vertex0 equals the rounded divisions of the edge values at
         t.y[k] = by + std::int32_t(rng() % spread);
         t.v[k] = std::int32_t(rng() % 65536);
       }
-      if (!check(t)) {
-        std::swap(t.x[1], t.x[2]);
-        std::swap(t.y[1], t.y[2]);
-        checked += check(t);
-      } else {
-        ++checked;
-      }
+      checked += check_either_order(t);
     }
     CHECK(checked > 190000);
   }
@@ -109,13 +111,7 @@ TEST_CASE("setup_from_vertex0 equals the rounded divisions of the edge values at
         t.y[k] = by + std::int32_t(rng() % std::uint32_t(reach));
         t.v[k] = (rng() & 7) ? std::int32_t(rng() % 65536) : std::int32_t((rng() & 1) * 65535);
       }
-      if (!check(t, true)) {
-        std::swap(t.x[1], t.x[2]);
-        std::swap(t.y[1], t.y[2]);
-        checked += check(t, true);
-      } else {
-        ++checked;
-      }
+      checked += check_either_order(t, true);
     }
     CHECK(checked > 150000);
     // The largest triangles (doubled areas past 2^31: RoundingDivider).
@@ -137,13 +133,7 @@ TEST_CASE("setup_from_vertex0 equals the rounded divisions of the edge values at
                 Case t{{offset, offset + x1, offset + x2},
                        {offset, offset + y1, offset + y2},
                        {values[mask & 1], values[(mask >> 1) & 1], values[(mask >> 2) & 1]}};
-                if (!check(t)) {
-                  std::swap(t.x[1], t.x[2]);
-                  std::swap(t.y[1], t.y[2]);
-                  checked += check(t);
-                } else {
-                  ++checked;
-                }
+                checked += check_either_order(t);
               }
     CHECK(checked > 1000);
   }
