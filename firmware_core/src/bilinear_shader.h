@@ -78,10 +78,11 @@ struct BilinearShader {
   int bpp;
   BilinearChannel ch[Channels];
   int32_t xr = 0, yr = 0;
-  // Without a 128-bit type (Cortex-M) every triangle is set up from vertex 0's value
-  // (BilinearChannel::setup_from_vertex0): no edge value at the reference pixel and fewer 64-bit
-  // products. The edge values that begin reads: none then; e_ref32 for the short division of the
-  // scan path without SSE2; else e_ref.
+  // Without a 128-bit type (Cortex-M) triangles are set up from vertex 0's value
+  // (BilinearChannel::setup_from_vertex0: no edge value at the reference pixel and fewer 64-bit
+  // products), but for those of RoundingDivider (doubled areas of 2^31 or more). The edge values
+  // that begin reads: then only the span path's e_ref, for those; e_ref32 for the short division
+  // of the scan path without SSE2; else e_ref.
   static constexpr bool from_vertex0 = !TS_USE_INT128;
   static constexpr unsigned e_refs = TS_USE_SSE2       ? scan_e_ref64 | span_e_ref
                                      : from_vertex0    ? span_e_ref
