@@ -80,14 +80,14 @@ struct BilinearShader {
   int32_t xr = 0, yr = 0;
   // Without a 128-bit type (Cortex-M) triangles are set up from vertex 0's value
   // (BilinearChannel::setup_from_vertex0: no edge value at the reference pixel and fewer 64-bit
-  // products), but for those of RoundingDivider (doubled areas of 2^31 or more). The edge values
-  // that begin reads: then only the span path's e_ref, for those; e_ref32 for the short division
-  // of the scan path without SSE2; else e_ref.
+  // products), but for those of RoundingDivider (doubled areas of 2^31 or more, which read the
+  // span path's e_ref). The scan path's edge values that begin reads: none then; e_ref32 for the
+  // short division without SSE2; else e_ref.
   static constexpr bool from_vertex0 = !TS_USE_INT128;
-  static constexpr unsigned e_refs = TS_USE_SSE2       ? scan_e_ref64 | span_e_ref
-                                     : from_vertex0    ? span_e_ref
-                                     : bilinear_short_division ? scan_e_ref32 | span_e_ref
-                                                               : scan_e_ref64 | span_e_ref;
+  static constexpr unsigned e_refs = TS_USE_SSE2                 ? scan_e_ref64
+                                     : from_vertex0              ? 0u
+                                     : bilinear_short_division   ? scan_e_ref32
+                                                                 : scan_e_ref64;
 #if TS_USE_SSE2
   // RGB to a writer that takes rounded values: the channels' values (rounding offset included),
   // steps per column and per row in the writer's lanes.

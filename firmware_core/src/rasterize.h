@@ -25,9 +25,7 @@ struct Corner {
   bool owned;
 };
 
-// The setup of a span-path triangle for the shader, from its edges; e_ref only for a shader that
-// reads it (ERefsRead), or with SSE2.
-template <unsigned Reads = span_e_ref>
+// The setup of a span-path triangle for the shader, from its edges.
 inline void edge_setup(const TriangleView& tv, const Edge* e, int64_t area2, TriangleSetup* s) {
   s->xr = position_fx::from_raw(tv.x[0]).floor_to_int();
   s->yr = position_fx::from_raw(tv.y[0]).floor_to_int();
@@ -35,7 +33,7 @@ inline void edge_setup(const TriangleView& tv, const Edge* e, int64_t area2, Tri
   for (int k = 0; k < 3; ++k) {
     s->a[k] = int32_t(e[k].a);
     s->b[k] = int32_t(e[k].b);
-    if (TS_USE_SSE2 || (Reads & span_e_ref)) s->e_ref[k] = e[k].exact_at(s->xr, s->yr);
+    s->e_ref[k] = e[k].exact_at(s->xr, s->yr);
   }
   s->area2 = area2;
   s->scan_path = false;
@@ -130,7 +128,7 @@ bool rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
     if (cs > ce) continue;
     if (!started) {
       TriangleSetup s;
-      edge_setup<ERefsRead<Shader>::value>(tv, edges, area2, &s);
+      edge_setup(tv, edges, area2, &s);
       shader.begin(tv, s);
       started = true;
     }

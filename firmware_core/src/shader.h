@@ -48,14 +48,14 @@ struct TriangleSetup {
   bool scan_path;  // a triangle of the scan path (small: see SmallEdges)
 };
 
-// Which edge values at the reference pixel a shader's begin reads: e_ref32 and e_ref of scan-path
-// triangles, e_ref of span-path ones; all unless the shader declares `static constexpr unsigned
-// e_refs` (a mask of these). Without SSE2 the rasterizer then sets only those (none: begin works
-// from the vertices).
-constexpr unsigned scan_e_ref32 = 1, scan_e_ref64 = 2, span_e_ref = 4;
+// Which edge values at the reference pixel a shader's begin reads on scan-path triangles: e_ref32
+// and e_ref unless the shader declares `static constexpr unsigned e_refs` (a mask of these).
+// Without SSE2 the scan path then sets only those (none: begin works from the vertices).
+// Span-path triangles always get e_ref.
+constexpr unsigned scan_e_ref32 = 1, scan_e_ref64 = 2;
 template <typename Shader, typename = void>
 struct ERefsRead {
-  static constexpr unsigned value = scan_e_ref32 | scan_e_ref64 | span_e_ref;
+  static constexpr unsigned value = scan_e_ref32 | scan_e_ref64;
 };
 template <typename Shader>
 struct ERefsRead<Shader, decltype(void(Shader::e_refs))> {
