@@ -165,6 +165,7 @@ void M4Emulator::on_block(std::uint32_t address, std::uint32_t size) {
     fail("a translation block of unknown size at " + std::to_string(address));
     return;
   }
+  if (stack_chain_) watch_stack(address);
   const Block& b = block_at(address, size);
   if (per_instruction_) {
     finish_block();
@@ -249,6 +250,35 @@ void M4Emulator::on_divide(std::uint32_t address) {
   if (!excluded) run_.function_cycles[function_of(address)] += extra;
 }
 
+// Whether the halfwords before return_address (Thumb bit clear) are a BL, or a BLX of a register.
+bool M4Emulator::follows_call(std::uint32_t return_address) {
+  if (return_address < flash_base + 4 || return_address - flash_base >= flash_size) return false;
+  std::uint16_t h[2];
+  if (uc_mem_read(uc_, return_address - 4, h, sizeof h) != UC_ERR_OK) return false;
+  const bool bl = (h[0] & 0xF800u) == 0xF000u && (h[1] & 0xD000u) == 0xD000u;
+  const bool blx = (h[1] & 0xFF87u) == 0x4780u;
+  return bl || blx;
+}
+
+// A block starting below the lowest SP so far: the chain of calls then live, from the words
+// between SP and the top of the stack.
+void M4Emulator::watch_stack(std::uint32_t address) {
+  std::uint32_t sp = 0;
+  uc_reg_read(uc_, UC_ARM_REG_SP, &sp);
+  if (sp >= lowest_sp_ || sp >= stack_top_) return;
+  lowest_sp_ = sp;
+  std::vector<std::uint32_t> words((stack_top_ - sp) / 4);
+  if (uc_mem_read(uc_, sp, words.data(), words.size() * 4) != UC_ERR_OK) return;
+  auto& chain = run_.stack_chain;
+  chain.clear();
+  chain.push_back({stack_top_ - sp, function_of(address)});
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const std::uint32_t w = words[i];
+    if ((w & 1u) && follows_call(w & ~1u))
+      chain.push_back({stack_top_ - (sp + 4 * std::uint32_t(i)), function_of(w & ~1u)});
+  }
+}
+
 RunCounts M4Emulator::call(std::uint32_t function, std::uint32_t stack_top, const std::vector<std::uint32_t>& args) {
   if (args.size() > 4) throw std::runtime_error("call: at most 4 register arguments");
   run_ = RunCounts{};
@@ -263,6 +293,7 @@ RunCounts M4Emulator::call(std::uint32_t function, std::uint32_t stack_top, cons
     check(uc_reg_write(uc_, UC_ARM_REG_R0 + int(i), &v), "write r0..r3");
   }
   std::uint32_t sp = stack_top, lr = halt_ | 1u;
+  stack_top_ = lowest_sp_ = stack_top;
   check(uc_reg_write(uc_, UC_ARM_REG_SP, &sp), "write SP");
   check(uc_reg_write(uc_, UC_ARM_REG_LR, &lr), "write LR");
   const uc_err e = uc_emu_start(uc_, function | 1u, halt_, 0, 0);

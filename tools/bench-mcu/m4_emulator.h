@@ -40,6 +40,15 @@ struct RunCounts {
   // flash, by (address - flash_base) / 2 (see M4Emulator::block_cost for its size and static cost;
   // branch refills and division extras are in the totals only).
   std::vector<std::uint64_t> block_runs;
+  // With set_stack_chain(true): at the lowest SP a block started with, the function running and
+  // the functions of the return addresses then on the stack (words that follow a BL or BLX in the
+  // code; a stale word left in a frame's unused slot passes too), deepest first, each with its
+  // distance below the SP of the call.
+  struct Frame {
+    std::uint32_t depth;      // bytes below the SP the call started with
+    std::uint32_t function;   // index into functions()
+  };
+  std::vector<Frame> stack_chain;
 };
 
 class M4Emulator {
@@ -65,6 +74,8 @@ class M4Emulator {
   const std::vector<ElfFunction>& functions() const { return functions_; }
   // Whether call() fills RunCounts::block_runs (block counting only).
   void set_address_profile(bool on) { address_profile_ = on; }
+  // Whether call() fills RunCounts::stack_chain (reads SP at every block: slower).
+  void set_stack_chain(bool on) { stack_chain_ = on; }
   // Size in bytes and static cycles of the last block decoded at `address` (0, 0 for none).
   void block_cost(std::uint32_t address, std::uint32_t* size, std::uint32_t* cycles) const;
 
@@ -84,6 +95,8 @@ class M4Emulator {
   void resolve_pending(std::uint32_t next_address);
   void skip_to(std::uint32_t address);
   void finish_block();
+  void watch_stack(std::uint32_t address);
+  bool follows_call(std::uint32_t return_address);
   void count_insn(const DecodedInsn& insn);
   std::uint32_t function_of(std::uint32_t address) const;
 
@@ -100,6 +113,8 @@ class M4Emulator {
   std::vector<DivideSite> divides_;
   RunCounts run_;
   std::string error_;
+  bool stack_chain_ = false;
+  std::uint32_t stack_top_ = 0, lowest_sp_ = 0;
   // Pending taken-branch decision: the last block (or instruction) was a conditional branch.
   bool pending_ = false;
   std::uint32_t pending_fallthrough_ = 0;

@@ -265,7 +265,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
         const std::vector<std::string>& opts, const std::vector<std::string>& dithers,
         const std::vector<std::string>& outputs, const std::vector<std::string>& tiling_names,
         const std::vector<std::string>& blob_kinds, bool check_counts,
-        bool check_stack, int profile, const std::string& address_profile) {
+        bool check_stack, int profile, const std::string& address_profile, bool stack_chain) {
   std::string address_lines;  // --profile-addresses: "configuration address cycles" per block
   std::vector<Tiling> tilings;
   for (const std::string& t : tiling_names) tilings.push_back(parse_tiling(t));
@@ -287,6 +287,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
     p.elf = read_elf(elf_dir + "/bench_" + key + ".elf");
     p.emu = std::make_unique<M4Emulator>(p.elf);
     p.emu->set_address_profile(!address_profile.empty());
+    p.emu->set_stack_chain(stack_chain);
     if (check_counts) p.checker = std::make_unique<M4Emulator>(p.elf, true);
     p.core = read_size(elf_dir + "/ts_core_" + key + ".size");
     p.full = read_size(elf_dir + "/ts_core_" + opt + "_full.size");
@@ -402,6 +403,20 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
                                  {"cycles_share", round2(100.0 * double(f[i].first) / double(c.cycles))}});
                 j["profile_percent"] = top;
               }
+              if (stack_chain) {
+                // The calls live at the high-water mark, deepest first: the function running, then
+                // those whose return addresses were on the stack (M4Emulator: a stale word in a
+                // frame's unused slot can look like one too), each with the depth below render's
+                // SP where its frame ended (the running one) or its return address was.
+                const std::uint32_t top = prog.elf.symbol("__stack_top").address;
+                const std::uint32_t before = top - o.result.sp_before_render;
+                json chain = json::array();
+                for (const RunCounts::Frame& f : o.counts.stack_chain)
+                  if (f.depth > before)
+                    chain.push_back({{"function", demangled(prog.emu->functions()[f.function].name)},
+                                     {"stack_bytes", f.depth - before}});
+                j["stack_chain"] = chain;
+              }
               if (!address_profile.empty()) {
                 const std::string name = mesh_name + (is_compressed ? " compressed " : " ") + out_name + " " + t.name +
                                          " " + method + " " + opt + (p.dither ? " dither" : " plain");
@@ -495,6 +510,7 @@ int main(int argc, char** argv) {
   bool check_counts = false, check_stack = false;
   int profile = 0;
   std::string address_profile;
+  bool stack_chain = false;
   run_cmd->add_option("--elf-dir", elf_dir, "Build directory of tools/bench-mcu/m4 (build-m4.sh)")->required();
   run_cmd->add_option("--meshes", meshes, "kodim23, scene4k, grid40k")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--methods", methods, "bilinear, zienkiewicz")->delimiter(',')->capture_default_str();
@@ -515,12 +531,14 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--profile-addresses", address_profile,
                       "Write every block run (configuration, start address, bytes, runs, static cycles; tab-separated) to "
                       "this file, for addr2line on a build with -g");
+  run_cmd->add_flag("--stack-chain", stack_chain,
+                    "Add the calls live at the stack's high-water mark to each line (reads SP at every block: slower)");
   CLI::App* cal_cmd = app.add_subcommand("calibrate", "Count the calibration loops and compare with their table");
   std::string cal_elf;
   cal_cmd->add_option("elf", cal_elf, "calibrate.elf")->required();
   return run_tool("bench_mcu", app, argc, argv, [&]() -> int {
     if (*cal_cmd) return calibrate(cal_elf);
     return run(elf_dir, meshes, methods, opts, dithers, outputs, tilings, blob_kinds, check_counts, check_stack, profile,
-               address_profile);
+               address_profile, stack_chain);
   });
 }
