@@ -99,11 +99,25 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
   }
 }
 
+// fill_background out of line on Cortex-M (no SSE2) where zienkiewicz is compiled in: its
+// registers then are not saved in render_tile's frame, under the zienkiewicz tile function (-48
+// bytes of the deepest Cortex-M4 stack). Inlined otherwise (out of line it cost bilinear up to 2 %
+// of the modelled cycles, and x86-64 has no stack to save).
+template <PixelFormat F>
+__attribute__((noinline)) void fill_background_apart(uint8_t* base, int32_t stride, const Rect& rect,
+                                                     const RenderParams& p, bool grey) {
+  fill_background<F>(base, stride, rect, p, grey);
+}
+
 template <PixelFormat F>
 void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, ActiveSet* sets, const Rect& rect,
                  bool cull_columns, uint8_t* base, int32_t stride, int16_t* scratch) {
   const bool grey = blob.space == ColorSpace::grey;
-  fill_background<F>(base, stride, rect, p, grey);
+  if constexpr ((config::methods & 2) != 0 && !TS_USE_SSE2) {
+    fill_background_apart<F>(base, stride, rect, p, grey);
+  } else {
+    fill_background<F>(base, stride, rect, p, grey);
+  }
   constexpr int bpp = bytes_per_pixel(F);
   // Only the colour spaces and layering compiled in (plan_frame rejects the others).
   constexpr uint32_t spaces = config::color_spaces;

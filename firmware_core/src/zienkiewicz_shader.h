@@ -63,6 +63,15 @@ __attribute__((always_inline)) inline uint16_t load565_bytes(const uint8_t* p) {
 #endif
 }
 
+// ZienkiewiczTriangle::begin's parts: out of line where the 32-bit forms are used (Cortex-M, where
+// each then has its own frame on top of the tile function's, not their sum: see begin), inlined
+// elsewhere (x86-64: begin's code as one function, as before the split).
+#if TS_USE_INT128
+#define TS_ZIENKIEWICZ_BEGIN_PART inline __attribute__((always_inline))
+#else
+#define TS_ZIENKIEWICZ_BEGIN_PART __attribute__((noinline))
+#endif
+
 // The writer-independent part of ZienkiewiczShader: a triangle's stepper and coefficients, and
 // their set-up (begin), so that the writers of one channel count share one copy of begin in the
 // code (-2.7 KB of Cortex-M4 flash at -O2, -0.3 KB at -Os).
@@ -76,7 +85,16 @@ struct ZienkiewiczTriangle {
   int fd_state = 0;  // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
   bool narrow = false;  // every channel fits ZienkiewiczChannel::eval_narrow (zienkiewicz_narrow_forms)
 
+  // The set-up of a triangle in parts: the stepper (begin_steps), the coefficients (begin_channels)
+  // and, on Cortex-M, the 64-bit expansion of the rare channels beyond the 32-bit budget
+  // (begin_wide) and forward differencing (begin_rows). There each part is out of line, one called
+  // after another (the last two as tail calls): the deepest stack below draw_with is one part's
+  // frame, not the sum of begin's, the stepper's and setup_wide's.
   void begin(const TriangleView& tv, const TriangleSetup& s) {
+    begin_steps(s);
+    begin_channels(tv, s.area2);
+  }
+  TS_ZIENKIEWICZ_BEGIN_PART void begin_steps(const TriangleSetup& s) {
     const int64_t a2 = s.area2;
     // Where a 64 x 64 product is several instructions (Cortex-M) the division by a 32-bit
     // reciprocal, as the bilinear setup: one 32 x 32 -> 64 product a quotient against a four-multiply
@@ -86,28 +104,103 @@ struct ZienkiewiczTriangle {
     } else {
       steps.setup(s.a, s.b, s.e_ref, RoundingDivider(a2), s.xr, s.yr);
     }
+  }
+
+  // The edge vectors of tv (domain space) and its vertices' values and gradients of the first
+  // channel of this shader, in the blob.
+  struct Inputs {
     int32_t dx[3], dy[3];
     const uint8_t* values[3];
     const uint8_t* gradients[3];
+  };
+  __attribute__((always_inline)) void inputs(const TriangleView& tv, Inputs* in) const {
     for (int k = 0; k < 3; ++k) {
-      const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
-      const uint8_t* pn = layer->positions + 4 * size_t(tv.v[k == 2 ? 0 : k + 1]);
-      dx[k] = int32_t(load_u16(pn)) - int32_t(load_u16(pk));
-      dy[k] = int32_t(load_u16(pn + 2)) - int32_t(load_u16(pk + 2));
+      edge(tv, k, &in->dx[k], &in->dy[k]);
       const size_t first = size_t(tv.v[k]) * per_vertex + first_channel;
-      values[k] = layer->values + 2 * first;
-      gradients[k] = layer->gradients + 8 * first;
+      in->values[k] = layer->values + 2 * first;
+      in->gradients[k] = layer->gradients + 8 * first;
     }
-    fd_state = a2 >= zienkiewicz_fd_min_area2 ? 0 : -1;
-    // Each channel's values and gradients read from the blob where its setup uses them (no
-    // staging arrays).
+  }
+  // Edge k of tv (from vertex k to the next) in domain space.
+  __attribute__((always_inline)) void edge(const TriangleView& tv, int k, int32_t* dx, int32_t* dy) const {
+    const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
+    const uint8_t* pn = layer->positions + 4 * size_t(tv.v[k == 2 ? 0 : k + 1]);
+    *dx = int32_t(load_u16(pn)) - int32_t(load_u16(pk));
+    *dy = int32_t(load_u16(pn + 2)) - int32_t(load_u16(pk + 2));
+  }
+
+  // Each channel's coefficients, values and gradients read from the blob where its setup uses
+  // them (no staging arrays); with the 32-bit forms only the 32-bit expansion here (setup_narrow),
+  // the channels it does not fit to begin_wide.
+  TS_ZIENKIEWICZ_BEGIN_PART void begin_channels(const TriangleView& tv, int64_t area2) {
+    Inputs in;
+    inputs(tv, &in);
+    fd_state = area2 >= zienkiewicz_fd_min_area2 ? 0 : -1;
+    if constexpr (zienkiewicz_narrow_forms) {
+      uint32_t wide = 0;
+      for (int c = 0; c < Channels; ++c)
+        if (!ch[c].setup_narrow(in.dx, in.dy, VertexValues{in.values, 2 * c}, VertexGradients{in.gradients, 8 * c}))
+          wide |= 1u << c;
+      narrow = true;
+      if (wide) {
+        begin_wide(tv, wide);
+      } else {
+        begin_rows();
+      }
+    } else {
+      bool fits = true;
+      for (int c = 0; c < Channels; ++c)
+        fits &= ch[c].setup(in.dx, in.dy, VertexValues{in.values, 2 * c}, VertexGradients{in.gradients, 8 * c});
+      narrow = fits;
+    }
+  }
+  // Forward differencing set up (fd_state 1, or -1 outside the bit budget).
+  __attribute__((always_inline)) bool set_up_rows() {
+    fd_state = 1;
+    for (int c = 0; c < Channels; ++c)
+      if (!ch[c].setup_rows(int32_t(steps.dadx), int32_t(steps.dbdx))) fd_state = -1;
+    return fd_state > 0;
+  }
+  // begin's last part with the 32-bit forms: forward differencing set up for every triangle large
+  // enough, not on its first long row (span then never calls the set-up, whose frames were below
+  // span's: 56 + 136 bytes against 32 + 136 here; the modelled Cortex-M4 cycles went down too,
+  // span having one test less).
+  __attribute__((noinline)) void begin_rows() {
+    if (fd_state == 0) set_up_rows();
+  }
+  // The channels of the mask `wide` by the 64-bit expansion; narrow when their coefficients fit
+  // the 32-bit evaluation all the same. A channel a call (wide_channel): only one channel's
+  // 64-bit temporaries on the stack.
+  __attribute__((noinline)) void begin_wide(const TriangleView& tv, uint32_t wide) {
     bool fits = true;
-    for (int c = 0; c < Channels; ++c) {
-      const VertexValues v3{values, 2 * c};
-      const VertexGradients g6{gradients, 8 * c};
-      fits &= ch[c].setup(dx, dy, v3, g6);
-    }
+    for (int c = 0; c < Channels; ++c)
+      if (wide >> c & 1) fits &= wide_channel(tv, c);
     narrow = fits;
+    begin_rows();
+  }
+  // Channel c's values and gradients read through the triangle's vertex indices (no arrays of
+  // addresses in the frame of this rare path).
+  struct IndexedValues {
+    const ZienkiewiczTriangle* t;
+    const TriangleView* tv;
+    int c;
+    int32_t operator[](int k) const { return load_u16(t->layer->values + 2 * t->first_value(*tv, k, c)); }
+  };
+  struct IndexedGradients {
+    const ZienkiewiczTriangle* t;
+    const TriangleView* tv;
+    int c;
+    int32_t operator[](int j) const {
+      return load_i32(t->layer->gradients + 8 * t->first_value(*tv, j >> 1, c) + 4 * (j & 1));
+    }
+  };
+  size_t first_value(const TriangleView& tv, int k, int c) const {
+    return size_t(tv.v[k]) * per_vertex + first_channel + c;
+  }
+  __attribute__((noinline)) bool wide_channel(const TriangleView& tv, int c) {
+    int32_t dx[3], dy[3];
+    for (int k = 0; k < 3; ++k) edge(tv, k, &dx[k], &dy[k]);
+    return ch[c].template expand_wide<true>(dx, dy, IndexedValues{this, &tv, c}, IndexedGradients{this, &tv, c});
   }
 };
 
@@ -126,14 +219,10 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   using ZienkiewiczTriangle<Channels>::fd_state;
   using ZienkiewiczTriangle<Channels>::narrow;
 
-  // Forward differencing set up on the first row that uses it; false for a small triangle or one
-  // outside the bit budget (then every row is evaluated per pixel).
-  __attribute__((noinline)) bool rows_ready_slow() {
-    fd_state = 1;
-    for (int c = 0; c < Channels; ++c)
-      if (!ch[c].setup_rows(int32_t(steps.dadx), int32_t(steps.dbdx))) fd_state = -1;
-    return fd_state > 0;
-  }
+  // Forward differencing set up on the first row that uses it (where begin did not: see
+  // begin_rows); false for a small triangle or one outside the bit budget (then every row is
+  // evaluated per pixel).
+  __attribute__((noinline)) bool rows_ready_slow() { return this->set_up_rows(); }
   // The first row of at least zienkiewicz_fd_min_length pixels: forward differencing set up
   // (rows_ready_slow), then the row drawn by span again (by forward differencing or, out of the
   // budget, per pixel), a tail call. Out of span: the set-up's frames are not below span's
@@ -156,8 +245,9 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     }
 #else
     if (xe - xs + 1 >= zienkiewicz_fd_min_length && fd_state >= 0) {
-      // Tail calls: this frame is gone before the forward differencing's and the set-up's.
-      if (fd_state > 0) {
+      // Tail calls: this frame is gone before the forward differencing's and the set-up's. With
+      // the 32-bit forms begin set forward differencing up already (begin_rows).
+      if (zienkiewicz_narrow_forms || fd_state > 0) {
         forward_differenced(y, xs, x0, x1);
       } else {
         first_long_row(y, xs, xe, x0, x1);

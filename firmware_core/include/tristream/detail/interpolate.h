@@ -205,39 +205,60 @@ struct ZienkiewiczChannel {
   };
 #endif
 
+  // The edge derivative u = edge . gradient of a vertex in q24_8 (rounded): edge vectors in
+  // position_fx, gradients q19_12 (gradients[2 k], gradients[2 k + 1]: gx, gy of vertex k).
+  // Inlined (-Os would call it, and the readers, once per product).
+  template <typename Gradients>
+  __attribute__((always_inline)) static int64_t derivative(const int32_t* edge_dx, const int32_t* edge_dy,
+                                                           const Gradients& gradients, int edge, int vertex) {
+    constexpr int shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
+    static_assert(shift >= 1, "edge derivative needs at least one bit to round away");
+    const int64_t d =
+        int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
+    return (d + (int64_t(1) << (shift - 1))) >> shift;
+  }
+
   // dx, dy: domain-space edge vectors AB, BC, CA in position_fx; values q8_8; gradients q19_12
   // (gx, gy per vertex; values[k] and gradients[j] for k < 3, j < 6: arrays, or readers of the
   // blob's bytes). Returns fits_narrow() with the 32-bit forms (Narrow), else false.
   template <bool Narrow = zienkiewicz_narrow_forms, typename Values, typename Gradients>
   TS_ZIENKIEWICZ_SETUP_INLINE bool setup(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values, const Gradients& gradients) {
-    constexpr int shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
-    static_assert(shift >= 1, "edge derivative needs at least one bit to round away");
-    // Inlined (-Os would call it, and the readers, once per product).
-    auto dot = [&](int edge, int vertex) __attribute__((always_inline)) {
-      const int64_t d =
-          int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
-      return (d + (int64_t(1) << (shift - 1))) >> shift;
-    };
-    const int64_t u2 = dot(0, 0), u3 = dot(0, 1);  // AB . gA, AB . gB
-    const int64_t u5 = dot(1, 1), u6 = dot(1, 2);  // BC . gB, BC . gC
-    const int64_t u8 = dot(2, 2), u9 = dot(2, 0);  // CA . gC, CA . gA
     if constexpr (Narrow) {
-      // |u| <= max_narrow_derivative as one unsigned comparison (as fits_rows).
-      auto small = [](int64_t u) {
-        return uint32_t(uint64_t(u) + uint64_t(max_narrow_derivative) <= uint64_t(2 * max_narrow_derivative));
-      };
-      if (small(u2) & small(u3) & small(u5) & small(u6) & small(u8) & small(u9)) {
-        expand<int32_t>(values[0], int32_t(u2), int32_t(u3), values[1], int32_t(u5), int32_t(u6), values[2],
-                        int32_t(u8), int32_t(u9));
-        return true;
-      }
+      if (setup_narrow(edge_dx, edge_dy, values, gradients)) return true;
     }
 #if TS_USE_INT128
+    auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
+      return derivative(edge_dx, edge_dy, gradients, edge, vertex);
+    };
+    const int64_t u2 = u(0, 0), u3 = u(0, 1);  // AB . gA, AB . gB
+    const int64_t u5 = u(1, 1), u6 = u(1, 2);  // BC . gB, BC . gC
+    const int64_t u8 = u(2, 2), u9 = u(2, 0);  // CA . gC, CA . gA
     expand<int64_t>(values[0], u2, u3, values[1], u5, u6, values[2], u8, u9);
     return Narrow && fits_narrow();
 #else
     return setup_wide<Narrow>(edge_dx, edge_dy, values, gradients);
 #endif
+  }
+  // setup's 32-bit expansion alone: true with the coefficients set when every edge derivative is
+  // within max_narrow_derivative (the coefficients are then narrow), else false with nothing set
+  // (setup_wide then).
+  template <typename Values, typename Gradients>
+  TS_ZIENKIEWICZ_SETUP_INLINE bool setup_narrow(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
+                                                const Gradients& gradients) {
+    auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
+      return derivative(edge_dx, edge_dy, gradients, edge, vertex);
+    };
+    const int64_t u2 = u(0, 0), u3 = u(0, 1);  // AB . gA, AB . gB
+    const int64_t u5 = u(1, 1), u6 = u(1, 2);  // BC . gB, BC . gC
+    const int64_t u8 = u(2, 2), u9 = u(2, 0);  // CA . gC, CA . gA
+    // |u| <= max_narrow_derivative as one unsigned comparison (as fits_rows).
+    auto small = [](int64_t v) {
+      return uint32_t(uint64_t(v) + uint64_t(max_narrow_derivative) <= uint64_t(2 * max_narrow_derivative));
+    };
+    if (!(small(u2) & small(u3) & small(u5) & small(u6) & small(u8) & small(u9))) return false;
+    expand<int32_t>(values[0], int32_t(u2), int32_t(u3), values[1], int32_t(u5), int32_t(u6), values[2], int32_t(u8),
+                    int32_t(u9));
+    return true;
   }
   // setup's 64-bit expansion out of line where 64-bit arithmetic is several instructions
   // (Cortex-M, where setup takes it only for large derivatives), the derivatives formed again
@@ -246,14 +267,16 @@ struct ZienkiewiczChannel {
   template <bool Narrow, typename Values, typename Gradients>
   __attribute__((noinline)) bool setup_wide(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
                                             const Gradients& gradients) {
-    constexpr int shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
-    auto dot = [&](int edge, int vertex) __attribute__((always_inline)) {
-      const int64_t d =
-          int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
-      return (d + (int64_t(1) << (shift - 1))) >> shift;
+    return expand_wide<Narrow>(edge_dx, edge_dy, values, gradients);
+  }
+  // setup_wide's body, for a caller that has it inline.
+  template <bool Narrow, typename Values, typename Gradients>
+  __attribute__((always_inline)) bool expand_wide(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
+                                                  const Gradients& gradients) {
+    auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
+      return derivative(edge_dx, edge_dy, gradients, edge, vertex);
     };
-    expand<int64_t>(values[0], dot(0, 0), dot(0, 1), values[1], dot(1, 1), dot(1, 2), values[2], dot(2, 2),
-                    dot(2, 0));
+    expand<int64_t>(values[0], u(0, 0), u(0, 1), values[1], u(1, 1), u(1, 2), values[2], u(2, 2), u(2, 0));
     return Narrow && fits_narrow();
   }
   // Edge derivatives (and values, below 2^16) up to this in magnitude give coefficients within
@@ -551,17 +574,22 @@ struct BarycentricStepper {
   // The same from edge coefficients a[k], b[k] and exact edge values e_ref[k] at (x_ref, y_ref);
   // by_area2: RoundingDivider, or PreinvRoundingDivider where the doubled area fits it (the same
   // quotients).
+  // Inlined (each divider's is called from one place, ZienkiewiczTriangle::begin_steps; out of
+  // line on Cortex-M its frame was on top of that caller's, in the deepest stack).
   template <typename Divider>
-  void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref, const Divider& by_area2, int32_t x_ref,
-             int32_t y_ref) {
+  __attribute__((always_inline)) void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref,
+                                            const Divider& by_area2, int32_t x_ref, int32_t y_ref) {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
     xr = x_ref;
     yr = y_ref;
 #if defined(__OPTIMIZE_SIZE__)
     // A loop: one copy of the divider's quotient (inlined; written out it costs 0.5 KB of flash).
-    const int64_t n[6] = {a[1], a[2], b[1], b[2], e_ref[1], e_ref[2]};
+    // Each numerator picked in the loop, not staged in an array (48 bytes of the deepest frame).
     uint32_t q[6];
-    for (int i = 0; i < 6; ++i) q[i] = uint32_t(by_area2(n[i] * one));
+    for (int i = 0; i < 6; ++i) {
+      const int64_t n = i < 2 ? a[i + 1] : (i < 4 ? b[i - 1] : e_ref[i - 3]);
+      q[i] = uint32_t(by_area2(n * one));
+    }
     dadx = q[0], dbdx = q[1], dady = q[2], dbdy = q[3], a_ref = q[4], b_ref = q[5];
 #else
     dadx = uint32_t(by_area2(a[1] * one));
