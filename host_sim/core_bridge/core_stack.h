@@ -13,8 +13,8 @@
 
 namespace tristream {
 
-inline constexpr std::size_t core_stack_bytes_bilinear = 1408;     // measured 1,360 (-O2)
-inline constexpr std::size_t core_stack_bytes_zienkiewicz = 1792;  // measured 1,728 (-O2)
+inline constexpr std::size_t core_stack_bytes_bilinear = 1152;     // measured 1,112 (-O2), 1,132 (-Os)
+inline constexpr std::size_t core_stack_bytes_zienkiewicz = 1536;  // measured 1,532 (-O2), 1,536 (-Os)
 
 constexpr std::size_t core_stack_bytes(core::Method method) {
   return method == core::Method::zienkiewicz ? core_stack_bytes_zienkiewicz : core_stack_bytes_bilinear;
@@ -22,8 +22,8 @@ constexpr std::size_t core_stack_bytes(core::Method method) {
 
 // The same for a compressed blob rendered from its streams (render.h): the decoder's frames
 // below the band advance, besides the tile path's. Measured by make bench-mcu (--blobs compressed).
-inline constexpr std::size_t core_compressed_stack_bytes_bilinear = 1600;     // measured 1,576 (-O2)
-inline constexpr std::size_t core_compressed_stack_bytes_zienkiewicz = 2048;  // measured 1,952 (-O2)
+inline constexpr std::size_t core_compressed_stack_bytes_bilinear = 1280;     // measured 1,248 (-O2), 1,276 (-Os)
+inline constexpr std::size_t core_compressed_stack_bytes_zienkiewicz = 1728;  // measured 1,668 (-O2), 1,680 (-Os)
 
 constexpr std::size_t core_compressed_stack_bytes(core::Method method) {
   return method == core::Method::zienkiewicz ? core_compressed_stack_bytes_zienkiewicz
