@@ -74,8 +74,8 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
   const int32_t period = dithered ? 4 : 1;
   // Rows back to back (the stride is a row) without dithering, on Cortex-M: the whole tile as one
   // row, a few long copies instead of one a row (32x32 tiles -0.3 % to -0.9 % modelled cycles).
-  // Not on x86-64, where copies beyond 2 KiB take glibc's `rep movsb` (counted per byte by the
-  // instruction counts of make bench).
+  // Not on x86-64, where copies beyond 2 KiB take glibc's `rep movsb` (counted per byte by
+  // tests/core/callgrind_core.sh: full frames +1 % to +8 % instructions).
   const bool one_row = !TS_USE_SSE2 && period == 1 && size_t(stride) == size_t(rect.width()) * bpp;
   const size_t row_bytes = size_t(rect.width()) * bpp * (one_row ? size_t(rect.height()) : 1u);
   const int32_t y_end = one_row ? rect.y0 + 1 : rect.y1;
@@ -108,7 +108,7 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
 // fill_background out of line on Cortex-M (no SSE2) where zienkiewicz is compiled in: its
 // registers then are not saved in render_tile's frame, under the zienkiewicz tile function (-48
 // bytes of the deepest Cortex-M4 stack). Inlined otherwise (out of line it cost bilinear up to 2 %
-// of the modelled cycles, and x86-64 has no stack to save).
+// of the modelled cycles; on x86-64 the stack is no constraint).
 template <PixelFormat F>
 __attribute__((noinline)) void fill_background_apart(uint8_t* base, int32_t stride, const Rect& rect,
                                                      const RenderParams& p, bool grey) {

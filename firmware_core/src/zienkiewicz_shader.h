@@ -225,8 +225,8 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   __attribute__((noinline)) bool rows_ready_slow() { return this->set_up_rows(); }
   // The first row of at least zienkiewicz_fd_min_length pixels: forward differencing set up
   // (rows_ready_slow), then the row drawn by span again (by forward differencing or, out of the
-  // budget, per pixel), a tail call. Out of span: the set-up's frames are not below span's
-  // (-64 bytes of the Cortex-M4 stack below span).
+  // budget, per pixel), a tail call. Out of span: the set-up's frames are not below span's. Used
+  // without SSE2 where the 64-bit forms are (Cortex-M sets forward differencing up in begin_rows).
   __attribute__((noinline)) void first_long_row(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
     rows_ready_slow();
     span(y, xs, xe, x0, x1);

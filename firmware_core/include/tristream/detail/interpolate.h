@@ -227,14 +227,7 @@ struct ZienkiewiczChannel {
       if (setup_narrow(edge_dx, edge_dy, values, gradients)) return true;
     }
 #if TS_USE_INT128
-    auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
-      return derivative(edge_dx, edge_dy, gradients, edge, vertex);
-    };
-    const int64_t u2 = u(0, 0), u3 = u(0, 1);  // AB . gA, AB . gB
-    const int64_t u5 = u(1, 1), u6 = u(1, 2);  // BC . gB, BC . gC
-    const int64_t u8 = u(2, 2), u9 = u(2, 0);  // CA . gC, CA . gA
-    expand<int64_t>(values[0], u2, u3, values[1], u5, u6, values[2], u8, u9);
-    return Narrow && fits_narrow();
+    return expand_wide<Narrow>(edge_dx, edge_dy, values, gradients);
 #else
     return setup_wide<Narrow>(edge_dx, edge_dy, values, gradients);
 #endif
