@@ -127,11 +127,20 @@ struct CubicSteps {
     d2 = second;
   }
   // k steps at once: v(k) = v + k d1 + C(k,2) d2 + C(k,3) d3, and so on; exactly what k calls of
-  // step() give (integer identities, modulo 2^64).
+  // step() give (integer identities, modulo 2^64). For k < max_skip (a restart chunk: k <
+  // zienkiewicz_fd_restart), so that the binomials are formed in 32 bits (below 2^29; on Cortex-M
+  // a 64-bit product and division by 3 each would be several instructions).
+  // Out of line where 64-bit products are several instructions (Cortex-M: rows cut by a tile's
+  // left edge call it; inlined, its temporaries took 8 bytes of the deepest frame).
+  static constexpr uint32_t max_skip = 1024;
+#if !TS_USE_INT128
+  __attribute__((noinline))
+#endif
   void skip(uint32_t k) {
-    const uint64_t k1 = k, k2 = k1 * (k1 - 1) / 2, k3 = k2 * (k1 - 2) / 3;
-    v += k1 * d1 + k2 * d2 + k3 * d3;
-    d1 += k1 * d2 + k2 * d3;
+    const uint32_t k2 = k * (k - 1) / 2, k3 = k2 * (k - 2) / 3;  // k (k - 1) (k - 2) / 2 is a multiple of 3
+    const uint64_t k1 = k;
+    v += k1 * d1 + uint64_t(k2) * d2 + uint64_t(k3) * d3;
+    d1 += k1 * d2 + uint64_t(k2) * d3;
     d2 += k1 * d3;
   }
 };
@@ -520,6 +529,7 @@ inline void zienkiewicz_row_chunks(const ZienkiewiczChannel* ch, uint32_t a, uin
                                    int32_t n0, int32_t n1, uint64_t bias, Chunk&& chunk) {
   constexpr int32_t R = zienkiewicz_fd_restart;
   static_assert(R > 0 && (R & (R - 1)) == 0, "restart interval is a power of two");
+  static_assert(uint32_t(R) <= CubicSteps::max_skip, "a chunk's skip within CubicSteps::skip's range");
   int32_t n = n0;
   while (n <= n1) {
     const int32_t start = n & ~(R - 1);
