@@ -339,8 +339,11 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
     constexpr int32_t half = 1 << (q24_8::frac_bits - 1);
     const uint32_t da = steps.dadx, db = steps.dbdx;
+    // The lifted coefficients formed once for the row, not once a pixel (0 to -2.5 % modelled
+    // Cortex-M4 cycles at -O2, -3.5 % dithered).
+    const ZienkiewiczChannel::Lifted lifted[3] = {ch[0].lifted(), ch[1].lifted(), ch[2].lifted()};
     auto one = [&](int c, int32_t a15, int32_t b15) __attribute__((always_inline)) {
-      const int32_t v = (ch[c].eval_narrow(a15, b15) + half) >> q24_8::frac_bits;
+      const int32_t v = (ch[c].eval_narrow(a15, b15, lifted[c]) + half) >> q24_8::frac_bits;
       return uint32_t(v < 0 ? 0 : (v > 255 ? 255 : v));
     };
     for (uint8_t* const end = p + 2 * count; p != end; p += 2, a += da, b += db) {

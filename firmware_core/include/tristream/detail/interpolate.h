@@ -379,17 +379,31 @@ struct ZienkiewiczChannel {
              out(p30));
   }
   __attribute__((always_inline)) int32_t eval_narrow(int32_t a, int32_t b) const {  // -Os: not a call a pixel
+    return eval_narrow(a, b, lifted());
+  }
+  // The four coefficients that enter eval_narrow's products first (p03, p21, p30, p12), times 4
+  // (by unsigned shifts: the same bits), as eval_narrow takes them: a loop over pixels forms them
+  // once, not once a pixel.
+  struct Lifted {
+    int32_t p03, p21, p30, p12;
+  };
+  __attribute__((always_inline)) Lifted lifted() const {
+    auto four = [](int64_t p) { return int32_t(uint32_t(int32_t(p)) << 2); };
+    return {four(p03), four(p21), four(p30), four(p12)};
+  }
+  __attribute__((always_inline)) int32_t eval_narrow(int32_t a, int32_t b, const Lifted& l) const {
     constexpr int s = q17_15::frac_bits;
     static_assert(32 - s == 17, "floor(w t / 2^15) as the high word of (w 2^15) (4 t)");
     // w 2^15 and 4 t by unsigned shifts (the same bits; no signed overflow).
     const int32_t wa = int32_t(uint32_t(a) << s), wb = int32_t(uint32_t(b) << s);
-    // Each Horner step p + floor(w t / 2^15) as one multiply-accumulate of the high word.
-    auto m = [](int32_t w, int32_t t, int32_t p) __attribute__((always_inline)) {
-      return mla_high(w, int32_t(uint32_t(t) << 2), p);
+    // Each Horner step p + floor(w t / 2^15) as one multiply-accumulate of the high word (m), or
+    // of 4 t given (m4: the lifted coefficients).
+    auto m4 = [](int32_t w, int32_t t4, int32_t p) __attribute__((always_inline)) { return mla_high(w, t4, p); };
+    auto m = [&](int32_t w, int32_t t, int32_t p) __attribute__((always_inline)) {
+      return m4(w, int32_t(uint32_t(t) << 2), p);
     };
-    const int32_t pb = m(wb, m(wb, m(wb, int32_t(p03), int32_t(p02)), int32_t(p01)), int32_t(p00));
-    const int32_t pa = m(wa, m(wa, int32_t(p30), m(wb, int32_t(p21), int32_t(p20))),
-                         m(wb, m(wb, int32_t(p12), int32_t(p11)), int32_t(p10)));
+    const int32_t pb = m(wb, m(wb, m4(wb, l.p03, int32_t(p02)), int32_t(p01)), int32_t(p00));
+    const int32_t pa = m(wa, m4(wa, l.p30, m4(wb, l.p21, int32_t(p20))), m(wb, m4(wb, l.p12, int32_t(p11)), int32_t(p10)));
     return m(wa, pa, pb);
   }
   // p + the high word of the 64-bit product w t (modulo 2^32; eval_narrow's sums fit). On a
