@@ -365,6 +365,10 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     const uint64_t third = s->d3;
     uint8_t* const end = p + 2 * count;
     [[maybe_unused]] const uint32_t k = in_register(C == 1 ? dither_k63 : dither_k31);
+#if !defined(__OPTIMIZE_SIZE__)
+    [[maybe_unused]] const uint16_t* green = rgb565_table<F>.v + 256;
+    if constexpr (C == 1 && !Dither) __asm__("" : "+r"(green));
+#endif
     for (; p != end; p += 2) {
       const int32_t h = int32_t(uint32_t(value >> 32));
       const uint32_t v = uint32_t(h < 0 ? 0 : (h > 255 ? 255 : h));
@@ -381,7 +385,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
         if constexpr (C == 0) {
           field = rt[v];
         } else if constexpr (C == 1) {
-          field = rt[256 + v];
+          field = green[v];  // the G half's address in a register (no addition a pixel)
         } else {
           field = uint16_t(F == PixelFormat::rgb565_be ? uint32_t(rt[v]) << 5 : uint32_t(rt[v]) >> 11);
         }
