@@ -304,8 +304,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
           // The channels written out, not a loop (as a loop the values go through the stack):
           // -2 % to -3 % modelled Cortex-M4 cycles at -O2, -4 % to -7 % at -Os.
           auto one = [&](int c) __attribute__((always_inline)) {
-            const int32_t v = (ch[c].eval_narrow(a15, b15) + half) >> q24_8::frac_bits;
-            r[c] = v < 0 ? 0 : (v > 255 ? 255 : v);
+            r[c] = int32_t(rounded(ch[c].eval_narrow(a15, b15)));
           };
           static_assert(Channels == 1 || Channels == 3, "grey or three channels");
           one(0);
@@ -331,20 +330,25 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       b += steps.dbdx;
     }
   }
+  // A q24_8 value from eval_narrow rounded and clamped to [0, 255] (as to_u8 of the int32-clamped
+  // value, what put_rounded takes).
+  __attribute__((always_inline)) static uint32_t rounded(int32_t q8) {
+    constexpr int32_t half = 1 << (q24_8::frac_bits - 1);
+    const int32_t v = (q8 + half) >> q24_8::frac_bits;
+    return uint32_t(v < 0 ? 0 : (v > 255 ? 255 : v));
+  }
   // per_pixel's RGB565 loop by the 32-bit forms: `count` pixels from p (2 bytes each) from the
   // weights a, b, each channel rounded and clamped as put_rounded takes it, then store(pixel, r, g, b).
   template <typename Store>
   __attribute__((always_inline)) void rgb565_pixels(uint8_t* p, int32_t count, uint32_t a, uint32_t b,
                                                     const Store& store) const {
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
-    constexpr int32_t half = 1 << (q24_8::frac_bits - 1);
     const uint32_t da = steps.dadx, db = steps.dbdx;
     // The lifted coefficients formed once for the row, not once a pixel (0 to -2.5 % modelled
     // Cortex-M4 cycles at -O2, -3.5 % dithered).
     const ZienkiewiczChannel::Lifted lifted[3] = {ch[0].lifted(), ch[1].lifted(), ch[2].lifted()};
     auto one = [&](int c, int32_t a15, int32_t b15) __attribute__((always_inline)) {
-      const int32_t v = (ch[c].eval_narrow(a15, b15, lifted[c]) + half) >> q24_8::frac_bits;
-      return uint32_t(v < 0 ? 0 : (v > 255 ? 255 : v));
+      return rounded(ch[c].eval_narrow(a15, b15, lifted[c]));
     };
     for (uint8_t* const end = p + 2 * count; p != end; p += 2, a += da, b += db) {
       const int32_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;

@@ -129,9 +129,9 @@ struct CubicSteps {
   // k steps at once: v(k) = v + k d1 + C(k,2) d2 + C(k,3) d3, and so on; exactly what k calls of
   // step() give (integer identities, modulo 2^64). For k < max_skip (a restart chunk: k <
   // zienkiewicz_fd_restart), so that the binomials are formed in 32 bits (below 2^29; on Cortex-M
-  // a 64-bit product and division by 3 each would be several instructions).
-  // Out of line where 64-bit products are several instructions (Cortex-M: rows cut by a tile's
-  // left edge call it; inlined, its temporaries took 8 bytes of the deepest frame).
+  // a 64-bit product and division by 3 each would be several instructions). Out of line there
+  // (rows cut by a tile's left edge call it; inlined, its temporaries took 8 bytes of the deepest
+  // frame).
   static constexpr uint32_t max_skip = 1024;
 #if !TS_USE_INT128
   __attribute__((noinline))
@@ -403,7 +403,8 @@ struct ZienkiewiczChannel {
       return m4(w, int32_t(uint32_t(t) << 2), p);
     };
     const int32_t pb = m(wb, m(wb, m4(wb, l.p03, int32_t(p02)), int32_t(p01)), int32_t(p00));
-    const int32_t pa = m(wa, m4(wa, l.p30, m4(wb, l.p21, int32_t(p20))), m(wb, m4(wb, l.p12, int32_t(p11)), int32_t(p10)));
+    const int32_t pa =
+        m(wa, m4(wa, l.p30, m4(wb, l.p21, int32_t(p20))), m(wb, m4(wb, l.p12, int32_t(p11)), int32_t(p10)));
     return m(wa, pa, pb);
   }
   // p + the high word of the 64-bit product w t (modulo 2^32; eval_narrow's sums fit). On a
