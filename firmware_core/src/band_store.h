@@ -4,7 +4,8 @@
 // band, as a small v1-shaped layer in the caller's workspace (positions, values, gradients,
 // triangles with u16 indices, and the active-set bitmap), which the active set, the tile cull and
 // the tile renderer read as they read a v1 blob's layer. Each live vertex is stored once: the
-// triangles' indices are store slots, found from the decoder's stream indices by a map.
+// triangles' indices are store slots, which the decoder's tags (LayerDecoder::keep_tags) hold for
+// the vertices still in its ring, so a corner's slot is found without a map.
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
@@ -20,30 +21,30 @@
 namespace tristream::core::detail {
 namespace {
 
-// Slots are u16 and 0xFFFF marks a free map entry, so a store holds at most 65,535 vertices: a
-// layer's vertex count (blob_max_vertices), so the indices never bound a band. Triangles are
-// bounded only by the workspace (the active set counts them in u32).
+// Slots are u16 and 0xFFFF (compressed_tag_none) marks no slot, so a store holds at most 65,535
+// vertices: a layer's vertex count (blob_max_vertices), so the indices never bound a band.
+// Triangles are bounded only by the workspace (the active set counts them in u32).
 constexpr uint32_t band_store_max_vertices = 65535;
 static_assert(band_store_max_vertices >= blob_max_vertices, "every vertex of a layer fits the u16 slots");
-constexpr uint16_t band_store_free = 0xFFFF;
+constexpr uint16_t band_store_free = compressed_tag_none;
 
 constexpr size_t align4_size(size_t n) { return (n + 3) / 4 * 4; }
 
-// Bytes of `slots` vertex slots: 4 of position, 2 per value, 8 per gradient pair, 2 of stream
-// index (the map's key), each array 4-aligned.
+// Bytes of `slots` vertex slots: 4 of position, 2 per value, 8 per gradient pair, each array
+// 4-aligned.
 inline size_t band_vertex_bytes(uint32_t slots, uint32_t values_per_vertex, bool gradients) {
   const size_t n = slots;
-  return 4 * n + align4_size(2 * n * values_per_vertex) + (gradients ? 8 * n * values_per_vertex : 0) +
-         align4_size(2 * n);
+  return 4 * n + align4_size(2 * n * values_per_vertex) + (gradients ? 8 * n * values_per_vertex : 0);
 }
 
 // Bytes a store needs to hold V vertices and C triangles: the vertex slots, 8 per triangle, and
-// the larger of the map (2 V u16 entries, used while the band's triangles are taken) and the
-// active-set bitmap (C bits in 32-bit words, used while the band is drawn), which share memory.
+// the larger of the renumbering table (a u16 per vertex, used when a band starts; 4-aligned, as
+// the store's bytes are) and the active-set bitmap (C bits in 32-bit words, used while the band is
+// drawn), which share memory.
 inline size_t band_store_bytes(uint32_t vertices, uint32_t triangles, uint32_t values_per_vertex, bool gradients) {
-  const size_t map = 4 * size_t(vertices), bits = bitmap_bytes(triangles);
+  const size_t renumber = align4_size(2 * size_t(vertices)), bits = bitmap_bytes(triangles);
   return band_vertex_bytes(vertices, values_per_vertex, gradients) + size_t(blob_triangle_size) * triangles +
-         (map > bits ? map : bits);
+         (renumber > bits ? renumber : bits);
 }
 
 // Last pixel row of a triangle with raw y coordinates y0, y1, y2 (a triangle's end, all that
@@ -63,12 +64,15 @@ inline void decoded_row_extent(const Mapping& map, const DecodedTriangle& t, int
 }
 
 // The store in `bytes` of workspace: [vertex slots for `slots` vertices: positions, values,
-// gradients, keys][triangles, growing]...[map: 2 slots u16 entries at the end]. Its need is
+// gradients][triangles, growing]...[renumbering table: slots u16 at the end]. Its need is
 // band_store_bytes(vertices, triangles) at every moment, whatever the slack: slots grow when a further
 // vertex finds none free (the arrays after the positions and the triangles move up), and shrink to
 // the vertex count when the triangles or the bitmap would not fit otherwise, so a store of `bytes`
-// takes every band whose need is at most `bytes`. Invariant between calls: 4 slots bytes of map fit
-// after the triangles.
+// takes every band whose need is at most `bytes`. Invariant between calls: 2 slots bytes of table
+// fit after the triangles.
+// The decoder's tags (`tags`, tag_count of them) hold the slot of each vertex of its ring that is
+// in the store, else band_store_free: a corner's tag finds its slot, and a vertex out of the ring
+// is never a corner again.
 // Its fields are few (the render's stack holds three stores): the positions are at `base`, the
 // other sections' addresses follow from `slots`.
 struct BandStore {
@@ -78,12 +82,15 @@ struct BandStore {
   uint32_t slots = 0;          // vertex capacity of the current layout
   uint32_t vertices = 0;       // slots in use: [0, vertices)
   uint32_t added = 0;          // vertices added in the current band
-  uint16_t* keys = nullptr;    // stream index of each slot
-  uint16_t* entries = nullptr;  // 2 slots map entries: a slot, or band_store_free
+  uint16_t* tags = nullptr;    // the decoder's (keep_tags): a slot, or band_store_free
+  uint32_t tag_count = 0;
   uint8_t values_per_vertex = 1;
   bool has_gradients = false;
 
-  void init(uint8_t* at, size_t size, uint32_t per_vertex, bool with_gradients, BlobLayer* view) {
+  void init(uint8_t* at, size_t size, uint32_t per_vertex, bool with_gradients, BlobLayer* view,
+            uint16_t* decoder_tags, uint32_t decoder_tag_count) {
+    tags = decoder_tags;
+    tag_count = decoder_tag_count;
     base = at;
     bytes = size / 4 * 4;
     values_per_vertex = uint8_t(per_vertex);
@@ -98,8 +105,8 @@ struct BandStore {
   uint32_t count() const { return layer->triangle_count; }
 
   // Starts band [y0, ...]: drops the triangles whose last row is above y0 (keeping the others in
-  // order), then the vertices no kept triangle uses (renumbering the kept ones in order), and
-  // rebuilds the map with room for about as many added vertices as the band before added.
+  // order), then the vertices no kept triangle uses (renumbering the kept ones in order, in the
+  // triangles and the tags), with room for about as many added vertices as the band before added.
   void begin_band(const Mapping& map, int32_t y0) {
     drop_ended(map, y0);
     compact_vertices();
@@ -109,7 +116,7 @@ struct BandStore {
     relayout(want < fit ? want : fit);  // fit >= vertices: the invariant held for more triangles
   }
 
-  // Appends a triangle (its corners' stream indices looked up, unseen ones stored). Returns
+  // Appends a triangle (its corners' slots found by their tags, unseen ones stored). Returns
   // workspace_too_small when the band's need passes `bytes`.
   Status append(const DecodedTriangle& t) {
     uint16_t slot[3];
@@ -118,10 +125,10 @@ struct BandStore {
       if (s != Status::ok) return s;
     }
     const uint32_t n = count();
-    if (!fits(slots, n + 1, 4 * size_t(slots))) {
+    if (!fits(slots, n + 1, 2 * size_t(slots))) {
       if (slots == vertices) return Status::workspace_too_small;
       relayout(vertices);  // the slack of slots makes room
-      if (!fits(slots, n + 1, 4 * size_t(slots))) return Status::workspace_too_small;
+      if (!fits(slots, n + 1, 2 * size_t(slots))) return Status::workspace_too_small;
     }
     uint8_t* p = triangles() + size_t(blob_triangle_size) * n;
     for (int k = 0; k < 3; ++k) store16(p + 2 * k, slot[k]);
@@ -131,7 +138,7 @@ struct BandStore {
   }
 
   // Marks every triangle of the store live in the active-set bitmap, which follows the triangles
-  // (over the map, not needed again before the next band's begin_band). Null when it does not fit.
+  // (over the table, not needed again before the next band's begin_band). Null when it does not fit.
   uint32_t* mark_all_live() {
     const uint32_t n = count();
     if (!fits(slots, n, bitmap_bytes(n))) {
@@ -148,7 +155,9 @@ struct BandStore {
  private:
   uint8_t* values() const { return base + 4 * size_t(slots); }
   uint8_t* gradients() const { return values() + align4_size(2 * size_t(slots) * values_per_vertex); }
-  uint8_t* triangles() const { return reinterpret_cast<uint8_t*>(keys) + align4_size(2 * size_t(slots)); }
+  uint8_t* triangles() const {
+    return gradients() + (has_gradients ? 8 * size_t(slots) * values_per_vertex : 0);
+  }
 
   // Little-endian (the v1 layout); on a little-endian target one store each.
   static void store16(uint8_t* p, uint16_t v) {
@@ -185,23 +194,20 @@ struct BandStore {
   bool fits(uint32_t cap, uint32_t n, size_t tail) const {
     return band_vertex_bytes(cap, values_per_vertex, has_gradients) + size_t(blob_triangle_size) * n + tail <= bytes;
   }
-  // The most slots that fit with n triangles and their map.
+  // The most slots that fit with n triangles and their renumbering table.
   uint32_t most_slots(uint32_t n) const {
     const size_t t = size_t(blob_triangle_size) * n;
     if (t >= bytes) return 0;
-    const size_t per = 10 + 2 * size_t(values_per_vertex) + (has_gradients ? 8 * size_t(values_per_vertex) : 0);
+    const size_t per = 6 + 2 * size_t(values_per_vertex) + (has_gradients ? 8 * size_t(values_per_vertex) : 0);
     size_t c = (bytes - t) / per;  // an upper bound: the sections' rounding only adds
     if (c > band_store_max_vertices) c = band_store_max_vertices;
-    while (c > 0 && !fits(uint32_t(c), n, 4 * c)) --c;
+    while (c > 0 && !fits(uint32_t(c), n, 2 * c)) --c;
     return uint32_t(c);
   }
 
-  // Section addresses for `cap` slots (the map at the end of the store).
+  // Section addresses for `cap` slots.
   void place(uint32_t cap) {
-    const size_t n = cap;
     slots = cap;
-    keys = reinterpret_cast<uint16_t*>(gradients() + (has_gradients ? 8 * n * values_per_vertex : 0));
-    entries = reinterpret_cast<uint16_t*>(base + bytes - 4 * n);
     layer->positions = base;
     layer->values = values();
     if (has_gradients) layer->gradients = gradients();
@@ -209,67 +215,39 @@ struct BandStore {
     layer->vertex_count = cap;
   }
 
-  // Moves to a layout of `cap` >= vertices slots (which must fit with the triangles and the map)
-  // and rebuilds the map.
+  // Moves to a layout of `cap` >= vertices slots (which must fit with the triangles and the
+  // renumbering table).
   void relayout(uint32_t cap) {
     uint8_t* const old_values = values();
     uint8_t* const old_gradients = gradients();
-    uint8_t* const old_keys = reinterpret_cast<uint8_t*>(keys);
     uint8_t* const old_triangles = triangles();
     const size_t nv = vertices, nt = count();
-    const size_t value_bytes = 2 * nv * values_per_vertex, gradient_bytes = has_gradients ? 8 * nv * values_per_vertex : 0;
+    const size_t value_bytes = 2 * nv * values_per_vertex;
+    const size_t gradient_bytes = has_gradients ? 8 * nv * values_per_vertex : 0;
     place(cap);
     uint8_t* const to_values = values();
     uint8_t* const to_gradients = gradients();
     uint8_t* const to_triangles = triangles();
     // The sections after the positions all move the same way: the last first when they move up.
-    uint8_t* const to_keys = reinterpret_cast<uint8_t*>(keys);
     if (to_triangles > old_triangles) {
       move_words(to_triangles, old_triangles, size_t(blob_triangle_size) * nt);
-      move_words(to_keys, old_keys, 2 * nv);
       if (gradient_bytes) move_words(to_gradients, old_gradients, gradient_bytes);
       move_words(to_values, old_values, value_bytes);
     } else if (to_triangles < old_triangles) {
       move_words(to_values, old_values, value_bytes);
       if (gradient_bytes) move_words(to_gradients, old_gradients, gradient_bytes);
-      move_words(to_keys, old_keys, 2 * nv);
       move_words(to_triangles, old_triangles, size_t(blob_triangle_size) * nt);
     }
-    rebuild_map();
   }
 
-  // Map entries: 2 slots of them, open addressing with linear probing from a multiplicative hash
-  // of the stream index scaled to [0, 2 slots) (a multiply, no division); at most half full, so a
-  // probe ends.
-  uint32_t home(uint16_t key) const {
-    return uint32_t((uint64_t(uint32_t(key) * 0x9E3779B1u) * (2 * uint64_t(slots))) >> 32);
-  }
-  uint32_t free_entry(uint16_t key) const {
-    const uint32_t h_end = 2 * slots;
-    uint32_t h = home(key);
-    while (entries[h] != band_store_free)
-      if (++h == h_end) h = 0;
-    return h;
-  }
-  void rebuild_map() {
-    for (uint32_t h = 0; h < 2 * slots; ++h) entries[h] = band_store_free;
-    for (uint32_t s = 0; s < vertices; ++s) entries[free_entry(keys[s])] = uint16_t(s);
-  }
-
-  // The slot of corner k of t: found in the map, or a free slot (more slots if none is free).
+  // The slot of corner k of t: its tag, or a free slot (more slots if none is free), which the
+  // tag then holds.
   Status vertex_slot(const DecodedTriangle& t, int k, uint16_t* out) {
-    if (t.v[k] >= band_store_max_vertices) return Status::bad_index;  // never from a decoder (< vertex count)
-    const uint16_t key = uint16_t(t.v[k]);
-    if (slots) {
-      const uint32_t h_end = 2 * slots;
-      uint32_t h = home(key);
-      for (uint16_t e; (e = entries[h]) != band_store_free;) {
-        if (keys[e] == key) {
-          *out = e;
-          return Status::ok;
-        }
-        if (++h == h_end) h = 0;
-      }
+    uint16_t* const tag = t.tag[k];
+    if (!tag) return Status::bad_index;  // never from a decoder given tags
+    if (*tag < vertices) {
+      *out = *tag;
+      return Status::ok;
     }
     if (vertices == slots) {
       // Up to half of the slots that fit, so that the triangles keep room and a band near the
@@ -281,8 +259,7 @@ struct BandStore {
     }
     const uint32_t s = vertices++;
     ++added;
-    entries[free_entry(key)] = uint16_t(s);
-    keys[s] = key;
+    *tag = uint16_t(s);
     store16(base + 4 * size_t(s), t.x[k]);
     store16(base + 4 * size_t(s) + 2, t.y[k]);
     uint8_t* const v = values();
@@ -316,14 +293,15 @@ struct BandStore {
     layer->triangle_count = kept;
   }
 
-  // Keeps the vertices the triangles use, in slot order; the map's entries (2 slots >= vertices)
-  // serve as the slot renumbering table. The map is rebuilt after.
+  // Keeps the vertices the triangles use, in slot order, and renumbers them in the triangles and
+  // the decoder's tags (a dropped vertex's tag is band_store_free), by a table at the store's end
+  // (slots >= vertices entries).
   void compact_vertices() {
     const uint32_t n = count(), nv = vertices;
     uint8_t* const tri = triangles();
     uint8_t* const v = values();
     uint8_t* const g = gradients();
-    uint16_t* const renumber = entries;
+    uint16_t* const renumber = reinterpret_cast<uint16_t*>(base + bytes - 2 * size_t(slots));
     for (uint32_t s = 0; s < nv; ++s) renumber[s] = band_store_free;
     for (uint32_t i = 0; i < n; ++i) {
       const uint8_t* p = tri + size_t(blob_triangle_size) * i;
@@ -343,7 +321,6 @@ struct BandStore {
           memcpy(v + 6 * size_t(kept), v + 6 * size_t(s), 6);
           if (has_gradients) memcpy(g + 24 * size_t(kept), g + 24 * size_t(s), 24);
         }
-        keys[kept] = keys[s];
       }
       ++kept;
     }
@@ -351,6 +328,8 @@ struct BandStore {
       uint8_t* p = tri + size_t(blob_triangle_size) * i;
       for (int k = 0; k < 3; ++k) store16(p + 2 * k, renumber[load16(p + 2 * k)]);
     }
+    for (uint32_t i = 0; i < tag_count; ++i)
+      if (tags[i] < nv) tags[i] = renumber[tags[i]];  // (a tag at or past nv is none)
     vertices = kept;
   }
 };

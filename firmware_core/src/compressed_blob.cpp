@@ -124,10 +124,20 @@ uint32_t compressed_vertex_record_bytes(const CompressedBlob& blob) {
   return gradients_at(nv) + (blob.method == Method::zienkiewicz ? 8 * nv : 0);
 }
 
+uint32_t compressed_value_models(const CompressedBlob& blob) {
+  return uint32_t(blob.values_per_vertex) + (blob.method == Method::zienkiewicz ? 2 : 0);
+}
+
 size_t compressed_ring_bytes(const CompressedBlob& blob, int layer) {
   if (layer < 0 || layer >= blob.layer_count) return 0;
   const CompressedLayer& l = blob.layers[layer];
-  return (size_t(l.window) + l.pinned) * compressed_vertex_record_bytes(blob) + 4 * size_t(l.pinned);
+  return 1 + compressed_value_models(blob) * sizeof(detail::IntModel) +
+         (size_t(l.window) + l.pinned) * compressed_vertex_record_bytes(blob) + 4 * size_t(l.pinned);
+}
+
+size_t compressed_tag_bytes(const CompressedBlob& blob, int layer) {
+  if (layer < 0 || layer >= blob.layer_count) return 0;
+  return 2 * (size_t(blob.layers[layer].window) + blob.layers[layer].pinned);
 }
 
 // A failure after the decoder ran past the stream's end is its truncation.
@@ -150,10 +160,14 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   if (ring_bytes < compressed_ring_bytes(blob, layer)) return Status::workspace_too_small;
   blob_ = &blob;
   layer_ = &blob.layers[layer];
-  ring_ = static_cast<uint8_t*>(ring);
+  static_assert(alignof(detail::IntModel) <= 2, "one byte 2-aligns the value models");
+  uint8_t* models = static_cast<uint8_t*>(ring) + uintptr_t(ring) % 2;
+  value_models_ = reinterpret_cast<detail::IntModel*>(models);
+  ring_ = models + compressed_value_models(blob) * sizeof(detail::IntModel);
   pins_ = ring_ + size_t(layer_->window) * compressed_vertex_record_bytes(blob);
   for (uint32_t i = 0; i < layer_->pinned; ++i)
     store_u32(pins_ + size_t(layer_->pinned) * compressed_vertex_record_bytes(blob) + 4 * i, 0xFFFFFFFFu);
+  tags_ = nullptr;
   pin_slot_ = 0;
   next_pinned_ = 0xFFFFFFFFu;
   record_ = compressed_vertex_record_bytes(blob);
@@ -162,8 +176,7 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   detail::start(rc_, layer_->stream, layer_->stream + layer_->stream_bytes);
   detail::reset(m_.gap);
   m_.subpixel = m_.fraction = m_.flags_nonzero = detail::prob_half;
-  for (auto& v : m_.value) detail::reset(v);
-  for (auto& g : m_.gradient) detail::reset(g);
+  for (uint32_t i = 0; i < compressed_value_models(blob); ++i) detail::reset(value_models_[i]);
   detail::reset(&m_.top[0][0], 6 * 8);
   detail::reset(m_.top_far);
   detail::reset(&m_.anchor[0][0], 3 * 8);
@@ -189,14 +202,37 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   return Status::ok;
 }
 
-// The pinned record of a vertex not yet in the ring, or null.
-uint8_t* LayerDecoder::pinned_record(uint32_t index) const {
+void LayerDecoder::keep_tags(uint16_t* tags) {
+  tags_ = tags;
+  if (!tags || !layer_) return;
+  for (uint32_t i = 0; i < layer_->window + layer_->pinned; ++i) tags[i] = compressed_tag_none;
+}
+
+// The pinned slot of a vertex not yet in the ring, or 0xFFFFFFFF.
+uint32_t LayerDecoder::pinned_slot(uint32_t index) const {
   // next_pinned_ is the smallest index pending in a slot (decode_position takes it before it passes)
-  if (index < decoded_ || index < next_pinned_) return nullptr;
+  if (index < decoded_ || index < next_pinned_) return 0xFFFFFFFFu;
   const uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
   for (uint32_t i = 0; i < layer_->pinned; ++i)
-    if (load_u32(indices + 4 * i) == index) return pins_ + size_t(i) * record_;
-  return nullptr;
+    if (load_u32(indices + 4 * i) == index) return i;
+  return 0xFFFFFFFFu;
+}
+
+// The pinned record of a vertex not yet in the ring, or null.
+uint8_t* LayerDecoder::pinned_record(uint32_t index) const {
+  const uint32_t i = pinned_slot(index);
+  return i == 0xFFFFFFFFu ? nullptr : pins_ + size_t(i) * record_;
+}
+
+// The tag of a vertex in the ring or pinned (as record()), or null. Inlined: three a triangle.
+__attribute__((always_inline)) inline uint16_t* LayerDecoder::tag_of(uint32_t index) const {
+  if (index >= decoded_) {
+    const uint32_t i = pinned_slot(index);
+    return i == 0xFFFFFFFFu ? nullptr : tags_ + layer_->window + i;
+  }
+  const uint32_t back = decoded_ - index, window = layer_->window;
+  if (back > window) return nullptr;
+  return tags_ + (slot_ >= back ? slot_ - back : slot_ + window - back);
 }
 
 void LayerDecoder::find_next_pinned() {
@@ -276,10 +312,15 @@ Status LayerDecoder::decode_position() {
     if (st != Status::ok) return st;
   }
   if (decoded_ == next_pinned_) {
-    // Decoded ahead: the pinned record moves into the ring, without bits.
-    const uint8_t* pin = pinned_record(decoded_);
-    if (!pin) return fail(Status::bad_index);
+    // Decoded ahead: the pinned record (and its tag) moves into the ring, without bits.
+    const uint32_t pin_slot = pinned_slot(decoded_);
+    if (pin_slot == 0xFFFFFFFFu) return fail(Status::bad_index);
+    const uint8_t* pin = pins_ + size_t(pin_slot) * record_;
     for (uint32_t i = 0; i < record_; ++i) rec[i] = pin[i];
+    if (tags_) {
+      tags_[slot_] = tags_[layer_->window + pin_slot];
+      tags_[layer_->window + pin_slot] = compressed_tag_none;
+    }
     pixel_ = uint32_t(load_u16(rec + 2) >> S) * blob.width + uint32_t(load_u16(rec) >> S);
     enter_row(pixel_ / blob.width);
     ++decoded_;
@@ -306,6 +347,7 @@ Status LayerDecoder::decode_position() {
   known_byte(rec, blob.values_per_vertex) = 0;
   sides_byte(rec, blob.values_per_vertex) = 0;
   store_u32(rec + edges_at(blob.values_per_vertex), 0);  // no skips yet (fresh)
+  if (tags_) tags_[slot_] = compressed_tag_none;
   pixel_ = uint32_t(pixel);
   if (py != row_ || decoded_ == 0) enter_row(py);  // (its test inlined: most vertices stay in the row)
   ++decoded_;
@@ -347,7 +389,7 @@ Status LayerDecoder::decode_values_of(uint8_t* rec, uint32_t index, const uint8_
   for (int k = 0; k < nv; ++k) {
     const int c = rgb ? (k == 0 ? 1 : (k == 1 ? 0 : 2)) : k;
     int32_t r;
-    if (!decode_int32(coder, m_.value[k], value_bits, &r)) return fail(Status::value_out_of_range);
+    if (!decode_int32(coder, value_models_[k], value_bits, &r)) return fail(Status::value_out_of_range);
     const int32_t h = predicted[c] + r + (rgb && k > 0 ? shared : 0);
     if (h < 0 || h > 255) return fail(Status::value_out_of_range);
     if (rgb && k == 0) shared = r;
@@ -367,7 +409,7 @@ Status LayerDecoder::decode_values_of(uint8_t* rec, uint32_t index, const uint8_
     for (int c = 0; c < nv; ++c)
       for (int a = 0; a < 2; ++a) {
         int64_t r;
-        if (!decode_int(coder, m_.gradient[a], gradient_bits, &r)) return fail(Status::value_out_of_range);
+        if (!decode_int(coder, value_models_[nv + a], gradient_bits, &r)) return fail(Status::value_out_of_range);
         const int32_t g = int32_t(uint32_t(gradient_prediction(p0, p1, nv, c, a, last_gradients_[c][a])) + uint32_t(r));
         if (g > limit || g < -limit) return fail(Status::value_out_of_range);
         gradients[c][a] = g;
@@ -431,6 +473,7 @@ Status LayerDecoder::place(uint32_t index) {
   sides_byte(rec, blob.values_per_vertex) = 0;
   store_u32(rec + edges_at(blob.values_per_vertex), 0);  // no skips yet (fresh)
   store_u32(indices + 4 * pin_slot_, index);
+  if (tags_) tags_[layer_->window + pin_slot_] = compressed_tag_none;
   pin_slot_ = pin_slot_ + 1 == layer_->pinned ? 0 : pin_slot_ + 1;
   if (index < next_pinned_) next_pinned_ = index;
   return Status::ok;
@@ -448,10 +491,11 @@ LayerDecoder::Columns LayerDecoder::columns(const uint8_t* ra, const uint8_t* rs
 }
 
 // The third corner a Delaunay triangulation puts on side `side` (+1, -1) of the edge a->s: among
-// the other ends of the open edges of a and of s (vertices some triangle used), the one above a with the largest angle over a->s
-// (the smallest dot / cross of (a - q, s - q)), compared exactly in 64 bits on pixel coordinates
-// (differences below 2^12, so dot and cross below 2^25); ties keep the first. 0xFFFFFFFF when a or
-// s has no record or no candidate is on that side; its record in *record_out (null when none).
+// the other ends of the open edges of a and of s (vertices some triangle used), the one above a
+// with the largest angle over a->s (the smallest dot / cross of (a - q, s - q)), compared exactly
+// in 64 bits on pixel coordinates (differences below 2^12, so dot and cross below 2^25); ties keep
+// the first. 0xFFFFFFFF when a or s has no record or no candidate is on that side; its record in
+// *record_out (null when none).
 uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side, uint8_t** record_out) const {
   const int nv = blob_->values_per_vertex;
   const int S = config::subpixel_bits;
@@ -712,6 +756,7 @@ Status LayerDecoder::next(DecodedTriangle* out) {
     }
   }
   out->flags = flags;
+  for (int k = 0; k < 3; ++k) out->tag[k] = tags_ ? tag_of(out->v[k]) : nullptr;
   if (top < previous_row_) return fail(Status::unsorted);
   previous_row_ = top;
   previous_top_ = uint32_t(a);

@@ -20,7 +20,7 @@
 namespace tristream::core {
 namespace {
 
-// A layer's decoding state, in the workspace (its ring follows it).
+// A layer's decoding state, in the workspace (its ring and its decoder's tags follow it).
 // A trivial type, like LayerDecoder: 8-aligned workspace bytes are taken as one and its fields
 // set by render, with no construction.
 struct LayerStream {
@@ -36,7 +36,7 @@ static_assert(__is_trivial(LayerDecoder) && __is_trivial(LayerStream),
 constexpr size_t align8(size_t n) { return (n + 7) / 8 * 8; }
 
 size_t stream_bytes(const CompressedBlob& blob, int l) {
-  return align8(sizeof(LayerStream)) + align8(compressed_ring_bytes(blob, l));
+  return align8(sizeof(LayerStream)) + align8(compressed_ring_bytes(blob, l)) + align8(compressed_tag_bytes(blob, l));
 }
 
 // 8 - address mod 8 bytes (1 to 8) start every workspace: exact sizes for an 8-aligned one.
@@ -209,8 +209,8 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
   const int bpp = bytes_per_pixel(r.format);
   if (buffers.tile_bytes < size_t(r.tile_w) * r.tile_h * bpp) return Status::tile_buffer_too_small;
 
-  // Workspace: [1..8 bytes to 8-align][channel scratch][per layer: stream state, ring][band stores,
-  // one equal share per layer].
+  // Workspace: [1..8 bytes to 8-align][channel scratch][per layer: stream state, ring, tags][band
+  // stores, one equal share per layer].
   uint8_t* const ws = static_cast<uint8_t*>(buffers.workspace);
   if (!ws) return Status::workspace_too_small;
   const size_t scratch = detail::scratch_bytes(view, r, r.format);
@@ -221,6 +221,7 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
   const bool gradients = blob.method == Method::zienkiewicz;
   const size_t share = (buffers.workspace_bytes - fixed) / blob.layer_count / 4 * 4;
   LayerStream* streams[detail::max_layers] = {};
+  uint16_t* tags[detail::max_layers] = {};
   detail::BandStore stores[detail::max_layers];
   detail::ActiveSet sets[detail::max_layers];
   uint8_t* at = ws + pad_of(ws) + scratch;
@@ -230,12 +231,15 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
     const size_t ring_bytes = align8(compressed_ring_bytes(blob, l));
     s = streams[l]->decoder.begin(blob, l, ring, ring_bytes);
     if (s != Status::ok) return s;
+    tags[l] = reinterpret_cast<uint16_t*>(ring + ring_bytes);
+    streams[l]->decoder.keep_tags(tags[l]);
     streams[l]->remaining = blob.layers[l].triangle_count;
     streams[l]->has_held = false;
-    at = ring + ring_bytes;
+    at = ring + ring_bytes + align8(compressed_tag_bytes(blob, l));
   }
   for (int l = 0; l < blob.layer_count; ++l) {
-    stores[l].init(at + size_t(l) * share, share, blob.values_per_vertex, gradients, &view.layers[l]);
+    stores[l].init(at + size_t(l) * share, share, blob.values_per_vertex, gradients, &view.layers[l], tags[l],
+                   uint32_t(compressed_tag_bytes(blob, l) / 2));
     sets[l].layer = &view.layers[l];
   }
   const detail::TileRenderer draw = detail::tile_renderer(r.format);

@@ -250,10 +250,11 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   std::int32_t last_gradients[3][2] = {};
   const bool rgb = blob.space == core::ColorSpace::rgb && nv == 3;
   core::detail::StreamModels m;
+  core::detail::IntModel value_model[3], gradient_model[2];  // the decoder's value models
   reset(m.gap);
   m.subpixel = m.fraction = m.flags_nonzero = prob_half;
-  for (auto& x : m.value) reset(x);
-  for (auto& x : m.gradient) reset(x);
+  for (auto& x : value_model) reset(x);
+  for (auto& x : gradient_model) reset(x);
   reset(&m.top[0][0], 6 * 8);
   reset(m.top_far);
   reset(&m.anchor[0][0], 3 * 8);
@@ -290,7 +291,7 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
       std::int64_t r = std::int64_t(x.values[c] >> 8) - std::int64_t(predicted[c]);
       if (rgb && k == 0) shared = r;
       if (rgb && k > 0) r -= shared;
-      encode_int(e, m.value[k], value_bits, r);
+      encode_int(e, value_model[k], value_bits, r);
     }
     bool fraction = false;
     for (int c = 0; c < nv; ++c) fraction |= (x.values[c] & 0xFFu) != 0;
@@ -307,7 +308,7 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
             const std::int64_t g0 = in[order[p0]].gradients[c][a];
             predicted = p1 >= 0 ? std::int32_t((g0 + in[order[p1]].gradients[c][a]) >> 1) : std::int32_t(g0);
           }
-          encode_int(e, m.gradient[a], gradient_bits,
+          encode_int(e, gradient_model[a], gradient_bits,
                      std::int32_t(std::uint32_t(x.gradients[c][a]) - std::uint32_t(predicted)));
         }
     }

@@ -272,13 +272,13 @@ TEST_CASE("every damaged byte and every truncation of a compressed blob renders 
 namespace {
 
 // The store's need for V vertices and C triangles (render.h's formula): vertex slots (4 bytes of
-// position, 2 per value, 8 per gradient pair, 2 of stream index, each array 4-aligned), 8 bytes per
-// triangle, and the larger of the map (4 V) and the bitmap (4 ceil(C / 32)).
+// position, 2 per value, 8 per gradient pair, each array 4-aligned), 8 bytes per triangle, and the
+// larger of the renumbering table (align4(2 V)) and the bitmap (4 ceil(C / 32)).
 std::size_t store_formula(std::size_t v, std::size_t c, std::size_t per_vertex, bool gradients) {
   auto a4 = [](std::size_t n) { return (n + 3) / 4 * 4; };
-  const std::size_t map = 4 * v, bits = 4 * ((c + 31) / 32);
-  return 4 * v + a4(2 * v * per_vertex) + (gradients ? 8 * v * per_vertex : 0) + a4(2 * v) + 8 * c +
-         (map > bits ? map : bits);
+  const std::size_t renumber = a4(2 * v), bits = 4 * ((c + 31) / 32);
+  return 4 * v + a4(2 * v * per_vertex) + (gradients ? 8 * v * per_vertex : 0) + 8 * c +
+         (renumber > bits ? renumber : bits);
 }
 
 core::CompressedWorkspace figures_of(const std::vector<std::uint8_t>& packed, const core::RenderParams& p) {

@@ -65,9 +65,19 @@ Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out,
 // a byte of open-edge sides, rounded up to 4; two open-edge neighbours (u16 each); zienkiewicz
 // gradients (i32 gx, gy per value).
 uint32_t compressed_vertex_record_bytes(const CompressedBlob& blob);
-// Bytes of ring memory LayerDecoder::begin needs for layer `layer`:
-// (window + pinned) * record bytes + 4 * pinned.
+// Bytes of ring memory LayerDecoder::begin needs for layer `layer`: 1 (to 2-align) + the value
+// models the layer codes (compressed_value_models, 132 bytes each) + (window + pinned) * record
+// bytes + 4 * pinned.
 size_t compressed_ring_bytes(const CompressedBlob& blob, int layer);
+// The adaptive models of a vertex's values that a layer codes, kept in the ring memory: one per
+// value of a vertex (the integer parts), then for zienkiewicz two (gx, gy, shared by the values).
+uint32_t compressed_value_models(const CompressedBlob& blob);
+// Bytes of the tags LayerDecoder::keep_tags takes for layer `layer`: a u16 per ring slot and per
+// pinned slot, 2 * (window + pinned).
+size_t compressed_tag_bytes(const CompressedBlob& blob, int layer);
+
+// The tag of a vertex the decoder holds that no caller set (keep_tags).
+inline constexpr uint16_t compressed_tag_none = 0xFFFF;
 
 namespace detail {
 
@@ -91,13 +101,14 @@ struct IntModel {
   UintModel magnitude;
 };
 
-// Every context of one layer's stream (docs/COMPRESSED_BLOB.md lists what each codes).
+// Every context of one layer's stream (docs/COMPRESSED_BLOB.md lists what each codes) but the
+// value models: those of the integer parts of the values (predicted, see the doc) and of the
+// gradients (gx, gy, against their prediction), of which a layer has only those it codes
+// (compressed_value_models), in its decoder's ring memory.
 struct StreamModels {
   UintModel gap;            // raster pixel gap to the previous vertex
   Prob subpixel;            // the vertex has non-zero sub-pixel bits
-  IntModel value[3];        // integer parts of the values, predicted (see the doc)
   Prob fraction;            // some value of the vertex has a non-zero fraction byte
-  IntModel gradient[2];     // gx, gy, against the previous vertex's of the same value
   // A triangle's first vertex a against the previous triangle's: 0, +1, +2, -1 or an escape (7) to
   // top_far, context: how the previous triangle's anchor and third vertex were coded (6 classes).
   Prob top[6][8];
@@ -138,6 +149,9 @@ struct DecodedTriangle {
   uint16_t x[3], y[3];
   uint16_t values[3][3];       // [corner][value], q8_8
   int32_t gradients[3][3][2];  // [corner][value][gx, gy], zienkiewicz only (not written otherwise)
+  // With keep_tags: each corner's tag, which the caller may read and set until the next call of
+  // next() (null without tags).
+  uint16_t* tag[3];
 };
 
 // Receives each vertex once, when its values are decoded (not in index order; optional).
@@ -145,15 +159,24 @@ using VertexSink = void (*)(void* context, uint32_t index, uint16_t x, uint16_t 
                             const int32_t* gradients);
 
 // Decodes one layer's stream triangle by triangle, keeping the last `window` vertices in a ring
-// of caller memory (compressed_ring_bytes). Its own state is this object (about 1.8 KiB). A
+// of caller memory (compressed_ring_bytes). Its own state is this object (about 1.1 KiB). A
 // trivial type: begin sets every field, so it can live in caller memory (8-aligned bytes taken as
 // a LayerDecoder) without being constructed; call begin before the other members.
 class LayerDecoder {
  public:
   // Starts layer `layer` of `blob` (both must outlive the decoding); `ring` must hold
-  // compressed_ring_bytes(blob, layer) bytes (any alignment).
+  // compressed_ring_bytes(blob, layer) bytes (any alignment): the value models, the ring, the
+  // pinned slots.
   Status begin(const CompressedBlob& blob, int layer, void* ring, size_t ring_bytes, VertexSink sink = nullptr,
                void* sink_context = nullptr);
+  // After begin: keeps a tag of 16 bits for each vertex while it is in the ring or pinned, in
+  // `tags` (compressed_tag_bytes(blob, layer) bytes, 2-aligned, all set to compressed_tag_none
+  // here). A vertex's tag is compressed_tag_none when it enters the ring or a pinned slot, follows
+  // it from its pinned slot into the ring, and is reached by DecodedTriangle::tag while the vertex
+  // is a corner; a caller can so attach a u16 of its own to the vertices it has seen (the band
+  // store: the vertex's slot) without a map, and may rewrite every tag between triangles through
+  // `tags` (ring slots first, then pinned slots).
+  void keep_tags(uint16_t* tags);
   // Decodes the next triangle. Call triangle_count times, then finish().
   Status next(DecodedTriangle* out);
   // Decodes the vertices no triangle needed yet and checks that the stream ends exactly.
@@ -166,7 +189,9 @@ class LayerDecoder {
   Status decode_position();
   void enter_row(uint32_t row);
   Status place(uint32_t index);
+  uint32_t pinned_slot(uint32_t index) const;
   uint8_t* pinned_record(uint32_t index) const;
+  uint16_t* tag_of(uint32_t index) const;
   void find_next_pinned();
   Status decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
   template <int PerVertex>
@@ -183,7 +208,9 @@ class LayerDecoder {
   const CompressedBlob* blob_;
   const CompressedLayer* layer_;
   uint8_t* ring_;
+  detail::IntModel* value_models_;  // in the ring memory: per value, then gx, gy (zienkiewicz)
   uint8_t* pins_;  // pinned records, then their indices (u32 each)
+  uint16_t* tags_;  // keep_tags: per ring slot, then per pinned slot (null: none)
   uint32_t pin_slot_;  // the pinned slot the next lift takes
   uint32_t next_pinned_;  // smallest index pending in a pinned slot (0xFFFFFFFF: none)
   uint32_t record_;

@@ -83,13 +83,13 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
 
 // A compressed blob ("TSTC", compressed_blob.h) rendered from its streams band by band, in the
 // same band and tile order as a v1 blob and with bit-identical pixels: per layer a LayerDecoder
-// and its ring, and the band's live triangles (those of the stream whose rows meet the band)
-// copied into a small v1-shaped layer whose vertices each live triangle's corners share, all in
-// the workspace (docs/COMPRESSED_BLOB.md, "Rendering from the stream"). Its workspace is
-//   8 + scratch + sum over layers (align8(decoder) + align8(ring)) + layers x band store,
-//   band store = the largest over the layers and bands of need(V, C) with C the band's live
-//     triangles and V their vertices, need(V, C) = 4 V + align4(2 v V) + 8 v V (zienkiewicz)
-//     + align4(2 V) + 8 C + max(4 V, 4 ceil(C / 32))
+// and its ring and tags, and the band's live triangles (those of the stream whose rows meet the
+// band) copied into a small v1-shaped layer whose vertices each live triangle's corners share, all
+// in the workspace (docs/COMPRESSED_BLOB.md, "Rendering from the stream"). Its workspace is
+//   8 + scratch + sum over layers (align8(decoder) + align8(ring) + align8(tags)) + layers x band
+//   store, tags = compressed_tag_bytes, band store = the largest over the layers and bands of
+//     need(V, C) with C the band's live triangles and V their vertices,
+//     need(V, C) = 4 V + align4(2 v V) + 8 v V (zienkiewicz) + 8 C + max(align4(2 V), 4 ceil(C / 32))
 // (v values per vertex; the channel scratch as for a v1 blob), which only a decode of the streams
 // finds: workspace_size decodes them once with `scratch` (measure_scratch_size bytes) to count
 // each band's C and V and checks every stream to its end.
@@ -107,7 +107,7 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
 struct CompressedWorkspace {
   size_t bytes = 0;
   size_t channel_scratch = 0;
-  size_t decoders = 0;          // per layer: the decoder object, the held triangle, its ring
+  size_t decoders = 0;          // per layer: the decoder object, the held triangle, its ring and tags
   size_t band_store = 0;        // per layer: the largest need(V, C) of a band
   uint32_t live_triangles = 0;  // the most live triangles of a layer in one band
   uint32_t live_vertices = 0;   // the most vertices of a layer's live triangles in one band
