@@ -37,12 +37,15 @@ inline size_t band_vertex_bytes(uint32_t slots, uint32_t values_per_vertex, bool
   return 4 * n + align4_size(2 * n * values_per_vertex) + (gradients ? 8 * n * values_per_vertex : 0);
 }
 
+// Bytes of the table that renumbers `slots` slots when a band starts: a bit per slot (kept or
+// not) in 32-bit words and a u16 per word (the kept slots before it), 4-aligned.
+inline size_t rank_table_bytes(uint32_t slots) { return align4_size(6 * ((size_t(slots) + 31) / 32)); }
+
 // Bytes a store needs to hold V vertices and C triangles: the vertex slots, 8 per triangle, and
-// the larger of the renumbering table (a u16 per vertex, used when a band starts; 4-aligned, as
-// the store's bytes are) and the active-set bitmap (C bits in 32-bit words, used while the band is
-// drawn), which share memory.
+// the larger of the renumbering table (rank_table_bytes, used when a band starts) and the
+// active-set bitmap (C bits in 32-bit words, used while the band is drawn), which share memory.
 inline size_t band_store_bytes(uint32_t vertices, uint32_t triangles, uint32_t values_per_vertex, bool gradients) {
-  const size_t renumber = align4_size(2 * size_t(vertices)), bits = bitmap_bytes(triangles);
+  const size_t renumber = rank_table_bytes(vertices), bits = bitmap_bytes(triangles);
   return band_vertex_bytes(vertices, values_per_vertex, gradients) + size_t(blob_triangle_size) * triangles +
          (renumber > bits ? renumber : bits);
 }
@@ -64,11 +67,11 @@ inline void decoded_row_extent(const Mapping& map, const DecodedTriangle& t, int
 }
 
 // The store in `bytes` of workspace: [vertex slots for `slots` vertices: positions, values,
-// gradients][triangles, growing]...[renumbering table: slots u16 at the end]. Its need is
+// gradients][triangles, growing]...[renumbering table of `slots` at the end]. Its need is
 // band_store_bytes(vertices, triangles) at every moment, whatever the slack: slots grow when a further
 // vertex finds none free (the arrays after the positions and the triangles move up), and shrink to
 // the vertex count when the triangles or the bitmap would not fit otherwise, so a store of `bytes`
-// takes every band whose need is at most `bytes`. Invariant between calls: 2 slots bytes of table
+// takes every band whose need is at most `bytes`. Invariant between calls: rank_table_bytes(slots)
 // fit after the triangles.
 // The decoder's tags (`tags`, tag_count of them) hold the slot of each vertex of its ring that is
 // in the store, else band_store_free: a corner's tag finds its slot, and a vertex out of the ring
@@ -125,10 +128,10 @@ struct BandStore {
       if (s != Status::ok) return s;
     }
     const uint32_t n = count();
-    if (!fits(slots, n + 1, 2 * size_t(slots))) {
+    if (!fits(slots, n + 1, rank_table_bytes(slots))) {
       if (slots == vertices) return Status::workspace_too_small;
       relayout(vertices);  // the slack of slots makes room
-      if (!fits(slots, n + 1, 2 * size_t(slots))) return Status::workspace_too_small;
+      if (!fits(slots, n + 1, rank_table_bytes(slots))) return Status::workspace_too_small;
     }
     uint8_t* p = triangles() + size_t(blob_triangle_size) * n;
     for (int k = 0; k < 3; ++k) store16(p + 2 * k, slot[k]);
@@ -198,10 +201,11 @@ struct BandStore {
   uint32_t most_slots(uint32_t n) const {
     const size_t t = size_t(blob_triangle_size) * n;
     if (t >= bytes) return 0;
-    const size_t per = 6 + 2 * size_t(values_per_vertex) + (has_gradients ? 8 * size_t(values_per_vertex) : 0);
-    size_t c = (bytes - t) / per;  // an upper bound: the sections' rounding only adds
+    const size_t per = 4 + 2 * size_t(values_per_vertex) + (has_gradients ? 8 * size_t(values_per_vertex) : 0);
+    // An upper bound: a slot costs per bytes and 6 / 32 of the table; the sections' rounding only adds.
+    size_t c = 32 * (bytes - t) / (32 * per + 6);
     if (c > band_store_max_vertices) c = band_store_max_vertices;
-    while (c > 0 && !fits(uint32_t(c), n, 2 * c)) --c;
+    while (c > 0 && !fits(uint32_t(c), n, rank_table_bytes(uint32_t(c)))) --c;
     return uint32_t(c);
   }
 
@@ -293,24 +297,42 @@ struct BandStore {
     layer->triangle_count = kept;
   }
 
+  // Ones in a word (no popcount instruction on a Cortex-M4).
+  static uint32_t ones(uint32_t x) {
+    x = x - ((x >> 1) & 0x55555555u);
+    x = (x & 0x33333333u) + ((x >> 2) & 0x33333333u);
+    x = (x + (x >> 4)) & 0x0F0F0F0Fu;
+    return (x * 0x01010101u) >> 24;
+  }
+
   // Keeps the vertices the triangles use, in slot order, and renumbers them in the triangles and
-  // the decoder's tags (a dropped vertex's tag is band_store_free), by a table at the store's end
-  // (slots >= vertices entries).
+  // the decoder's tags (a dropped vertex's tag is band_store_free). The table at the store's end
+  // (rank_table_bytes(slots), slots >= vertices) marks the kept slots, a bit each, and counts the
+  // kept slots before each word: a kept slot's new number is that count plus the kept ones below
+  // it in its word.
   void compact_vertices() {
-    const uint32_t n = count(), nv = vertices;
+    const uint32_t n = count(), nv = vertices, words_n = (nv + 31) / 32;
     uint8_t* const tri = triangles();
     uint8_t* const v = values();
     uint8_t* const g = gradients();
-    uint16_t* const renumber = reinterpret_cast<uint16_t*>(base + bytes - 2 * size_t(slots));
-    for (uint32_t s = 0; s < nv; ++s) renumber[s] = band_store_free;
+    uint32_t* const marks = reinterpret_cast<uint32_t*>(base + bytes - rank_table_bytes(slots));
+    uint16_t* const before = reinterpret_cast<uint16_t*>(marks + (slots + 31) / 32);
+    for (uint32_t w = 0; w < words_n; ++w) marks[w] = 0;
     for (uint32_t i = 0; i < n; ++i) {
       const uint8_t* p = tri + size_t(blob_triangle_size) * i;
-      for (int k = 0; k < 3; ++k) renumber[load16(p + 2 * k)] = 0;
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t s = load16(p + 2 * k);
+        marks[s >> 5] |= 1u << (s & 31);
+      }
     }
     uint32_t kept = 0;
+    for (uint32_t w = 0; w < words_n; ++w) {
+      before[w] = uint16_t(kept);
+      kept += ones(marks[w]);
+    }
+    kept = 0;
     for (uint32_t s = 0; s < nv; ++s) {
-      if (renumber[s] == band_store_free) continue;
-      renumber[s] = uint16_t(kept);
+      if (!((marks[s >> 5] >> (s & 31)) & 1u)) continue;
       if (kept != s) {
         // Copies of constant sizes, which compilers inline (a call per vertex costs more).
         memcpy(base + 4 * size_t(kept), base + 4 * size_t(s), 4);
@@ -324,12 +346,19 @@ struct BandStore {
       }
       ++kept;
     }
+    // A kept slot's new number (every slot of a triangle is kept).
+    auto rank = [&](uint32_t s) {
+      const uint32_t w = s >> 5, below = (1u << (s & 31)) - 1;
+      return uint16_t(before[w] + ones(marks[w] & below));
+    };
     for (uint32_t i = 0; i < n; ++i) {
       uint8_t* p = tri + size_t(blob_triangle_size) * i;
-      for (int k = 0; k < 3; ++k) store16(p + 2 * k, renumber[load16(p + 2 * k)]);
+      for (int k = 0; k < 3; ++k) store16(p + 2 * k, rank(load16(p + 2 * k)));
     }
-    for (uint32_t i = 0; i < tag_count; ++i)
-      if (tags[i] < nv) tags[i] = renumber[tags[i]];  // (a tag at or past nv is none)
+    for (uint32_t i = 0; i < tag_count; ++i) {
+      const uint32_t s = tags[i];
+      if (s < nv) tags[i] = (marks[s >> 5] >> (s & 31)) & 1u ? rank(s) : band_store_free;  // (past nv: none)
+    }
     vertices = kept;
   }
 };

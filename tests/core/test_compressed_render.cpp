@@ -273,10 +273,11 @@ namespace {
 
 // The store's need for V vertices and C triangles (render.h's formula): vertex slots (4 bytes of
 // position, 2 per value, 8 per gradient pair, each array 4-aligned), 8 bytes per triangle, and the
-// larger of the renumbering table (align4(2 V)) and the bitmap (4 ceil(C / 32)).
+// larger of the renumbering table (align4(6 ceil(V / 32)): a bit and, per 32, a u16) and the
+// bitmap (4 ceil(C / 32)).
 std::size_t store_formula(std::size_t v, std::size_t c, std::size_t per_vertex, bool gradients) {
   auto a4 = [](std::size_t n) { return (n + 3) / 4 * 4; };
-  const std::size_t renumber = a4(2 * v), bits = 4 * ((c + 31) / 32);
+  const std::size_t renumber = a4(6 * ((v + 31) / 32)), bits = 4 * ((c + 31) / 32);
   return 4 * v + a4(2 * v * per_vertex) + (gradients ? 8 * v * per_vertex : 0) + 8 * c +
          (renumber > bits ? renumber : bits);
 }

@@ -89,7 +89,8 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
 //   8 + scratch + sum over layers (align8(decoder) + align8(ring) + align8(tags)) + layers x band
 //   store, tags = compressed_tag_bytes, band store = the largest over the layers and bands of
 //     need(V, C) with C the band's live triangles and V their vertices,
-//     need(V, C) = 4 V + align4(2 v V) + 8 v V (zienkiewicz) + 8 C + max(align4(2 V), 4 ceil(C / 32))
+//     need(V, C) = 4 V + align4(2 v V) + 8 v V (zienkiewicz) + 8 C
+//       + max(align4(6 ceil(V / 32)), 4 ceil(C / 32))
 // (v values per vertex; the channel scratch as for a v1 blob), which only a decode of the streams
 // finds: workspace_size decodes them once with `scratch` (measure_scratch_size bytes) to count
 // each band's C and V and checks every stream to its end.
