@@ -330,9 +330,10 @@ struct BandStore {
       before[w] = uint16_t(kept);
       kept += ones(marks[w]);
     }
+    auto is_kept = [&](uint32_t s) { return ((marks[s >> 5] >> (s & 31)) & 1u) != 0; };
     kept = 0;
     for (uint32_t s = 0; s < nv; ++s) {
-      if (!((marks[s >> 5] >> (s & 31)) & 1u)) continue;
+      if (!is_kept(s)) continue;
       if (kept != s) {
         // Copies of constant sizes, which compilers inline (a call per vertex costs more).
         memcpy(base + 4 * size_t(kept), base + 4 * size_t(s), 4);
@@ -357,7 +358,7 @@ struct BandStore {
     }
     for (uint32_t i = 0; i < tag_count; ++i) {
       const uint32_t s = tags[i];
-      if (s < nv) tags[i] = (marks[s >> 5] >> (s & 31)) & 1u ? rank(s) : band_store_free;  // (past nv: none)
+      if (s < nv) tags[i] = is_kept(s) ? rank(s) : band_store_free;  // (past nv: none)
     }
     vertices = kept;
   }

@@ -224,6 +224,11 @@ uint8_t* LayerDecoder::pinned_record(uint32_t index) const {
   return i == 0xFFFFFFFFu ? nullptr : pins_ + size_t(i) * record_;
 }
 
+// The ring slot of the vertex `back` (1 .. window, the layer's) before vertex decoded_.
+__attribute__((always_inline)) inline uint32_t LayerDecoder::ring_slot(uint32_t back, uint32_t window) const {
+  return slot_ >= back ? slot_ - back : slot_ + window - back;
+}
+
 // The tag of a vertex in the ring or pinned (as record()), or null. Inlined: three a triangle.
 __attribute__((always_inline)) inline uint16_t* LayerDecoder::tag_of(uint32_t index) const {
   if (index >= decoded_) {
@@ -231,8 +236,7 @@ __attribute__((always_inline)) inline uint16_t* LayerDecoder::tag_of(uint32_t in
     return i == 0xFFFFFFFFu ? nullptr : tags_ + layer_->window + i;
   }
   const uint32_t back = decoded_ - index, window = layer_->window;
-  if (back > window) return nullptr;
-  return tags_ + (slot_ >= back ? slot_ - back : slot_ + window - back);
+  return back > window ? nullptr : tags_ + ring_slot(back, window);
 }
 
 void LayerDecoder::find_next_pinned() {
@@ -249,9 +253,7 @@ void LayerDecoder::find_next_pinned() {
 __attribute__((always_inline)) inline uint8_t* LayerDecoder::record(uint32_t index) const {
   if (index >= decoded_) return pinned_record(index);
   const uint32_t back = decoded_ - index, window = layer_->window;
-  if (back > window) return nullptr;
-  const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + window - back;  // back: 1 .. window
-  return ring_ + size_t(slot) * record_;
+  return back > window ? nullptr : ring_ + size_t(ring_slot(back, window)) * record_;
 }
 
 // Whether the values of a record are decoded, and the sides of its open edges (edges_at).
@@ -553,7 +555,7 @@ uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
     uint8_t* const ring = ring_;
     const uint32_t back = end - r;
     if (back > window) return layer_->vertex_count;
-    const uint32_t slot = slot_ >= back ? slot_ - back : slot_ + window - back;
+    const uint32_t slot = ring_slot(back, window);
     const size_t span = size_t(window) * bytes;
     uint8_t* const ring_end = ring + span;
     uint8_t* p = ring + size_t(slot) * bytes;

@@ -191,6 +191,7 @@ class LayerDecoder {
   Status place(uint32_t index);
   uint32_t pinned_slot(uint32_t index) const;
   uint8_t* pinned_record(uint32_t index) const;
+  uint32_t ring_slot(uint32_t back, uint32_t window) const;
   uint16_t* tag_of(uint32_t index) const;
   void find_next_pinned();
   Status decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
