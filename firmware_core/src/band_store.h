@@ -2,15 +2,16 @@
 #pragma once
 // The band store of a compressed blob's render: the live triangles of one layer for the current
 // band, as a small v1-shaped layer in the caller's workspace (positions, values, gradients,
-// triangles with u16 indices, and the active-set bitmap), which the active set, the tile cull and
-// the tile renderer read as they read a v1 blob's layer. Each live vertex is stored once: the
-// triangles' indices are store slots, which the decoder's tags (LayerDecoder::keep_tags) hold for
-// the vertices still in its ring, so a corner's slot is found without a map.
+// triangle records in the store's layout, StoreRecords, and the active-set bitmap), which the
+// tile cull and the tile renderer read as they read a v1 blob's layer. Each live vertex is stored
+// once: the triangles' indices are store slots, which the decoder's tags (LayerDecoder::keep_tags)
+// hold for the vertices still in its ring, so a corner's slot is found without a map.
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
 #include "output_mapping.h"
+#include "triangle_records.h"
 #include "tristream/blob.h"
 #include "tristream/compressed_blob.h"
 #include "tristream/detail/arith.h"
@@ -21,11 +22,13 @@
 namespace tristream::core::detail {
 namespace {
 
-// Slots are u16 and 0xFFFF (compressed_tag_none) marks no slot, so a store holds at most 65,535
-// vertices: a layer's vertex count (blob_max_vertices), so the indices never bound a band.
+// Slots are u16 and 0xFFFF (compressed_tag_none, and store_flag_marker in a record) is no slot, so
+// a store holds at most 65,535 vertices: a layer's vertex count (blob_max_vertices), so the
+// indices never bound a band.
 // Triangles are bounded only by the workspace (the active set counts them in u32).
 constexpr uint32_t band_store_max_vertices = 65535;
 static_assert(band_store_max_vertices >= blob_max_vertices, "every vertex of a layer fits the u16 slots");
+static_assert(band_store_max_vertices - 1 < store_flag_marker, "no slot is the flag records' marker");
 constexpr uint16_t band_store_free = compressed_tag_none;
 
 constexpr size_t align4_size(size_t n) { return (n + 3) / 4 * 4; }
@@ -41,12 +44,21 @@ inline size_t band_vertex_bytes(uint32_t slots, uint32_t values_per_vertex, bool
 // not) in 32-bit words and a u16 per word (the kept slots before it), 4-aligned.
 inline size_t rank_table_bytes(uint32_t slots) { return align4_size(6 * ((size_t(slots) + 31) / 32)); }
 
-// Bytes a store needs to hold V vertices and C triangles: the vertex slots, 8 per triangle, and
-// the larger of the renumbering table (rank_table_bytes, used when a band starts) and the
-// active-set bitmap (C bits in 32-bit words, used while the band is drawn), which share memory.
-inline size_t band_store_bytes(uint32_t vertices, uint32_t triangles, uint32_t values_per_vertex, bool gradients) {
-  const size_t renumber = rank_table_bytes(vertices), bits = bitmap_bytes(triangles);
-  return band_vertex_bytes(vertices, values_per_vertex, gradients) + size_t(blob_triangle_size) * triangles +
+// Bytes of `records` triangle and flag records (StoreRecords) and their guard, 4-aligned (none
+// without records).
+inline size_t store_record_bytes(uint32_t records) {
+  return records ? align4_size(size_t(StoreRecords::stride) * records + 2) : 0;
+}
+
+// Bytes a store needs to hold V vertices and C triangles of which F have flags: the vertex slots,
+// the C + F records, and the larger of the renumbering table (rank_table_bytes, used when a band
+// starts) and the active-set bitmap (C + F bits in 32-bit words, used while the band is drawn),
+// which share memory.
+inline size_t band_store_bytes(uint32_t vertices, uint32_t triangles, uint32_t flagged, uint32_t values_per_vertex,
+                               bool gradients) {
+  const uint32_t records = triangles + flagged;
+  const size_t renumber = rank_table_bytes(vertices), bits = bitmap_bytes(records);
+  return band_vertex_bytes(vertices, values_per_vertex, gradients) + store_record_bytes(records) +
          (renumber > bits ? renumber : bits);
 }
 
@@ -67,24 +79,25 @@ inline void decoded_row_extent(const Mapping& map, const DecodedTriangle& t, int
 }
 
 // The store in `bytes` of workspace: [vertex slots for `slots` vertices: positions, values,
-// gradients][triangles, growing]...[renumbering table of `slots` at the end]. Its need is
-// band_store_bytes(vertices, triangles) at every moment, whatever the slack: slots grow when a further
-// vertex finds none free (the arrays after the positions and the triangles move up), and shrink to
-// the vertex count when the triangles or the bitmap would not fit otherwise, so a store of `bytes`
-// takes every band whose need is at most `bytes`. Invariant between calls: rank_table_bytes(slots)
-// fit after the triangles.
+// gradients][records, growing, and their guard]...[renumbering table of `slots` at the end]. Its
+// need is band_store_bytes(vertices, triangles, flagged) at every moment, whatever the slack:
+// slots grow when a further vertex finds none free (the arrays after the positions and the records
+// move up), and shrink to the vertex count when the records or the bitmap would not fit otherwise,
+// so a store of `bytes` takes every band whose need is at most `bytes`. Invariant between calls:
+// rank_table_bytes(slots) fit after the records.
 // The decoder's tags (`tags`, tag_count of them) hold the slot of each vertex of its ring that is
 // in the store, else band_store_free: a corner's tag finds its slot, and a vertex out of the ring
 // is never a corner again.
 // Its fields are few (the render's stack holds three stores): the positions are at `base`, the
 // other sections' addresses follow from `slots`.
 struct BandStore {
-  BlobLayer* layer = nullptr;  // the view the tile path reads; triangle_count is the store's count
+  BlobLayer* layer = nullptr;  // the view the tile path reads; triangle_count is the store's records
   uint8_t* base = nullptr;     // 4-aligned; the positions
   size_t bytes = 0;            // a multiple of 4
   uint32_t slots = 0;          // vertex capacity of the current layout
   uint32_t vertices = 0;       // slots in use: [0, vertices)
   uint32_t added = 0;          // vertices added in the current band
+  uint32_t flag_records = 0;   // records that are flag records
   uint16_t* tags = nullptr;    // the decoder's (keep_tags): a slot, or band_store_free
   uint32_t tag_count = 0;
   uint8_t values_per_vertex = 1;
@@ -98,13 +111,14 @@ struct BandStore {
     bytes = size / 4 * 4;
     values_per_vertex = uint8_t(per_vertex);
     has_gradients = with_gradients;
-    vertices = added = 0;
+    vertices = added = flag_records = 0;
     layer = view;
     layer->vertex_count = layer->triangle_count = 0;
     place(0);
     layer->gradients = with_gradients ? gradients() : nullptr;
   }
 
+  // Records (triangles and flag records).
   uint32_t count() const { return layer->triangle_count; }
 
   // Starts band [y0, ...]: drops the triangles whose last row is above y0 (keeping the others in
@@ -119,29 +133,36 @@ struct BandStore {
     relayout(want < fit ? want : fit);  // fit >= vertices: the invariant held for more triangles
   }
 
-  // Appends a triangle (its corners' slots found by their tags, unseen ones stored). Returns
-  // workspace_too_small when the band's need passes `bytes`.
+  // Appends a triangle (its corners' slots found by their tags, unseen ones stored), and its flag
+  // record if it has flags. Returns workspace_too_small when the band's need passes `bytes`.
   Status append(const DecodedTriangle& t) {
     uint16_t slot[3];
     for (int k = 0; k < 3; ++k) {
       const Status s = vertex_slot(t, k, &slot[k]);
       if (s != Status::ok) return s;
     }
-    const uint32_t n = count();
-    if (!fits(slots, n + 1, rank_table_bytes(slots))) {
+    const uint32_t n = count(), records = t.flags ? 2 : 1;
+    if (!fits(slots, n + records, rank_table_bytes(slots))) {
       if (slots == vertices) return Status::workspace_too_small;
       relayout(vertices);  // the slack of slots makes room
-      if (!fits(slots, n + 1, rank_table_bytes(slots))) return Status::workspace_too_small;
+      if (!fits(slots, n + records, rank_table_bytes(slots))) return Status::workspace_too_small;
     }
-    uint8_t* p = triangles() + size_t(blob_triangle_size) * n;
+    uint8_t* p = triangles() + size_t(StoreRecords::stride) * n;
     for (int k = 0; k < 3; ++k) store16(p + 2 * k, slot[k]);
-    store16(p + 6, t.flags);
-    layer->triangle_count = n + 1;
+    if (t.flags) {
+      store16(p + 6, store_flag_marker);
+      store16(p + 8, t.flags);
+      store16(p + 10, 0);
+      ++flag_records;
+    }
+    store16(p + size_t(StoreRecords::stride) * records, 0);  // the guard
+    layer->triangle_count = n + records;
     return Status::ok;
   }
 
-  // Marks every triangle of the store live in the active-set bitmap, which follows the triangles
-  // (over the table, not needed again before the next band's begin_band). Null when it does not fit.
+  // Marks every triangle of the store live in the active-set bitmap (a bit per record; those of
+  // flag records clear), which follows the records (over the table, not needed again before the
+  // next band's begin_band). Null when it does not fit.
   uint32_t* mark_all_live() {
     const uint32_t n = count();
     if (!fits(slots, n, bitmap_bytes(n))) {
@@ -149,9 +170,14 @@ struct BandStore {
       relayout(vertices);
       if (!fits(slots, n, bitmap_bytes(n))) return nullptr;
     }
-    uint32_t* words = reinterpret_cast<uint32_t*>(triangles() + size_t(blob_triangle_size) * n);
+    uint8_t* const tri = triangles();
+    uint32_t* words = reinterpret_cast<uint32_t*>(tri + store_record_bytes(n));
     for (uint32_t w = 0; w < n / 32; ++w) words[w] = 0xFFFFFFFFu;
     if (n % 32) words[n / 32] = (1u << (n % 32)) - 1;
+    if (flag_records) {
+      for (uint32_t i = 1; i < n; ++i)
+        if (StoreRecords::is_flag_record(tri + size_t(StoreRecords::stride) * i)) words[i / 32] &= ~(1u << (i % 32));
+    }
     return words;
   }
 
@@ -193,13 +219,13 @@ struct BandStore {
     }
   }
 
-  // Whether `cap` slots, n triangles and `tail` bytes after them fit.
+  // Whether `cap` slots, n records and `tail` bytes after them fit.
   bool fits(uint32_t cap, uint32_t n, size_t tail) const {
-    return band_vertex_bytes(cap, values_per_vertex, has_gradients) + size_t(blob_triangle_size) * n + tail <= bytes;
+    return band_vertex_bytes(cap, values_per_vertex, has_gradients) + store_record_bytes(n) + tail <= bytes;
   }
-  // The most slots that fit with n triangles and their renumbering table.
+  // The most slots that fit with n records and their renumbering table.
   uint32_t most_slots(uint32_t n) const {
-    const size_t t = size_t(blob_triangle_size) * n;
+    const size_t t = store_record_bytes(n);
     if (t >= bytes) return 0;
     const size_t per = 4 + 2 * size_t(values_per_vertex) + (has_gradients ? 8 * size_t(values_per_vertex) : 0);
     // An upper bound: a slot costs per bytes and 6 / 32 of the table; the sections' rounding only adds.
@@ -219,7 +245,7 @@ struct BandStore {
     layer->vertex_count = cap;
   }
 
-  // Moves to a layout of `cap` >= vertices slots (which must fit with the triangles and the
+  // Moves to a layout of `cap` >= vertices slots (which must fit with the records and the
   // renumbering table).
   void relayout(uint32_t cap) {
     uint8_t* const old_values = values();
@@ -234,13 +260,13 @@ struct BandStore {
     uint8_t* const to_triangles = triangles();
     // The sections after the positions all move the same way: the last first when they move up.
     if (to_triangles > old_triangles) {
-      move_words(to_triangles, old_triangles, size_t(blob_triangle_size) * nt);
+      move_words(to_triangles, old_triangles, store_record_bytes(uint32_t(nt)));
       if (gradient_bytes) move_words(to_gradients, old_gradients, gradient_bytes);
       move_words(to_values, old_values, value_bytes);
     } else if (to_triangles < old_triangles) {
       move_words(to_values, old_values, value_bytes);
       if (gradient_bytes) move_words(to_gradients, old_gradients, gradient_bytes);
-      move_words(to_triangles, old_triangles, size_t(blob_triangle_size) * nt);
+      move_words(to_triangles, old_triangles, store_record_bytes(uint32_t(nt)));
     }
   }
 
@@ -280,21 +306,35 @@ struct BandStore {
     return Status::ok;
   }
 
+  // Drops the triangles whose last row is above y0 with their flag records, keeping the others
+  // in order.
   void drop_ended(const Mapping& map, int32_t y0) {
+    constexpr size_t stride = StoreRecords::stride;
     const uint32_t n = count();
     uint8_t* const tri = triangles();
     const uint8_t* const pos = base;
-    uint32_t kept = 0;
-    for (uint32_t i = 0; i < n; ++i) {
-      const uint8_t* p = tri + size_t(blob_triangle_size) * i;
+    uint32_t kept = 0, flags_kept = 0;
+    for (uint32_t i = 0; i < n;) {
+      const uint8_t* p = tri + stride * i;
+      // A triangle's record, and the next one its flag record or not (the guard after the last).
+      const bool flagged = StoreRecords::is_flag_record(p + stride);
       const int32_t bottom = raw_row_bottom(map, load16(pos + 4 * size_t(load16(p)) + 2),
                                             load16(pos + 4 * size_t(load16(p + 2)) + 2),
                                             load16(pos + 4 * size_t(load16(p + 4)) + 2));
-      if (bottom < y0) continue;
-      if (kept != i) memcpy(tri + size_t(blob_triangle_size) * kept, p, blob_triangle_size);
-      ++kept;
+      if (bottom >= y0) {
+        // Records of constant size, at least one record apart when they move: no overlap.
+        if (kept != i) {
+          memcpy(tri + stride * kept, p, stride);
+          if (flagged) memcpy(tri + stride * (kept + 1), p + stride, stride);
+        }
+        kept += flagged ? 2 : 1;
+        flags_kept += flagged;
+      }
+      i += flagged ? 2 : 1;
     }
+    if (kept) store16(tri + stride * kept, 0);  // the guard
     layer->triangle_count = kept;
+    flag_records = flags_kept;
   }
 
   // Ones in a word (no popcount instruction on a Cortex-M4).
@@ -305,7 +345,7 @@ struct BandStore {
     return (x * 0x01010101u) >> 24;
   }
 
-  // Keeps the vertices the triangles use, in slot order, and renumbers them in the triangles and
+  // Keeps the vertices the triangles use, in slot order, and renumbers them in the triangles' records and
   // the decoder's tags (a dropped vertex's tag is band_store_free). The table at the store's end
   // (rank_table_bytes(slots), slots >= vertices) marks the kept slots, a bit each, and counts the
   // kept slots before each word: a kept slot's new number is that count plus the kept ones below
@@ -319,7 +359,8 @@ struct BandStore {
     uint16_t* const before = reinterpret_cast<uint16_t*>(marks + (slots + 31) / 32);
     for (uint32_t w = 0; w < words_n; ++w) marks[w] = 0;
     for (uint32_t i = 0; i < n; ++i) {
-      const uint8_t* p = tri + size_t(blob_triangle_size) * i;
+      const uint8_t* p = tri + size_t(StoreRecords::stride) * i;
+      if (StoreRecords::is_flag_record(p)) continue;
       for (int k = 0; k < 3; ++k) {
         const uint32_t s = load16(p + 2 * k);
         marks[s >> 5] |= 1u << (s & 31);
@@ -353,7 +394,8 @@ struct BandStore {
       return uint16_t(before[w] + ones(marks[w] & below));
     };
     for (uint32_t i = 0; i < n; ++i) {
-      uint8_t* p = tri + size_t(blob_triangle_size) * i;
+      uint8_t* p = tri + size_t(StoreRecords::stride) * i;
+      if (StoreRecords::is_flag_record(p)) continue;
       for (int k = 0; k < 3; ++k) store16(p + 2 * k, rank(load16(p + 2 * k)));
     }
     for (uint32_t i = 0; i < tag_count; ++i) {

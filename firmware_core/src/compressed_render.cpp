@@ -95,7 +95,7 @@ Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& para
   uint32_t most_vertices = 0;
   for (int l = 0; l < blob.layer_count; ++l)
     most_vertices = blob.layers[l].vertex_count > most_vertices ? blob.layers[l].vertex_count : most_vertices;
-  *bytes = 8 + align8(sizeof(LayerDecoder)) + align8(expand_workspace_size(blob)) + 8 * (size_t(band_count(r)) + 1) +
+  *bytes = 8 + align8(sizeof(LayerDecoder)) + align8(expand_workspace_size(blob)) + 12 * (size_t(band_count(r)) + 1) +
            2 * size_t(most_vertices);
   return Status::ok;
 }
@@ -126,7 +126,8 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
   const size_t ring_bytes = align8(expand_workspace_size(blob));
   const uint32_t bands = band_count(r);
   uint32_t* live = reinterpret_cast<uint32_t*>(ring + ring_bytes);  // per band: live triangles' difference
-  uint32_t* live_vertices = live + (bands + 1);                     // and live vertices'
+  uint32_t* live_flagged = live + (bands + 1);                      // live triangles with flags'
+  uint32_t* live_vertices = live_flagged + (bands + 1);             // and live vertices'
   // Per stream index: the last band of a triangle using it, or 0xFFFF before the first (bands <=
   // 65,535: the output height is a u16).
   uint16_t* last_band = reinterpret_cast<uint16_t*>(live_vertices + (bands + 1));
@@ -136,7 +137,7 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
   for (int l = 0; l < blob.layer_count; ++l) {
     fixed += stream_bytes(blob, l);
     const uint32_t vertex_count = blob.layers[l].vertex_count;
-    for (uint32_t b = 0; b <= bands; ++b) live[b] = live_vertices[b] = 0;
+    for (uint32_t b = 0; b <= bands; ++b) live[b] = live_flagged[b] = live_vertices[b] = 0;
     for (uint32_t v = 0; v < vertex_count; ++v) last_band[v] = 0xFFFF;
     s = decoder->begin(blob, l, ring, ring_bytes);
     if (s != Status::ok) return s;
@@ -157,6 +158,10 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
       const uint32_t b1 = uint32_t((last - r.view.y0) / r.tile_h);
       ++live[b0];
       --live[b1 + 1];
+      if (t.flags) {
+        ++live_flagged[b0];
+        --live_flagged[b1 + 1];
+      }
       // A vertex is stored from the band of its first live triangle (the one with the least top
       // row: the stream is in top-row order) to the last band of any of them, and in every band
       // between: each of its triangles has the row floor(y) or floor(y) + 1 of the vertex, so
@@ -179,13 +184,14 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
     }
     for (uint32_t v = 0; v < vertex_count; ++v)
       if (last_band[v] != 0xFFFF) --live_vertices[last_band[v] + 1];
-    uint32_t n = 0, nv = 0;
+    uint32_t n = 0, nf = 0, nv = 0;
     for (uint32_t b = 0; b < bands; ++b) {
       n += live[b];
+      nf += live_flagged[b];
       nv += live_vertices[b];
       most = n > most ? n : most;
       most_vertices = nv > most_vertices ? nv : most_vertices;
-      const size_t need = detail::band_store_bytes(nv, n, blob.values_per_vertex, gradients);
+      const size_t need = detail::band_store_bytes(nv, n, nf, blob.values_per_vertex, gradients);
       store = need > store ? need : store;
     }
   }
@@ -242,7 +248,7 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
                    uint32_t(compressed_tag_bytes(blob, l) / 2));
     sets[l].layer = &view.layers[l];
   }
-  const detail::TileRenderer draw = detail::tile_renderer(r.format);
+  const detail::TileRenderer draw = detail::tile_renderer<detail::StoreRecords>(r.format);
   detail::TileBuffers tiles(buffers);
   for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
     const int32_t by1 = by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1;

@@ -72,7 +72,7 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
   for (int l = 0; l < blob.layer_count; ++l)
     if (sets[l].capacity < blob.layers[l].triangle_count && sets[l].capacity < detail::max_window(blob.layers[l], r))
       return Status::workspace_too_small;
-  const detail::TileRenderer draw = detail::tile_renderer(r.format);
+  const detail::TileRenderer draw = detail::tile_renderer<detail::BlobRecords>(r.format);
   detail::TileBuffers tiles(buffers);
   for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
     const int32_t by1 = by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1;

@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "output_mapping.h"
+#include "triangle_records.h"
 #include "tristream/blob.h"
 #include "tristream/config.h"
 #if TS_USE_SSE2
@@ -47,20 +48,24 @@ struct ColumnWindow {
   // test is one sign, not (max < lo) | (min >= hi), which compilers turn into two branches, the
   // first taken for a share of the triangles that grows along the band (unpredictable in the
   // middle tiles).
+  // Records: the layout of the layer's triangle records (triangle_records.h).
+  template <typename Records>
   uint32_t meeting(const BlobLayer& layer, uint32_t t, uint32_t live, uint32_t span) const {
-    const uint8_t* const triangles = layer.triangles + size_t(t) * blob_triangle_size;
+    const uint8_t* const triangles = layer.triangles + size_t(t) * Records::stride;
     const uint8_t* const positions = layer.positions;
     const int32_t low = lo, high = hi - 1;
 #if TS_USE_SSE2
     uint32_t hits = 0;
     if (span == 32) {
       // Bytes of the word with two live triangles or more: all eight triangles in 16-bit lanes
-      // (they are in the window, so their records are valid), the other bytes one by one below.
+      // (they are in the window, so their records are valid), the other bytes one by one below,
+      // as are eight records with a flag record among them (its fields are no vertices).
       uint32_t rest = 0;
       for (int g = 0; g < 4; ++g) {
         const uint32_t byte = (live >> (8 * g)) & 0xFFu;
-        if (byte & (byte - 1)) {
-          hits |= (meeting8(triangles + size_t(8 * g) * blob_triangle_size, positions) & byte) << (8 * g);
+        const uint8_t* const eight = triangles + size_t(8 * g) * Records::stride;
+        if ((byte & (byte - 1)) && !(Records::has_flag_records && has_flag_record8(eight))) {
+          hits |= (meeting8<Records>(eight, positions) & byte) << (8 * g);
         } else {
           rest |= byte << (8 * g);
         }
@@ -69,7 +74,7 @@ struct ColumnWindow {
     }
     for (; live; live &= live - 1) {
       const uint32_t i = uint32_t(__builtin_ctz(live));
-      const uint8_t* p = triangles + size_t(i) * blob_triangle_size;
+      const uint8_t* p = triangles + size_t(i) * Records::stride;
       const int32_t x0 = load_u16(positions + 4 * size_t(load_u16(p)));
       const int32_t x1 = load_u16(positions + 4 * size_t(load_u16(p + 2)));
       const int32_t x2 = load_u16(positions + 4 * size_t(load_u16(p + 4)));
@@ -84,14 +89,14 @@ struct ColumnWindow {
     // and the bit leaves the live ones with a flag-setting clear: 24 Thumb-2 instructions a test
     // against 28 for the lowest bit's index, a shifted hit bit and live &= live - 1 (kodim23
     // 768 x 512 in 32 x 32 tiles -1.3 % modelled Cortex-M4 cycles). The last record's address as
-    // an integer: the bit's record is that minus 8 j without forming a pointer before the layer's
+    // an integer: the bit's record is that minus stride x j without forming a pointer before the layer's
     // records (bit 31 - j is live, so its record is in the window).
-    const uintptr_t last = uintptr_t(triangles) + 31 * blob_triangle_size;
+    const uintptr_t last = uintptr_t(triangles) + 31 * Records::stride;
     uint32_t kept = live;
     while (live) {
       const uint32_t j = uint32_t(__builtin_clz(live));
       const uint32_t bit = 0x80000000u >> j;
-      const uint8_t* p = reinterpret_cast<const uint8_t*>(last - j * blob_triangle_size);
+      const uint8_t* p = reinterpret_cast<const uint8_t*>(last - j * Records::stride);
       const int32_t x0 = load_u16(positions + 4 * size_t(load_u16(p)));
       const int32_t x1 = load_u16(positions + 4 * size_t(load_u16(p + 2)));
       const int32_t x2 = load_u16(positions + 4 * size_t(load_u16(p + 4)));
@@ -110,10 +115,21 @@ struct ColumnWindow {
   // unsigned values); the bounds are clamped to 16 bits only in the direction that keeps more
   // triangles (a triangle kept in error is clipped away exactly by rasterize, one missed would be
   // wrong): min(lo, 65535) for max < lo, max(hi - 1, 0) for min > hi - 1.
+  // Whether the eight store records at p hold a flag record: a u16 of 0xFFFF among their 48 bytes,
+  // which only a flag record's marker is (a slot is at most 0xFFFE, flags at most 0x1FF).
+  static bool has_flag_record8(const uint8_t* p) {
+    static_assert(StoreRecords::stride * 8 == 48, "three vectors");
+    const __m128i ones = _mm_set1_epi16(-1);
+    const __m128i a = _mm_cmpeq_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)), ones);
+    const __m128i b = _mm_cmpeq_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 16)), ones);
+    const __m128i c = _mm_cmpeq_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 32)), ones);
+    return _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(a, b), c)) != 0;
+  }
+  template <typename Records>
   uint32_t meeting8(const uint8_t* p, const uint8_t* positions) const {
     // As the 16-bit lane it goes to (the same bits).
     auto x = [&](int j, int k) {
-      return int16_t(load_u16(positions + 4 * size_t(load_u16(p + j * blob_triangle_size + 2 * k))));
+      return int16_t(load_u16(positions + 4 * size_t(load_u16(p + j * Records::stride + 2 * k))));
     };
     const __m128i top_bit = _mm_set1_epi16(int16_t(0x8000));
     __m128i v[3];

@@ -31,22 +31,23 @@ namespace {
 // band's whole width (cull_columns false) every live triangle is drawn without the column test:
 // the test only skips triangles that rasterize would clip away, so the pixels and the triangles
 // found done are the same.
-template <typename Shader>
+template <typename Records, typename Shader>
 void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, bool cull_columns, Shader& shader) {
   const ColumnWindow columns(map, rect);
   set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span, uint32_t p) {
     uint32_t done = 0;
-    for (uint32_t hits = cull_columns ? columns.meeting(*set.layer, t, live, span) : live; hits; hits &= hits - 1) {
+    for (uint32_t hits = cull_columns ? columns.meeting<Records>(*set.layer, t, live, span) : live; hits;
+         hits &= hits - 1) {
       const uint32_t i = uint32_t(__builtin_ctz(hits));
       TriangleView tv;
-      load_triangle(*set.layer, t + i, map, &tv);
+      load_triangle<Records>(*set.layer, t + i, map, &tv);
       done |= uint32_t(rasterize(tv, rect, shader)) << i;
     }
     set.words[p / 32] &= ~(done << (p % 32));
   });
 }
 
-template <int Channels, typename Writer>
+template <typename Records, int Channels, typename Writer>
 void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& list, const Mapping& map,
                const Rect& rect, bool cull_columns, const Writer& writer, int step) {
   const BlobLayer* layer = &blob.layers[layer_index];
@@ -54,12 +55,12 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& 
   if (blob.method == Method::bilinear) {
     if constexpr (config::methods & 1) {
       BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
-      draw_layer(list, map, rect, cull_columns, s);
+      draw_layer<Records>(list, map, rect, cull_columns, s);
     }
   } else {
     if constexpr (config::methods & 2) {
       ZienkiewiczShader<Channels, Writer> s{{layer, blob.values_per_vertex, first_channel, {}, {}, 0, false}, writer, step};
-      draw_layer(list, map, rect, cull_columns, s);
+      draw_layer<Records>(list, map, rect, cull_columns, s);
     }
   }
 }
@@ -115,7 +116,7 @@ __attribute__((noinline)) void fill_background_apart(uint8_t* base, int32_t stri
   fill_background<F>(base, stride, rect, p, grey);
 }
 
-template <PixelFormat F>
+template <typename Records, PixelFormat F>
 void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, ActiveSet* sets, const Rect& rect,
                  bool cull_columns, uint8_t* base, int32_t stride, int16_t* scratch) {
   const bool grey = blob.space == ColorSpace::grey;
@@ -131,22 +132,23 @@ void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, Ac
     if (F == PixelFormat::coverage8 && layered(blob)) {
       if constexpr (config::layered) {
         const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
-        for (int l = 0; l < blob.layer_count; ++l) draw_with<1>(blob, l, 0, sets[l], map, rect, cull_columns, w, bpp);
+        for (int l = 0; l < blob.layer_count; ++l)
+          draw_with<Records, 1>(blob, l, 0, sets[l], map, rect, cull_columns, w, bpp);
       }
     } else if (grey) {
       if constexpr (spaces & 1) {
         const DirectWriter<F, 1, false> w{base, stride, rect, p.dither};
-        draw_with<1>(blob, 0, 0, sets[0], map, rect, cull_columns, w, bpp);
+        draw_with<Records, 1>(blob, 0, 0, sets[0], map, rect, cull_columns, w, bpp);
       }
     } else if (blob.space == ColorSpace::ycbcr) {
       if constexpr (spaces & 4) {
         const DirectWriter<F, 3, true> w{base, stride, rect, p.dither};
-        draw_with<3>(blob, 0, 0, sets[0], map, rect, cull_columns, w, bpp);
+        draw_with<Records, 3>(blob, 0, 0, sets[0], map, rect, cull_columns, w, bpp);
       }
     } else {
       if constexpr (spaces & 2) {
         const DirectWriter<F, 3, false> w{base, stride, rect, p.dither};
-        draw_with<3>(blob, 0, 0, sets[0], map, rect, cull_columns, w, bpp);
+        draw_with<Records, 3>(blob, 0, 0, sets[0], map, rect, cull_columns, w, bpp);
       }
     }
     return;
@@ -156,7 +158,7 @@ void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, Ac
     for (int32_t i = 0; i < n; ++i) scratch[i] = scratch_empty;
     for (int l = 0; l < blob.layer_count; ++l) {
       const ScratchWriter w{scratch, rect.width(), rect, l};
-      draw_with<1>(blob, l, 0, sets[l], map, rect, cull_columns, w, 3);
+      draw_with<Records, 1>(blob, l, 0, sets[l], map, rect, cull_columns, w, 3);
     }
     convert_scratch<F>(scratch, base, stride, rect, p, blob.space == ColorSpace::ycbcr);
   }
@@ -166,24 +168,26 @@ void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, Ac
 using TileRenderer = void (*)(const Blob&, const RenderParams&, const Mapping&, ActiveSet*, const Rect&, bool,
                               uint8_t*, int32_t, int16_t*);
 
-template <PixelFormat F>
+template <typename Records, PixelFormat F>
 constexpr TileRenderer compiled_renderer() {
   if constexpr (config::pixel_formats >> int(F) & 1) {
-    return render_tile<F>;
+    return render_tile<Records, F>;
   } else {
     return nullptr;
   }
 }
 
-// The tile function of a format; null for a format not compiled in (plan_frame rejects those).
+// The tile function of a format for layers whose triangle records are laid out as Records
+// (triangle_records.h); null for a format not compiled in (plan_frame rejects those).
+template <typename Records>
 inline TileRenderer tile_renderer(PixelFormat f) {
   switch (f) {
-    case PixelFormat::l8: return compiled_renderer<PixelFormat::l8>();
-    case PixelFormat::rgb888: return compiled_renderer<PixelFormat::rgb888>();
-    case PixelFormat::rgb565_le: return compiled_renderer<PixelFormat::rgb565_le>();
-    case PixelFormat::rgb565_be: return compiled_renderer<PixelFormat::rgb565_be>();
-    case PixelFormat::xrgb8888: return compiled_renderer<PixelFormat::xrgb8888>();
-    case PixelFormat::coverage8: return compiled_renderer<PixelFormat::coverage8>();
+    case PixelFormat::l8: return compiled_renderer<Records, PixelFormat::l8>();
+    case PixelFormat::rgb888: return compiled_renderer<Records, PixelFormat::rgb888>();
+    case PixelFormat::rgb565_le: return compiled_renderer<Records, PixelFormat::rgb565_le>();
+    case PixelFormat::rgb565_be: return compiled_renderer<Records, PixelFormat::rgb565_be>();
+    case PixelFormat::xrgb8888: return compiled_renderer<Records, PixelFormat::xrgb8888>();
+    case PixelFormat::coverage8: return compiled_renderer<Records, PixelFormat::coverage8>();
   }
   return nullptr;
 }

@@ -6,6 +6,7 @@
 #include <stdint.h>
 
 #include "output_mapping.h"
+#include "triangle_records.h"
 #include "tristream/blob.h"
 #include "tristream/detail/arith.h"
 #include "tristream/detail/bytes.h"
@@ -22,8 +23,10 @@ struct TriangleView {
   int32_t x[4], y[4];  // x[3], y[3]: 0 (whole vectors for SSE2)
 };
 
+// Triangle t of the layer, whose records are laid out as Records (triangle_records.h).
+template <typename Records>
 inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map, TriangleView* tv) {
-  const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
+  const uint8_t* p = layer.triangles + size_t(t) * Records::stride;
   TS_UNROLL
   for (int k = 0; k < 3; ++k) {
     tv->v[k] = load_u16(p + 2 * k);
@@ -31,11 +34,11 @@ inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map
     tv->x[k] = map.x(load_u16(pos));
     tv->y[k] = map.y(load_u16(pos + 2));
   }
-  tv->flags = load_u16(p + 6);
+  tv->flags = Records::flags(p);
   tv->x[3] = tv->y[3] = 0;
 }
 
-// First and last pixel row whose sample points may lie in the triangle.
+// First and last pixel row whose sample points may lie in the triangle (of a v1 blob's layer).
 inline void row_extent(const BlobLayer& layer, uint32_t t, const Mapping& map, int32_t* top, int32_t* bottom) {
   const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
   const int32_t y0 = load_u16(layer.positions + 4 * size_t(load_u16(p)) + 2);

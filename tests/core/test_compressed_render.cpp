@@ -271,15 +271,28 @@ TEST_CASE("every damaged byte and every truncation of a compressed blob renders 
 
 namespace {
 
-// The store's need for V vertices and C triangles (render.h's formula): vertex slots (4 bytes of
-// position, 2 per value, 8 per gradient pair, each array 4-aligned), 8 bytes per triangle, and the
-// larger of the renumbering table (align4(6 ceil(V / 32)): a bit and, per 32, a u16) and the
-// bitmap (4 ceil(C / 32)).
-std::size_t store_formula(std::size_t v, std::size_t c, std::size_t per_vertex, bool gradients) {
+// The store's need for V vertices and C triangles of which F have flags (render.h's formula):
+// vertex slots (4 bytes of position, 2 per value, 8 per gradient pair, each array 4-aligned), 6
+// bytes per triangle and per flag record and a u16 guard (4-aligned), and the larger of the
+// renumbering table (align4(6 ceil(V / 32)): a bit and, per 32, a u16) and the bitmap (a bit per
+// record, 4 ceil((C + F) / 32)).
+std::size_t store_formula(std::size_t v, std::size_t c, std::size_t f, std::size_t per_vertex, bool gradients) {
   auto a4 = [](std::size_t n) { return (n + 3) / 4 * 4; };
-  const std::size_t renumber = a4(6 * ((v + 31) / 32)), bits = 4 * ((c + 31) / 32);
-  return 4 * v + a4(2 * v * per_vertex) + (gradients ? 8 * v * per_vertex : 0) + 8 * c +
+  const std::size_t renumber = a4(6 * ((v + 31) / 32)), bits = 4 * ((c + f + 31) / 32);
+  return 4 * v + a4(2 * v * per_vertex) + (gradients ? 8 * v * per_vertex : 0) + (c ? a4(6 * (c + f) + 2) : 0) +
          (renumber > bits ? renumber : bits);
+}
+
+// Triangles of the v1 blob with flags (the one layer's).
+std::size_t flagged_triangles(const std::vector<std::uint8_t>& v1) {
+  core::Blob blob;
+  REQUIRE(core::open_blob(v1.data(), v1.size(), &blob) == core::Status::ok);
+  std::size_t n = 0;
+  for (std::uint32_t t = 0; t < blob.layers[0].triangle_count; ++t) {
+    const std::uint8_t* p = blob.layers[0].triangles + core::blob_triangle_size * t;
+    n += (p[6] | p[7]) != 0;
+  }
+  return n;
 }
 
 core::CompressedWorkspace figures_of(const std::vector<std::uint8_t>& packed, const core::RenderParams& p) {
@@ -295,11 +308,14 @@ core::CompressedWorkspace figures_of(const std::vector<std::uint8_t>& packed, co
 
 // One band over the whole frame: every triangle of a lattice mesh has rows (its corners are on
 // pixel rows), so the band holds all of them and every vertex once.
-void check_one_band_store(const std::vector<std::uint8_t>& packed, const Mesh& mesh, core::Method m) {
+void check_one_band_store(const std::vector<std::uint8_t>& v1, const std::vector<std::uint8_t>& packed,
+                          const Mesh& mesh, core::Method m) {
   const core::CompressedWorkspace f = figures_of(packed, params_of(CoreOptions{}, {0, 0}));
   CHECK(f.live_vertices == mesh.points.size());
   CHECK(f.live_triangles == mesh.triangles.size());
-  CHECK(f.band_store == store_formula(mesh.points.size(), mesh.triangles.size(), std::size_t(mesh.value_count),
+  const std::size_t flagged = flagged_triangles(v1);
+  CHECK(flagged > 0);  // the boundary's triangles: flag records are in the store
+  CHECK(f.band_store == store_formula(mesh.points.size(), mesh.triangles.size(), flagged, std::size_t(mesh.value_count),
                                       m == core::Method::zienkiewicz));
 }
 
@@ -337,7 +353,7 @@ TEST_CASE("the band store keeps each live vertex once") {
       const std::vector<std::uint8_t> v1 = pack_blob(tri, m), packed = compress_blob(v1, "fans");
       check_same_renders(v1, packed, every_format(), {{0, 0}, {0, 64}, {32, 32}, {0, 7}, {200, 100}});
       for (const Tiling& t : {Tiling{0, 0}, Tiling{0, 64}, Tiling{16, 16}}) check_exact_workspace(packed, t);
-      check_one_band_store(packed, mesh, m);
+      check_one_band_store(v1, packed, mesh, m);
     }
     DYNAMIC_SECTION("vertices carried across many bands: tall triangles, bands of one row, method " << int(m)) {
       // Vertices only near the top and the bottom rows (and the corners): most triangles reach
@@ -366,7 +382,7 @@ TEST_CASE("the band store keeps each live vertex once") {
       // The band across the middle rows holds the tall triangles and only their corners.
       const core::CompressedWorkspace f = figures_of(packed, params_of(CoreOptions{}, {0, 1}));
       CHECK(f.live_vertices < 3 * f.live_triangles / 2);
-      check_one_band_store(packed, mesh, m);
+      check_one_band_store(v1, packed, mesh, m);
     }
   }
 }
@@ -382,5 +398,5 @@ TEST_CASE("a band at the store's index limit: a layer of 65,535 vertices in one 
   o.format = core::PixelFormat::l8;
   check_same_renders(v1, packed, {o}, {{0, 0}, {0, 128}});
   check_exact_workspace(packed, {0, 0}, o);
-  check_one_band_store(packed, mesh, core::Method::bilinear);
+  check_one_band_store(v1, packed, mesh, core::Method::bilinear);
 }

@@ -88,15 +88,15 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
 // in the workspace (docs/COMPRESSED_BLOB.md, "Rendering from the stream"). Its workspace is
 //   8 + scratch + sum over layers (align8(decoder) + align8(ring) + align8(tags)) + layers x band
 //   store, tags = compressed_tag_bytes, band store = the largest over the layers and bands of
-//     need(V, C) with C the band's live triangles and V their vertices,
-//     need(V, C) = 4 V + align4(2 v V) + 8 v V (zienkiewicz) + 8 C
-//       + max(align4(6 ceil(V / 32)), 4 ceil(C / 32))
+//     need(V, C, F) with C the band's live triangles, F those with flags and V their vertices,
+//     need(V, C, F) = 4 V + align4(2 v V) + 8 v V (zienkiewicz) + align4(6 (C + F) + 2) (0 if C = 0)
+//       + max(align4(6 ceil(V / 32)), 4 ceil((C + F) / 32))
 // (v values per vertex; the channel scratch as for a v1 blob), which only a decode of the streams
 // finds: workspace_size decodes them once with `scratch` (measure_scratch_size bytes) to count
-// each band's C and V and checks every stream to its end.
+// each band's C, F and V and checks every stream to its end.
 Status tile_buffer_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes);
 // Bytes of scratch workspace_size(CompressedBlob) needs: 8 + align8(decoder) + align8(largest
-// ring) + 8 (bands + 1) + 2 x the largest layer's vertex count.
+// ring) + 12 (bands + 1) + 2 x the largest layer's vertex count.
 Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes);
 // Bytes of workspace `render` needs for this blob and these parameters (exact for an 8-aligned
 // workspace: one byte less is workspace_too_small). Decodes every stream: a damaged one returns
@@ -109,7 +109,7 @@ struct CompressedWorkspace {
   size_t bytes = 0;
   size_t channel_scratch = 0;
   size_t decoders = 0;          // per layer: the decoder object, the held triangle, its ring and tags
-  size_t band_store = 0;        // per layer: the largest need(V, C) of a band
+  size_t band_store = 0;        // per layer: the largest need(V, C, F) of a band
   uint32_t live_triangles = 0;  // the most live triangles of a layer in one band
   uint32_t live_vertices = 0;   // the most vertices of a layer's live triangles in one band
 };
