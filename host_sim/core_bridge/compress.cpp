@@ -155,7 +155,7 @@ struct LayerStream {
   std::vector<std::uint8_t> bytes;
   std::uint32_t window = 0;
   std::uint32_t pinned = 0;
-  std::size_t ram = 0;  // the decoder's ring and pinned slots
+  std::size_t ram = 0;  // the decoder's ring and pinned slots, and their tags
 };
 
 // One layer's stream; a corner more than `reach` ranks past its triangle's first vertex that is
@@ -510,7 +510,10 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
   for (std::uint32_t i = V > window ? V - window : 0; i < V; ++i)
     if (!valued[i]) values_of(i, -1, -1);
   const std::size_t record = ((4 + 2 * std::size_t(nv) + 3) & ~std::size_t(3)) + 4 + (zienkiewicz ? 8 * nv : 0);
-  return LayerStream{e.finish(), window, pinned_slots, (std::size_t(window) + pinned_slots) * record + 4 * pinned_slots};
+  // The slots' records, the pinned slots' indices and every slot's tag (compressed_ring_bytes and
+  // compressed_tag_bytes, less the value models, which every reach has).
+  const std::size_t slots = std::size_t(window) + pinned_slots;
+  return LayerStream{e.finish(), window, pinned_slots, slots * (record + 2) + 4 * pinned_slots};
 }
 
 }  // namespace
@@ -532,14 +535,17 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
   CompressStats st;
   st.v1_bytes = v1.size();
   for (int l = 0; l < blob.layer_count; ++l) {
-    // The reach with the least decoder RAM among those within 3 % of the bytes without lifts.
+    // The reach with the least decoder RAM among those within 3 % of the bytes without lifts:
+    // reaches from the window down by a tenth at a time, until the bytes pass that (a shorter
+    // reach lifts more corners, each coded apart, so the bytes only grow from there).
     RangeEncoder e;
     LayerStream ls = encode_layer(blob, blob.layers[l], e, std::numeric_limits<std::uint32_t>::max());
     const std::size_t unlifted = ls.bytes.size();
-    for (std::uint32_t reach = ls.window / 2; reach >= 16; reach /= 2) {
+    for (std::uint32_t reach = ls.window - ls.window / 10 - 1; reach >= 16; reach -= reach / 10 + 1) {
       RangeEncoder trial;
       LayerStream candidate = encode_layer(blob, blob.layers[l], trial, reach);
-      if (candidate.ram < ls.ram && candidate.bytes.size() * 100 <= unlifted * 103) {
+      if (candidate.bytes.size() * 100 > unlifted * 103) break;
+      if (candidate.ram < ls.ram) {
         ls = std::move(candidate);
         e = trial;
       }
