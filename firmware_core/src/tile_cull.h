@@ -88,9 +88,10 @@ struct ColumnWindow {
     // record (31 - j records on), a miss clears its bit from the kept bits with one masked clear,
     // and the bit leaves the live ones with a flag-setting clear: 24 Thumb-2 instructions a test
     // against 28 for the lowest bit's index, a shifted hit bit and live &= live - 1 (kodim23
-    // 768 x 512 in 32 x 32 tiles -1.3 % modelled Cortex-M4 cycles). The last record's address as
-    // an integer: the bit's record is that minus stride x j without forming a pointer before the layer's
-    // records (bit 31 - j is live, so its record is in the window).
+    // 768 x 512 in 32 x 32 tiles -1.3 % modelled Cortex-M4 cycles; one more for the band store's
+    // 6-byte records, whose offset takes two). The last record's address as an integer: the bit's
+    // record is that minus stride x j without forming a pointer before the layer's records (bit
+    // 31 - j is live, so its record is in the window).
     const uintptr_t last = uintptr_t(triangles) + 31 * Records::stride;
     uint32_t kept = live;
     while (live) {
@@ -110,11 +111,6 @@ struct ColumnWindow {
 #endif
   }
 #if TS_USE_SSE2
-  // Bit j: triangle j of the eight records at p meets the columns. Coordinates (16 bits) and
-  // bounds are compared as signed 16-bit lanes after flipping the top bit (the order of the
-  // unsigned values); the bounds are clamped to 16 bits only in the direction that keeps more
-  // triangles (a triangle kept in error is clipped away exactly by rasterize, one missed would be
-  // wrong): min(lo, 65535) for max < lo, max(hi - 1, 0) for min > hi - 1.
   // Whether the eight store records at p hold a flag record: a u16 of 0xFFFF among their 48 bytes,
   // which only a flag record's marker is (a slot is at most 0xFFFE, flags at most 0x1FF).
   static bool has_flag_record8(const uint8_t* p) {
@@ -125,6 +121,11 @@ struct ColumnWindow {
     const __m128i c = _mm_cmpeq_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 32)), ones);
     return _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(a, b), c)) != 0;
   }
+  // Bit j: triangle j of the eight records at p meets the columns. Coordinates (16 bits) and
+  // bounds are compared as signed 16-bit lanes after flipping the top bit (the order of the
+  // unsigned values); the bounds are clamped to 16 bits only in the direction that keeps more
+  // triangles (a triangle kept in error is clipped away exactly by rasterize, one missed would be
+  // wrong): min(lo, 65535) for max < lo, max(hi - 1, 0) for min > hi - 1.
   template <typename Records>
   uint32_t meeting8(const uint8_t* p, const uint8_t* positions) const {
     // As the 16-bit lane it goes to (the same bits).

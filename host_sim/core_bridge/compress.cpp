@@ -537,7 +537,7 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
   for (int l = 0; l < blob.layer_count; ++l) {
     // The reach with the least decoder RAM among those within 3 % of the bytes without lifts:
     // reaches from the window down by a tenth at a time, until the bytes pass that (a shorter
-    // reach lifts more corners, each coded apart, so the bytes only grow from there).
+    // reach lifts more corners, each coded apart: the bytes grow as the reach shrinks).
     RangeEncoder e;
     LayerStream ls = encode_layer(blob, blob.layers[l], e, std::numeric_limits<std::uint32_t>::max());
     const std::size_t unlifted = ls.bytes.size();
