@@ -97,7 +97,7 @@ struct BandStore {
   uint32_t slots = 0;          // vertex capacity of the current layout
   uint32_t vertices = 0;       // slots in use: [0, vertices)
   uint32_t added = 0;          // vertices added in the current band
-  uint32_t flag_records = 0;   // records that are flag records
+  uint32_t record_room = 0;    // the most records that fit with `slots` and the renumbering table
   uint16_t* tags = nullptr;    // the decoder's (keep_tags): a slot, or band_store_free
   uint32_t tag_count = 0;
   uint8_t values_per_vertex = 1;
@@ -111,7 +111,7 @@ struct BandStore {
     bytes = size / 4 * 4;
     values_per_vertex = uint8_t(per_vertex);
     has_gradients = with_gradients;
-    vertices = added = flag_records = 0;
+    vertices = added = 0;
     layer = view;
     layer->vertex_count = layer->triangle_count = 0;
     place(0);
@@ -142,10 +142,10 @@ struct BandStore {
       if (s != Status::ok) return s;
     }
     const uint32_t n = count(), records = t.flags ? 2 : 1;
-    if (!fits(slots, n + records, rank_table_bytes(slots))) {
+    if (n + records > record_room) {
       if (slots == vertices) return Status::workspace_too_small;
       relayout(vertices);  // the slack of slots makes room
-      if (!fits(slots, n + records, rank_table_bytes(slots))) return Status::workspace_too_small;
+      if (n + records > record_room) return Status::workspace_too_small;
     }
     uint8_t* p = triangles() + size_t(StoreRecords::stride) * n;
     for (int k = 0; k < 3; ++k) store16(p + 2 * k, slot[k]);
@@ -153,7 +153,6 @@ struct BandStore {
       store16(p + 6, store_flag_marker);
       store16(p + 8, t.flags);
       store16(p + 10, 0);
-      ++flag_records;
     }
     store16(p + size_t(StoreRecords::stride) * records, 0);  // the guard
     layer->triangle_count = n + records;
@@ -174,10 +173,8 @@ struct BandStore {
     uint32_t* words = reinterpret_cast<uint32_t*>(tri + store_record_bytes(n));
     for (uint32_t w = 0; w < n / 32; ++w) words[w] = 0xFFFFFFFFu;
     if (n % 32) words[n / 32] = (1u << (n % 32)) - 1;
-    if (flag_records) {
-      for (uint32_t i = 1; i < n; ++i)
-        if (StoreRecords::is_flag_record(tri + size_t(StoreRecords::stride) * i)) words[i / 32] &= ~(1u << (i % 32));
-    }
+    for (uint32_t i = 1; i < n; ++i)  // (a flag record follows its triangle: never the first)
+      if (StoreRecords::is_flag_record(tri + size_t(StoreRecords::stride) * i)) words[i / 32] &= ~(1u << (i % 32));
     return words;
   }
 
@@ -238,6 +235,12 @@ struct BandStore {
   // Section addresses for `cap` slots.
   void place(uint32_t cap) {
     slots = cap;
+    // fits(cap, n, rank_table_bytes(cap)) for n <= record_room: the room is a multiple of 4, so
+    // the records' 6 n + 2 bytes, rounded up to 4, fit in it exactly when they do unrounded.
+    const size_t used = band_vertex_bytes(cap, values_per_vertex, has_gradients) + rank_table_bytes(cap);
+    const size_t room = used < bytes ? bytes - used : 0;
+    const size_t most = room >= 2 ? (room - 2) / StoreRecords::stride : 0;
+    record_room = most < 0xFFFFFFFFu ? uint32_t(most) : 0xFFFFFFFFu;
     layer->positions = base;
     layer->values = values();
     if (has_gradients) layer->gradients = gradients();
@@ -313,7 +316,7 @@ struct BandStore {
     const uint32_t n = count();
     uint8_t* const tri = triangles();
     const uint8_t* const pos = base;
-    uint32_t kept = 0, flags_kept = 0;
+    uint32_t kept = 0;
     for (uint32_t i = 0; i < n;) {
       const uint8_t* p = tri + stride * i;
       // A triangle's record, and the next one its flag record or not (the guard after the last).
@@ -328,13 +331,11 @@ struct BandStore {
           if (flagged) memcpy(tri + stride * (kept + 1), p + stride, stride);
         }
         kept += flagged ? 2 : 1;
-        flags_kept += flagged;
       }
       i += flagged ? 2 : 1;
     }
     if (kept) store16(tri + stride * kept, 0);  // the guard
     layer->triangle_count = kept;
-    flag_records = flags_kept;
   }
 
   // Ones in a word (no popcount instruction on a Cortex-M4).
