@@ -346,11 +346,11 @@ struct BandStore {
     return (x * 0x01010101u) >> 24;
   }
 
-  // Keeps the vertices the triangles use, in slot order, and renumbers them in the triangles' records and
-  // the decoder's tags (a dropped vertex's tag is band_store_free). The table at the store's end
-  // (rank_table_bytes(slots), slots >= vertices) marks the kept slots, a bit each, and counts the
-  // kept slots before each word: a kept slot's new number is that count plus the kept ones below
-  // it in its word.
+  // Keeps the vertices the triangles use, in slot order, and renumbers them in the triangles'
+  // records (not the flag records) and the decoder's tags (a dropped vertex's tag is
+  // band_store_free). The table at the store's end (rank_table_bytes(slots), slots >= vertices)
+  // marks the kept slots, a bit each, and counts the kept slots before each word: a kept slot's new
+  // number is that count plus the kept ones below it in its word.
   void compact_vertices() {
     const uint32_t n = count(), nv = vertices, words_n = (nv + 31) / 32;
     uint8_t* const tri = triangles();
