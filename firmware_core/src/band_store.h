@@ -2,10 +2,11 @@
 #pragma once
 // The band store of a compressed blob's render: the live triangles of one layer for the current
 // band, as a small v1-shaped layer in the caller's workspace (positions, values, gradients,
-// triangle records in the store's layout, StoreRecords, and the active-set bitmap), which the
-// tile cull and the tile renderer read as they read a v1 blob's layer. Each live vertex is stored
-// once: the triangles' indices are store slots, which the decoder's tags (LayerDecoder::keep_tags)
-// hold for the vertices still in its ring, so a corner's slot is found without a map.
+// triangle records in one of the store's layouts, PackedStoreRecords with at most
+// store_packed_slots vertex slots, else StoreRecords, and the active-set bitmap), which the tile
+// cull and the tile renderer read as they read a v1 blob's layer. Each live vertex is stored once:
+// the triangles' indices are store slots, which the decoder's tags (LayerDecoder::keep_tags) hold
+// for the vertices still in its ring, so a corner's slot is found without a map.
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
@@ -44,22 +45,27 @@ inline size_t band_vertex_bytes(uint32_t slots, uint32_t values_per_vertex, bool
 // not) in 32-bit words and a u16 per word (the kept slots before it), 4-aligned.
 inline size_t rank_table_bytes(uint32_t slots) { return align4_size(6 * ((size_t(slots) + 31) / 32)); }
 
-// Bytes of `records` triangle and flag records (StoreRecords) and their guard, 4-aligned (none
-// without records).
-inline size_t store_record_bytes(uint32_t records) {
-  return records ? align4_size(size_t(StoreRecords::stride) * records + 2) : 0;
+// Bytes of `records` triangle and flag records and their guard, 4-aligned (none without records):
+// packed (PackedStoreRecords) or not (StoreRecords).
+inline size_t store_record_bytes(uint32_t records, bool packed) {
+  if (!records) return 0;
+  return packed ? size_t(PackedStoreRecords::stride) * records + PackedStoreRecords::guard_bytes
+                : align4_size(size_t(StoreRecords::stride) * records + StoreRecords::guard_bytes);
 }
 
+// Whether a store of `slots` slots lays its records out packed (BandStoreRecords).
+inline bool packed_store(uint32_t slots) { return slots <= store_packed_slots; }
+
 // Bytes a store needs to hold V vertices and C triangles of which F have flags: the vertex slots,
-// the C + F records, and the larger of the renumbering table (rank_table_bytes, used when a band
-// starts) and the active-set bitmap (C + F bits in 32-bit words, used while the band is drawn),
-// which share memory.
+// the C + F records (packed when V <= store_packed_slots), and the larger of the
+// renumbering table (rank_table_bytes, used when a band starts) and the active-set bitmap (C + F
+// bits in 32-bit words, used while the band is drawn), which share memory.
 inline size_t band_store_bytes(uint32_t vertices, uint32_t triangles, uint32_t flagged, uint32_t values_per_vertex,
                                bool gradients) {
   const uint32_t records = triangles + flagged;
   const size_t renumber = rank_table_bytes(vertices), bits = bitmap_bytes(records);
-  return band_vertex_bytes(vertices, values_per_vertex, gradients) + store_record_bytes(records) +
-         (renumber > bits ? renumber : bits);
+  return band_vertex_bytes(vertices, values_per_vertex, gradients) +
+         store_record_bytes(records, packed_store(vertices)) + (renumber > bits ? renumber : bits);
 }
 
 // Last pixel row of a triangle with raw y coordinates y0, y1, y2 (a triangle's end, all that
@@ -78,13 +84,24 @@ inline void decoded_row_extent(const Mapping& map, const DecodedTriangle& t, int
   raw_row_extent(map, t.y[0], t.y[1], t.y[2], top, bottom);
 }
 
+// The store's other layout of records.
+template <typename R>
+struct OtherLayout {
+  using type = PackedStoreRecords;
+};
+template <>
+struct OtherLayout<PackedStoreRecords> {
+  using type = StoreRecords;
+};
+
 // The store in `bytes` of workspace: [vertex slots for `slots` vertices: positions, values,
 // gradients][records, growing, and their guard]...[renumbering table of `slots` at the end]. Its
 // need is band_store_bytes(vertices, triangles, flagged) at every moment, whatever the slack:
 // slots grow when a further vertex finds none free (the arrays after the positions and the records
 // move up), and shrink to the vertex count when the records or the bitmap would not fit otherwise,
-// so a store of `bytes` takes every band whose need is at most `bytes`. Invariant between calls:
-// rank_table_bytes(slots) fit after the records.
+// so a store of `bytes` takes every band whose need is at most `bytes`. The records' layout follows
+// the slots (packed_store): a relayout across store_packed_slots rewrites them in the other one.
+// Invariant between calls: rank_table_bytes(slots) fit after the records.
 // The decoder's tags (`tags`, tag_count of them) hold the slot of each vertex of its ring that is
 // in the store, else band_store_free: a corner's tag finds its slot, and a vertex out of the ring
 // is never a corner again.
@@ -102,6 +119,7 @@ struct BandStore {
   uint32_t tag_count = 0;
   uint8_t values_per_vertex = 1;
   bool has_gradients = false;
+  bool packed = false;  // the records are PackedStoreRecords (else StoreRecords): packed_store(slots)
 
   void init(uint8_t* at, size_t size, uint32_t per_vertex, bool with_gradients, BlobLayer* view,
             uint16_t* decoder_tags, uint32_t decoder_tag_count) {
@@ -147,14 +165,13 @@ struct BandStore {
       relayout(vertices);  // the slack of slots makes room
       if (n + records > record_room) return Status::workspace_too_small;
     }
-    uint8_t* p = triangles() + size_t(StoreRecords::stride) * n;
-    for (int k = 0; k < 3; ++k) store16(p + 2 * k, slot[k]);
-    if (t.flags) {
-      store16(p + 6, store_flag_marker);
-      store16(p + 8, t.flags);
-      store16(p + 10, 0);
-    }
-    store16(p + size_t(StoreRecords::stride) * records, 0);  // the guard
+    with_layout([&](auto r) {
+      using R = decltype(r);
+      uint8_t* const p = triangles() + size_t(R::stride) * n;
+      write_triangle<R>(p, slot[0], slot[1], slot[2]);
+      if (t.flags) write_flags<R>(p + R::stride, t.flags);
+      write_guard<R>(p + R::stride * records);
+    });
     layer->triangle_count = n + records;
     return Status::ok;
   }
@@ -169,12 +186,15 @@ struct BandStore {
       relayout(vertices);
       if (!fits(slots, n, bitmap_bytes(n))) return nullptr;
     }
-    uint8_t* const tri = triangles();
-    uint32_t* words = reinterpret_cast<uint32_t*>(tri + store_record_bytes(n));
+    uint32_t* words = reinterpret_cast<uint32_t*>(triangles() + store_record_bytes(n, packed));
     for (uint32_t w = 0; w < n / 32; ++w) words[w] = 0xFFFFFFFFu;
     if (n % 32) words[n / 32] = (1u << (n % 32)) - 1;
-    for (uint32_t i = 1; i < n; ++i)  // (a flag record follows its triangle: never the first)
-      if (StoreRecords::is_flag_record(tri + size_t(StoreRecords::stride) * i)) words[i / 32] &= ~(1u << (i % 32));
+    const uint8_t* const tri = triangles();
+    with_layout([&](auto r) {
+      using R = decltype(r);
+      for (uint32_t i = 1; i < n; ++i)  // (a flag record follows its triangle: never the first)
+        if (R::is_flag_record(tri + size_t(R::stride) * i)) words[i / 32] &= ~(1u << (i % 32));
+    });
     return words;
   }
 
@@ -183,6 +203,47 @@ struct BandStore {
   uint8_t* gradients() const { return values() + align4_size(2 * size_t(slots) * values_per_vertex); }
   uint8_t* triangles() const {
     return gradients() + (has_gradients ? 8 * size_t(slots) * values_per_vertex : 0);
+  }
+
+  // f(R{}) with R the layout of the records (PackedStoreRecords or StoreRecords): one test a pass.
+  template <typename F>
+  void with_layout(F&& f) const {
+    if (packed) {
+      f(PackedStoreRecords{});
+    } else {
+      f(StoreRecords{});
+    }
+  }
+  uint32_t stride() const { return packed ? PackedStoreRecords::stride : StoreRecords::stride; }
+  // A triangle's record, a flag record (StoreRecords: marker, flags, 0; PackedStoreRecords: marker
+  // | flags) and the guard (0), in layout R.
+  template <typename R>
+  static void write_triangle(uint8_t* p, uint32_t s0, uint32_t s1, uint32_t s2) {
+    if constexpr (R::stride == PackedStoreRecords::stride) {
+      store32(p, PackedStoreRecords::pack(s0, s1, s2));
+    } else {
+      store16(p, uint16_t(s0));
+      store16(p + 2, uint16_t(s1));
+      store16(p + 4, uint16_t(s2));
+    }
+  }
+  template <typename R>
+  static void write_flags(uint8_t* p, uint16_t flags) {
+    if constexpr (R::stride == PackedStoreRecords::stride) {
+      store32(p, packed_flag_marker | flags);
+    } else {
+      store16(p, store_flag_marker);
+      store16(p + 2, flags);
+      store16(p + 4, 0);
+    }
+  }
+  template <typename R>
+  static void write_guard(uint8_t* p) {
+    if constexpr (R::guard_bytes == 4) {
+      store32(p, 0);
+    } else {
+      store16(p, 0);
+    }
   }
 
   // Little-endian (the v1 layout); on a little-endian target one store each.
@@ -216,30 +277,40 @@ struct BandStore {
     }
   }
 
-  // Whether `cap` slots, n records and `tail` bytes after them fit.
+  // Whether `cap` slots, n records in cap's layout and `tail` bytes after them fit.
   bool fits(uint32_t cap, uint32_t n, size_t tail) const {
-    return band_vertex_bytes(cap, values_per_vertex, has_gradients) + store_record_bytes(n) + tail <= bytes;
+    return band_vertex_bytes(cap, values_per_vertex, has_gradients) +
+               store_record_bytes(n, packed_store(cap)) + tail <=
+           bytes;
   }
-  // The most slots that fit with n records and their renumbering table.
+  // The most slots that fit with n records and their renumbering table: the most with records not
+  // packed when that passes store_packed_slots, else the most with packed ones (up to that).
   uint32_t most_slots(uint32_t n) const {
-    const size_t t = store_record_bytes(n);
-    if (t >= bytes) return 0;
+    const uint32_t wide = most_slots_in(n, false, store_packed_slots, band_store_max_vertices);
+    return wide > store_packed_slots ? wide : most_slots_in(n, true, 0, store_packed_slots);
+  }
+  // The most slots in (low, high] that fit with n records laid out packed or not (low if none).
+  uint32_t most_slots_in(uint32_t n, bool packed_records, uint32_t low, uint32_t high) const {
+    const size_t t = store_record_bytes(n, packed_records);
+    if (t >= bytes) return low;
     const size_t per = 4 + 2 * size_t(values_per_vertex) + (has_gradients ? 8 * size_t(values_per_vertex) : 0);
     // An upper bound: a slot costs per bytes and 6 / 32 of the table; the sections' rounding only adds.
     size_t c = 32 * (bytes - t) / (32 * per + 6);
-    if (c > band_store_max_vertices) c = band_store_max_vertices;
-    while (c > 0 && !fits(uint32_t(c), n, rank_table_bytes(uint32_t(c)))) --c;
-    return uint32_t(c);
+    if (c > high) c = high;
+    while (c > low && !fits(uint32_t(c), n, rank_table_bytes(uint32_t(c)))) --c;
+    return uint32_t(c > low ? c : low);
   }
 
   // Section addresses for `cap` slots.
   void place(uint32_t cap) {
     slots = cap;
+    packed = packed_store(cap);
     // fits(cap, n, rank_table_bytes(cap)) for n <= record_room: the room is a multiple of 4, so
-    // the records' 6 n + 2 bytes, rounded up to 4, fit in it exactly when they do unrounded.
+    // the records' stride n + guard bytes, rounded up to 4, fit in it exactly when they do unrounded.
     const size_t used = band_vertex_bytes(cap, values_per_vertex, has_gradients) + rank_table_bytes(cap);
     const size_t room = used < bytes ? bytes - used : 0;
-    const size_t most = room >= 2 ? (room - 2) / StoreRecords::stride : 0;
+    const size_t guard = packed ? PackedStoreRecords::guard_bytes : StoreRecords::guard_bytes;
+    const size_t most = room >= guard ? (room - guard) / stride() : 0;
     record_room = most < 0xFFFFFFFFu ? uint32_t(most) : 0xFFFFFFFFu;
     layer->positions = base;
     layer->values = values();
@@ -254,6 +325,7 @@ struct BandStore {
     uint8_t* const old_values = values();
     uint8_t* const old_gradients = gradients();
     uint8_t* const old_triangles = triangles();
+    const bool old_packed = packed;
     const size_t nv = vertices, nt = count();
     const size_t value_bytes = 2 * nv * values_per_vertex;
     const size_t gradient_bytes = has_gradients ? 8 * nv * values_per_vertex : 0;
@@ -262,14 +334,46 @@ struct BandStore {
     uint8_t* const to_gradients = gradients();
     uint8_t* const to_triangles = triangles();
     // The sections after the positions all move the same way: the last first when they move up.
+    // More slots never lay the records out packed when fewer did not, so the records grow only
+    // when they move up and shrink only when they move down.
     if (to_triangles > old_triangles) {
-      move_words(to_triangles, old_triangles, store_record_bytes(uint32_t(nt)));
+      move_records(to_triangles, old_triangles, uint32_t(nt), old_packed);
       if (gradient_bytes) move_words(to_gradients, old_gradients, gradient_bytes);
       move_words(to_values, old_values, value_bytes);
     } else if (to_triangles < old_triangles) {
       move_words(to_values, old_values, value_bytes);
       if (gradient_bytes) move_words(to_gradients, old_gradients, gradient_bytes);
-      move_words(to_triangles, old_triangles, store_record_bytes(uint32_t(nt)));
+      move_records(to_triangles, old_triangles, uint32_t(nt), old_packed);
+    }
+  }
+  // The n records at `from` (packed as `from_packed`) to `to` in the current layout, with their
+  // guard. In one layout a move of words; across layouts record by record, the last first when
+  // they grow (up: unpacked from packed, each written at or above where it was read, past the
+  // records before it), the first first when they shrink (down).
+  void move_records(uint8_t* to, const uint8_t* from, uint32_t n, bool from_packed) {
+    if (from_packed == packed) {
+      move_words(to, from, store_record_bytes(n, packed));
+      return;
+    }
+    if (!n) return;
+    // From R to the other layout, record i.
+    auto convert = [&](auto r, uint32_t i) {
+      using R = decltype(r);
+      using To = typename OtherLayout<R>::type;
+      const uint8_t* p = from + size_t(R::stride) * i;
+      uint8_t* q = to + size_t(To::stride) * i;
+      if (R::is_flag_record(p)) {
+        write_flags<To>(q, R::stride == PackedStoreRecords::stride ? uint16_t(load_u32(p)) : load16(p + 2));
+      } else {
+        write_triangle<To>(q, R::vertex(p, 0), R::vertex(p, 1), R::vertex(p, 2));
+      }
+    };
+    if (packed) {
+      for (uint32_t i = 0; i < n; ++i) convert(StoreRecords{}, i);
+      write_guard<PackedStoreRecords>(to + size_t(PackedStoreRecords::stride) * n);
+    } else {
+      for (uint32_t i = n; i-- > 0;) convert(PackedStoreRecords{}, i);
+      write_guard<StoreRecords>(to + size_t(StoreRecords::stride) * n);
     }
   }
 
@@ -312,7 +416,11 @@ struct BandStore {
   // Drops the triangles whose last row is above y0 with their flag records, keeping the others
   // in order.
   void drop_ended(const Mapping& map, int32_t y0) {
-    constexpr size_t stride = StoreRecords::stride;
+    with_layout([&](auto r) { drop_ended_as<decltype(r)>(map, y0); });
+  }
+  template <typename R>
+  void drop_ended_as(const Mapping& map, int32_t y0) {
+    constexpr size_t stride = R::stride;
     const uint32_t n = count();
     uint8_t* const tri = triangles();
     const uint8_t* const pos = base;
@@ -320,10 +428,10 @@ struct BandStore {
     for (uint32_t i = 0; i < n;) {
       const uint8_t* p = tri + stride * i;
       // A triangle's record, and the next one its flag record or not (the guard after the last).
-      const bool flagged = StoreRecords::is_flag_record(p + stride);
-      const int32_t bottom = raw_row_bottom(map, load16(pos + 4 * size_t(load16(p)) + 2),
-                                            load16(pos + 4 * size_t(load16(p + 2)) + 2),
-                                            load16(pos + 4 * size_t(load16(p + 4)) + 2));
+      const bool flagged = R::is_flag_record(p + stride);
+      const int32_t bottom = raw_row_bottom(map, load16(pos + 4 * size_t(R::vertex(p, 0)) + 2),
+                                            load16(pos + 4 * size_t(R::vertex(p, 1)) + 2),
+                                            load16(pos + 4 * size_t(R::vertex(p, 2)) + 2));
       if (bottom >= y0) {
         // Records of constant size, at least one record apart when they move: no overlap.
         if (kept != i) {
@@ -334,7 +442,7 @@ struct BandStore {
       }
       i += flagged ? 2 : 1;
     }
-    if (kept) store16(tri + stride * kept, 0);  // the guard
+    if (kept) write_guard<R>(tri + stride * kept);
     layer->triangle_count = kept;
   }
 
@@ -359,14 +467,17 @@ struct BandStore {
     uint32_t* const marks = reinterpret_cast<uint32_t*>(base + bytes - rank_table_bytes(slots));
     uint16_t* const before = reinterpret_cast<uint16_t*>(marks + (slots + 31) / 32);
     for (uint32_t w = 0; w < words_n; ++w) marks[w] = 0;
-    for (uint32_t i = 0; i < n; ++i) {
-      const uint8_t* p = tri + size_t(StoreRecords::stride) * i;
-      if (StoreRecords::is_flag_record(p)) continue;
-      for (int k = 0; k < 3; ++k) {
-        const uint32_t s = load16(p + 2 * k);
-        marks[s >> 5] |= 1u << (s & 31);
+    with_layout([&](auto r) {
+      using R = decltype(r);
+      for (uint32_t i = 0; i < n; ++i) {
+        const uint8_t* p = tri + size_t(R::stride) * i;
+        if (R::is_flag_record(p)) continue;
+        for (int k = 0; k < 3; ++k) {
+          const uint32_t s = R::vertex(p, k);
+          marks[s >> 5] |= 1u << (s & 31);
+        }
       }
-    }
+    });
     uint32_t kept = 0;
     for (uint32_t w = 0; w < words_n; ++w) {
       before[w] = uint16_t(kept);
@@ -394,11 +505,14 @@ struct BandStore {
       const uint32_t w = s >> 5, below = (1u << (s & 31)) - 1;
       return uint16_t(before[w] + ones(marks[w] & below));
     };
-    for (uint32_t i = 0; i < n; ++i) {
-      uint8_t* p = tri + size_t(StoreRecords::stride) * i;
-      if (StoreRecords::is_flag_record(p)) continue;
-      for (int k = 0; k < 3; ++k) store16(p + 2 * k, rank(load16(p + 2 * k)));
-    }
+    with_layout([&](auto r) {
+      using R = decltype(r);
+      for (uint32_t i = 0; i < n; ++i) {
+        uint8_t* p = tri + size_t(R::stride) * i;
+        if (R::is_flag_record(p)) continue;
+        write_triangle<R>(p, rank(R::vertex(p, 0)), rank(R::vertex(p, 1)), rank(R::vertex(p, 2)));
+      }
+    });
     for (uint32_t i = 0; i < tag_count; ++i) {
       const uint32_t s = tags[i];
       if (s < nv) tags[i] = is_kept(s) ? rank(s) : band_store_free;  // (past nv: none)

@@ -248,7 +248,7 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
                    uint32_t(compressed_tag_bytes(blob, l) / 2));
     sets[l].layer = &view.layers[l];
   }
-  const detail::TileRenderer draw = detail::tile_renderer<detail::StoreRecords>(r.format);
+  const detail::TileRenderer draw = detail::tile_renderer<detail::BandStoreRecords>(r.format);
   detail::TileBuffers tiles(buffers);
   for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
     const int32_t by1 = by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1;

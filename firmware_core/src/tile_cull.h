@@ -64,7 +64,7 @@ struct ColumnWindow {
       for (int g = 0; g < 4; ++g) {
         const uint32_t byte = (live >> (8 * g)) & 0xFFu;
         const uint8_t* const eight = triangles + size_t(8 * g) * Records::stride;
-        if ((byte & (byte - 1)) && !(Records::has_flag_records && has_flag_record8(eight))) {
+        if ((byte & (byte - 1)) && !(Records::has_flag_records && has_flag_record8<Records>(eight))) {
           hits |= (meeting8<Records>(eight, positions) & byte) << (8 * g);
         } else {
           rest |= byte << (8 * g);
@@ -75,9 +75,9 @@ struct ColumnWindow {
     for (; live; live &= live - 1) {
       const uint32_t i = uint32_t(__builtin_ctz(live));
       const uint8_t* p = triangles + size_t(i) * Records::stride;
-      const int32_t x0 = load_u16(positions + 4 * size_t(load_u16(p)));
-      const int32_t x1 = load_u16(positions + 4 * size_t(load_u16(p + 2)));
-      const int32_t x2 = load_u16(positions + 4 * size_t(load_u16(p + 4)));
+      const int32_t x0 = load_u16(positions + 4 * size_t(Records::vertex(p, 0)));
+      const int32_t x1 = load_u16(positions + 4 * size_t(Records::vertex(p, 1)));
+      const int32_t x2 = load_u16(positions + 4 * size_t(Records::vertex(p, 2)));
       const int32_t outside = (max3(x0, x1, x2) - low) | (high - min3(x0, x1, x2));  // < 0: misses
       hits |= uint32_t(outside >= 0) << i;
     }
@@ -98,9 +98,9 @@ struct ColumnWindow {
       const uint32_t j = uint32_t(__builtin_clz(live));
       const uint32_t bit = 0x80000000u >> j;
       const uint8_t* p = reinterpret_cast<const uint8_t*>(last - j * Records::stride);
-      const int32_t x0 = load_u16(positions + 4 * size_t(load_u16(p)));
-      const int32_t x1 = load_u16(positions + 4 * size_t(load_u16(p + 2)));
-      const int32_t x2 = load_u16(positions + 4 * size_t(load_u16(p + 4)));
+      const int32_t x0 = load_u16(positions + 4 * size_t(Records::vertex(p, 0)));
+      const int32_t x1 = load_u16(positions + 4 * size_t(Records::vertex(p, 1)));
+      const int32_t x2 = load_u16(positions + 4 * size_t(Records::vertex(p, 2)));
       // The sign of ANDed differences (misses when every x is below low or every x above high):
       // the same test as max and min, which take IT blocks on Cortex-M4.
       const int32_t outside = ((x0 - low) & (x1 - low) & (x2 - low)) | ((high - x0) & (high - x1) & (high - x2));
@@ -111,15 +111,22 @@ struct ColumnWindow {
 #endif
   }
 #if TS_USE_SSE2
-  // Whether the eight store records at p hold a flag record: a u16 of 0xFFFF among their 48 bytes,
-  // which only a flag record's marker is (a slot is at most 0xFFFE, flags at most 0x1FF).
+  // Whether the eight store records at p hold a flag record. StoreRecords: a u16 of 0xFFFF among
+  // their 48 bytes, which only a flag record's marker is (a slot is at most 0xFFFE, flags at most
+  // 0x1FF). PackedStoreRecords: a negative int32 among their 32 bytes (a flag record's two top bits
+  // are set, a triangle's clear).
+  template <typename Records>
   static bool has_flag_record8(const uint8_t* p) {
-    static_assert(StoreRecords::stride * 8 == 48, "three vectors");
-    const __m128i ones = _mm_set1_epi16(-1);
-    const __m128i a = _mm_cmpeq_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)), ones);
-    const __m128i b = _mm_cmpeq_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 16)), ones);
-    const __m128i c = _mm_cmpeq_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 32)), ones);
-    return _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(a, b), c)) != 0;
+    auto at = [p](int i) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 16 * i)); };
+    if constexpr (Records::stride == PackedStoreRecords::stride) {
+      static_assert(int32_t(packed_flag_marker) < 0 && (packed_flag_marker << 1) >> 31 == 1, "the marker's top bits");
+      return _mm_movemask_ps(_mm_castsi128_ps(_mm_or_si128(at(0), at(1)))) != 0;  // the sign bits
+    } else {
+      static_assert(StoreRecords::stride * 8 == 48, "three vectors");
+      const __m128i ones = _mm_set1_epi16(-1);
+      const __m128i a = _mm_cmpeq_epi16(at(0), ones), b = _mm_cmpeq_epi16(at(1), ones), c = _mm_cmpeq_epi16(at(2), ones);
+      return _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(a, b), c)) != 0;
+    }
   }
   // Bit j: triangle j of the eight records at p meets the columns. Coordinates (16 bits) and
   // bounds are compared as signed 16-bit lanes after flipping the top bit (the order of the
@@ -130,7 +137,7 @@ struct ColumnWindow {
   uint32_t meeting8(const uint8_t* p, const uint8_t* positions) const {
     // As the 16-bit lane it goes to (the same bits).
     auto x = [&](int j, int k) {
-      return int16_t(load_u16(positions + 4 * size_t(load_u16(p + j * Records::stride + 2 * k))));
+      return int16_t(load_u16(positions + 4 * size_t(Records::vertex(p + j * Records::stride, k))));
     };
     const __m128i top_bit = _mm_set1_epi16(int16_t(0x8000));
     __m128i v[3];

@@ -36,12 +36,33 @@ void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, bool cull_
   const ColumnWindow columns(map, rect);
   set.for_each_live_word([&](uint32_t t, uint32_t live, uint32_t span, uint32_t p) {
     uint32_t done = 0;
-    for (uint32_t hits = cull_columns ? columns.meeting<Records>(*set.layer, t, live, span) : live; hits;
-         hits &= hits - 1) {
-      const uint32_t i = uint32_t(__builtin_ctz(hits));
-      TriangleView tv;
-      load_triangle<Records>(*set.layer, t + i, map, &tv);
-      done |= uint32_t(rasterize(tv, rect, shader)) << i;
+    if constexpr (IsBandStore<Records>::value) {
+      // The band store's records in the layout of its slots (triangle_records.h): a test a word and
+      // a triangle, one tile path for both layouts (rasterize keeps one call site, inlined).
+      const BlobLayer& layer = *set.layer;
+      const bool packed = layer.vertex_count <= store_packed_slots;
+      uint32_t hits = live;
+      if (cull_columns)
+        hits = packed ? columns.meeting<PackedStoreRecords>(layer, t, live, span)
+                      : columns.meeting<StoreRecords>(layer, t, live, span);
+      for (; hits; hits &= hits - 1) {
+        const uint32_t i = uint32_t(__builtin_ctz(hits));
+        TriangleView tv;
+        if (packed) {
+          load_triangle<PackedStoreRecords>(layer, t + i, map, &tv);
+        } else {
+          load_triangle<StoreRecords>(layer, t + i, map, &tv);
+        }
+        done |= uint32_t(rasterize(tv, rect, shader)) << i;
+      }
+    } else {
+      for (uint32_t hits = cull_columns ? columns.meeting<Records>(*set.layer, t, live, span) : live; hits;
+           hits &= hits - 1) {
+        const uint32_t i = uint32_t(__builtin_ctz(hits));
+        TriangleView tv;
+        load_triangle<Records>(*set.layer, t + i, map, &tv);
+        done |= uint32_t(rasterize(tv, rect, shader)) << i;
+      }
     }
     set.words[p / 32] &= ~(done << (p % 32));
   });

@@ -29,7 +29,7 @@ inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map
   const uint8_t* p = layer.triangles + size_t(t) * Records::stride;
   TS_UNROLL
   for (int k = 0; k < 3; ++k) {
-    tv->v[k] = load_u16(p + 2 * k);
+    tv->v[k] = uint16_t(Records::vertex(p, k));
     const uint8_t* pos = layer.positions + 4 * size_t(tv->v[k]);
     tv->x[k] = map.x(load_u16(pos));
     tv->y[k] = map.y(load_u16(pos + 2));

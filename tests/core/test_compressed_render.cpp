@@ -271,15 +271,17 @@ TEST_CASE("every damaged byte and every truncation of a compressed blob renders 
 
 namespace {
 
-// The store's need for V vertices and C triangles of which F have flags (render.h's formula):
-// vertex slots (4 bytes of position, 2 per value, 8 per gradient pair, each array 4-aligned), 6
-// bytes per triangle and per flag record and a u16 guard (4-aligned), and the larger of the
-// renumbering table (align4(6 ceil(V / 32)): a bit and, per 32, a u16) and the bitmap (a bit per
-// record, 4 ceil((C + F) / 32)).
+// The store's need for V vertices and C triangles of which F have flags (render.h's formula, for a
+// blob of one layer): vertex slots (4 bytes of position, 2 per value, 8 per gradient pair, each
+// array 4-aligned); per triangle and per flag record 4 bytes and a u32 guard with at most 1,024
+// vertices, else 6 bytes and a u16 guard (4-aligned); and the larger of the renumbering table
+// (align4(6 ceil(V / 32)): a bit and, per 32, a u16) and the bitmap (a bit per record,
+// 4 ceil((C + F) / 32)).
 std::size_t store_formula(std::size_t v, std::size_t c, std::size_t f, std::size_t per_vertex, bool gradients) {
   auto a4 = [](std::size_t n) { return (n + 3) / 4 * 4; };
   const std::size_t renumber = a4(6 * ((v + 31) / 32)), bits = 4 * ((c + f + 31) / 32);
-  return 4 * v + a4(2 * v * per_vertex) + (gradients ? 8 * v * per_vertex : 0) + (c ? a4(6 * (c + f) + 2) : 0) +
+  const std::size_t records = !c ? 0 : (v <= 1024 ? 4 * (c + f) + 4 : a4(6 * (c + f) + 2));
+  return 4 * v + a4(2 * v * per_vertex) + (gradients ? 8 * v * per_vertex : 0) + records +
          (renumber > bits ? renumber : bits);
 }
 
@@ -399,4 +401,46 @@ TEST_CASE("a band at the store's index limit: a layer of 65,535 vertices in one 
   check_same_renders(v1, packed, {o}, {{0, 0}, {0, 128}});
   check_exact_workspace(packed, {0, 0}, o);
   check_one_band_store(v1, packed, mesh, core::Method::bilinear);
+}
+
+TEST_CASE("the band store's records change layout where its vertices pass 1,024, both ways") {
+  // Dense at the top, sparse below: the first band's store passes 1,024 vertices while it takes
+  // triangles (its records unpacked in place), a later band's falls back under it (packed again),
+  // and one band over the frame holds them all unpacked; 1,024 and 1,025 vertices in one band
+  // meet the limit exactly.
+  for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) {
+    CAPTURE(int(m));
+    Mesh mesh;
+    mesh.value_count = 3;
+    std::mt19937 rng(17);
+    std::set<std::pair<int, int>> taken;
+    for (auto [x, y] : {std::pair{0, 0}, {119, 0}, {0, 199}, {119, 199}}) {
+      taken.insert({x, y});
+      mesh.points.push_back({double(x), double(y)});
+    }
+    std::uniform_int_distribution<int> rx(0, 119), top(0, 47), rest(48, 199);
+    while (mesh.points.size() < 1500) {
+      const std::pair<int, int> p{rx(rng), mesh.points.size() < 1400 ? top(rng) : rest(rng)};
+      if (taken.insert(p).second) mesh.points.push_back({double(p.first), double(p.second)});
+    }
+    std::uniform_real_distribution<double> rv(0, 255);
+    for (std::size_t i = 0; i < mesh.points.size() * 3; ++i) mesh.values.push_back(rv(rng));
+    mesh.triangles = delaunay_triangulation(mesh.points);
+    const Triangulation tri = single_mesh(mesh, 120, 200, ColorSpace::rgb);
+    const std::vector<std::uint8_t> v1 = pack_blob(tri, m), packed = compress_blob(v1, "dense top");
+    const std::vector<Tiling> tilings = {{0, 0}, {0, 50}, {0, 40}, {32, 32}, {0, 9}};
+    CHECK(figures_of(packed, params_of(CoreOptions{}, {0, 50})).live_vertices > 1024);
+    CHECK(figures_of(packed, params_of(CoreOptions{}, {0, 9})).live_vertices <= 1024);
+    check_same_renders(v1, packed, every_format(), tilings);
+    for (const Tiling& t : tilings) check_exact_workspace(packed, t);
+    check_one_band_store(v1, packed, mesh, m);
+    for (int n : {1020, 1021}) {  // 1,024 and 1,025 vertices with the corners
+      const Mesh edge = random_lattice_mesh(64, 48, n, 19, 0, 3);
+      const std::vector<std::uint8_t> e1 = pack_blob(single_mesh(edge, 64, 48, ColorSpace::rgb), m),
+                                      e2 = compress_blob(e1, "limit");
+      check_same_renders(e1, e2, every_format(), {{0, 0}, {16, 16}});
+      check_exact_workspace(e2, {0, 0});
+      check_one_band_store(e1, e2, edge, m);
+    }
+  }
 }

@@ -89,8 +89,9 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
 //   8 + scratch + sum over layers (align8(decoder) + align8(ring) + align8(tags)) + layers x band
 //   store, tags = compressed_tag_bytes, band store = the largest over the layers and bands of
 //     need(V, C, F) with C the band's live triangles, F those with flags and V their vertices,
-//     need(V, C, F) = 4 V + align4(2 v V) + 8 v V (zienkiewicz) + align4(6 (C + F) + 2) (0 if C = 0)
-//       + max(align4(6 ceil(V / 32)), 4 ceil((C + F) / 32))
+//     need(V, C, F) = 4 V + align4(2 v V) + 8 v V (zienkiewicz) + records
+//       + max(align4(6 ceil(V / 32)), 4 ceil((C + F) / 32)),
+//     records = 4 (C + F) + 4 for V <= 1,024 (10-bit slots), else align4(6 (C + F) + 2); 0 if C = 0
 // (v values per vertex; the channel scratch as for a v1 blob), which only a decode of the streams
 // finds: workspace_size decodes them once with `scratch` (measure_scratch_size bytes) to count
 // each band's C, F and V and checks every stream to its end.
@@ -100,8 +101,8 @@ Status tile_buffer_size(const CompressedBlob& blob, const RenderParams& params, 
 Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes);
 // Bytes of workspace `render` needs for this blob and these parameters (exact for an 8-aligned
 // workspace: one byte less is workspace_too_small). Decodes every stream: a damaged one returns
-// its status and `error` the decoder's byte offset. The store's u16 vertex slots hold any layer
-// (at most 65,535 vertices); its triangles are bounded by the workspace only.
+// its status and `error` the decoder's byte offset. The store's vertex slots hold any layer (at
+// most 65,535 vertices); its triangles are bounded by the workspace only.
 Status workspace_size(const CompressedBlob& blob, const RenderParams& params, void* scratch, size_t scratch_bytes,
                       size_t* bytes, BlobError* error = nullptr);
 // The terms of that workspace (bytes == 8 + channel_scratch + decoders + layers x band_store).
