@@ -124,7 +124,8 @@ struct ColumnWindow {
     } else {
       static_assert(StoreRecords::stride * 8 == 48, "three vectors");
       const __m128i ones = _mm_set1_epi16(-1);
-      const __m128i a = _mm_cmpeq_epi16(at(0), ones), b = _mm_cmpeq_epi16(at(1), ones), c = _mm_cmpeq_epi16(at(2), ones);
+      const __m128i a = _mm_cmpeq_epi16(at(0), ones), b = _mm_cmpeq_epi16(at(1), ones),
+                    c = _mm_cmpeq_epi16(at(2), ones);
       return _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(a, b), c)) != 0;
     }
   }

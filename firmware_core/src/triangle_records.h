@@ -22,11 +22,10 @@ struct BlobRecords {
 };
 
 // The band store's with more than store_packed_slots slots (its layer's vertex_count): u16 v0,
-// v1, v2 in store slots. A
-// triangle with flags is followed by a flag record, u16 store_flag_marker, u16 flags, u16 0, never
-// live in the active set (so the cull and the tile renderer never take it for a triangle; a slot
-// is at most 0xFFFE). The records are followed by a u16 guard (0), so that the first u16 after a
-// triangle's record is always there.
+// v1, v2 in store slots. A triangle with flags is followed by a flag record, u16
+// store_flag_marker, u16 flags, u16 0, never live in the active set (so the cull and the tile
+// renderer never take it for a triangle; a slot is at most 0xFFFE). The records are followed by a
+// u16 guard (0), so that the first u16 after a triangle's record is always there.
 constexpr uint16_t store_flag_marker = 0xFFFF;
 struct StoreRecords {
   static constexpr uint32_t stride = 6;
@@ -42,9 +41,9 @@ struct StoreRecords {
   }
 };
 
-// The band store's with at most store_packed_slots slots (its layer's vertex_count): one u32 v0 | v1 << 10 | v2 << 20 (its
-// two top bits 0). A triangle with flags is followed by a flag record, u32 packed_flag_marker |
-// flags (its two top bits 1), and the records by a u32 guard (0).
+// The band store's with at most store_packed_slots slots (its layer's vertex_count): one u32
+// v0 | v1 << 10 | v2 << 20 (its two top bits 0). A triangle with flags is followed by a flag
+// record, u32 packed_flag_marker | flags (its two top bits 1), and the records by a u32 guard (0).
 constexpr uint32_t store_packed_slots = 1024;
 constexpr uint32_t packed_flag_marker = 0xC0000000u;
 struct PackedStoreRecords {
@@ -53,9 +52,9 @@ struct PackedStoreRecords {
   static constexpr int slot_bits = 10;
   static constexpr bool has_flag_records = true;
   static_assert(store_packed_slots == 1u << slot_bits, "a slot in 10 bits");
-  // Inlined where the code is optimized for size too (-Os called them: +19 % modelled Cortex-M4
-  // cycles of a compressed blob's render).
   static uint32_t pack(uint32_t v0, uint32_t v1, uint32_t v2) { return v0 | v1 << slot_bits | v2 << 2 * slot_bits; }
+  // The readers inlined where the code is optimized for size too (-Os called them: +19 % modelled
+  // Cortex-M4 cycles of a compressed blob's render).
   __attribute__((always_inline)) static uint32_t word(const uint8_t* p) {
     return uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24);
   }
