@@ -405,9 +405,10 @@ TEST_CASE("a band at the store's index limit: a layer of 65,535 vertices in one 
 
 TEST_CASE("the band store's records change layout where its vertices pass 1,024, both ways") {
   // Dense at the top, sparse below: the first band's store passes 1,024 vertices while it takes
-  // triangles (its records unpacked in place), a later band's falls back under it (packed again),
-  // and one band over the frame holds them all unpacked; 1,024 and 1,025 vertices in one band
-  // meet the limit exactly.
+  // triangles (its records unpacked as they move up), a later band's falls back under it (packed
+  // again as they move down), and one band over the frame holds them all unpacked; 1,024 and
+  // 1,025 vertices in one band meet the limit exactly. (test_band_store.cpp checks the store's
+  // records and guard after every band against a model.)
   for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) {
     CAPTURE(int(m));
     Mesh mesh;
