@@ -119,7 +119,10 @@ struct BandStore {
   uint32_t tag_count = 0;
   uint8_t values_per_vertex = 1;
   bool has_gradients = false;
-  bool packed = false;  // the records are PackedStoreRecords (else StoreRecords): packed_store(slots)
+  // The records are PackedStoreRecords (else StoreRecords): packed_store(slots), set with the slots
+  // by place(). Kept, not derived where used: deriving it cost zienkiewicz's compressed render up to
+  // 0.08 % modelled Cortex-M4 cycles at -O2.
+  bool packed = false;
 
   void init(uint8_t* at, size_t size, uint32_t per_vertex, bool with_gradients, BlobLayer* view,
             uint16_t* decoder_tags, uint32_t decoder_tag_count) {

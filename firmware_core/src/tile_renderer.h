@@ -38,7 +38,9 @@ void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, bool cull_
     uint32_t done = 0;
     if constexpr (IsBandStore<Records>::value) {
       // The band store's records in the layout of its slots (triangle_records.h): a test a word and
-      // a triangle, one tile path for both layouts (rasterize keeps one call site, inlined).
+      // a triangle, one tile path for both layouts (rasterize keeps one call site, inlined). The
+      // loop of a single layout below is kept apart as it was: a helper choosing the layout for
+      // both loops changed the v1 render's Cortex-M4 code.
       const BlobLayer& layer = *set.layer;
       const bool packed = layer.vertex_count <= store_packed_slots;
       uint32_t hits = live;

@@ -285,6 +285,18 @@ std::size_t store_formula(std::size_t v, std::size_t c, std::size_t f, std::size
          (renumber > bits ? renumber : bits);
 }
 
+// A mesh of the four corners of a w x h frame, with `value_count` values per vertex; the corners
+// go into `taken` (the tests add points where none is yet).
+Mesh corner_mesh(int w, int h, int value_count, std::set<std::pair<int, int>>* taken) {
+  Mesh mesh;
+  mesh.value_count = value_count;
+  for (auto [x, y] : {std::pair{0, 0}, {w - 1, 0}, {0, h - 1}, {w - 1, h - 1}}) {
+    taken->insert({x, y});
+    mesh.points.push_back({double(x), double(y)});
+  }
+  return mesh;
+}
+
 // Triangles of the v1 blob with flags (the one layer's).
 std::size_t flagged_triangles(const std::vector<std::uint8_t>& v1) {
   core::Blob blob;
@@ -361,14 +373,9 @@ TEST_CASE("the band store keeps each live vertex once") {
       // Vertices only near the top and the bottom rows (and the corners): most triangles reach
       // from the top to the bottom, so their corners stay in the store for 300 one-row bands,
       // renumbered at every band as the triangles beside them end.
-      Mesh mesh;
-      mesh.value_count = 1;
-      std::mt19937 rng(11);
       std::set<std::pair<int, int>> taken;
-      for (auto [x, y] : {std::pair{0, 0}, {99, 0}, {0, 299}, {99, 299}}) {
-        taken.insert({x, y});
-        mesh.points.push_back({double(x), double(y)});
-      }
+      Mesh mesh = corner_mesh(100, 300, 1, &taken);
+      std::mt19937 rng(11);
       std::uniform_int_distribution<int> rx(0, 99), ry(0, 9);
       while (mesh.points.size() < 120) {
         const int x = rx(rng), y = mesh.points.size() % 2 ? ry(rng) : 299 - ry(rng);
@@ -411,14 +418,9 @@ TEST_CASE("the band store's records change layout where its vertices pass 1,024,
   // records and guard after every band against a model.)
   for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) {
     CAPTURE(int(m));
-    Mesh mesh;
-    mesh.value_count = 3;
-    std::mt19937 rng(17);
     std::set<std::pair<int, int>> taken;
-    for (auto [x, y] : {std::pair{0, 0}, {119, 0}, {0, 199}, {119, 199}}) {
-      taken.insert({x, y});
-      mesh.points.push_back({double(x), double(y)});
-    }
+    Mesh mesh = corner_mesh(120, 200, 3, &taken);
+    std::mt19937 rng(17);
     std::uniform_int_distribution<int> rx(0, 119), top(0, 47), rest(48, 199);
     while (mesh.points.size() < 1500) {
       const std::pair<int, int> p{rx(rng), mesh.points.size() < 1400 ? top(rng) : rest(rng)};
