@@ -37,9 +37,7 @@ struct DirectWriter {
   Rect rect;
   bool dither;
 
-  uint8_t* at(int32_t x, int32_t y) const {
-    return base + (y - rect.y0) * stride + (x - rect.x0) * bytes_per_pixel(F);
-  }
+  uint8_t* at(int32_t x, int32_t y) const { return base + (y - rect.y0) * stride + (x - rect.x0) * bytes_per_pixel(F); }
   // Whether put_rounded is available: channels that go to the pixel without conversion.
   static constexpr bool takes_rounded = F != PixelFormat::coverage8 && !YCbCr;
 
@@ -49,30 +47,6 @@ struct DirectWriter {
       store_grey<F>(p, clamp_u8(r[0]), x, y, dither);
     } else {
       store_rgb<F>(p, clamp_u8(r[0]), clamp_u8(r[1]), clamp_u8(r[2]), x, y, dither);
-    }
-  }
-  // count pixels of row y from p (the first at column x) from three channels' bytes r[i], g[i],
-  // b[i]: the pixels of put_rounded one by one; RGB565 without dithering by the tables (by
-  // multiply-adds where the code is optimized for size), the flag read once (the
-  // forward-differenced rows of the zienkiewicz shader).
-  void put_rounded_bytes(uint8_t* p, int32_t x, int32_t y, const uint8_t* r, const uint8_t* g, const uint8_t* b,
-                         int32_t count) const {
-    constexpr int bpp = bytes_per_pixel(F);
-    if constexpr (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be) {
-      if (!dither) {
-        for (int32_t i = 0; i < count; ++i, p += bpp) {
-#if defined(__OPTIMIZE_SIZE__)
-          store565_bytes(p, rgb565_bytes<F>(pack565_nearest(r[i], g[i], b[i])));  // no 1 KB of tables
-#else
-          store565_bytes(p, pack565_bytes_by_table<F>(r[i], g[i], b[i]));
-#endif
-        }
-        return;
-      }
-    }
-    for (int32_t i = 0; i < count; ++i, p += bpp) {
-      const int32_t v[3] = {r[i], g[i], b[i]};
-      put_rounded(p, x + i, y, v);
     }
   }
   // Pixels x0..x1 of row y from q16_16 values (rounding offset included) v0, v1, v2 stepped by d0,

@@ -20,6 +20,24 @@
 namespace tristream::core::detail {
 namespace {
 
+// The blob's little-endian int32 at p: on Cortex-M always inlined (optimized for size load_i32
+// is a call there: 6 % of the zienkiewicz cycles of small triangles at -Os); elsewhere load_i32
+// (inlined, the bytes' expression cost x86-64 0.4 % more set-up instructions).
+__attribute__((always_inline)) inline int32_t read_i32(const uint8_t* p) {
+#if TS_USE_INT128
+  return load_i32(p);
+#else
+  return int32_t(uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24));
+#endif
+}
+
+#if defined(__OPTIMIZE_SIZE__)
+// Optimized for size, RGB565 without dithering is packed as with it, by pack565_dithered's fields
+// with these offsets: those of pack565_nearest (the same values: t <= 16313 there too), no tables.
+constexpr uint32_t nearest_offsets[4] = {127 * dither_scale, 127 * dither_scale, 127 * dither_scale,
+                                         127 * dither_scale};
+#endif
+
 // A channel's q8_8 value of vertex k (at offset 2 c from the vertex's first) and its q19_12
 // gradient component j (gx, gy of vertex j / 2; offset 8 c), read in place for
 // ZienkiewiczChannel::setup. One type for every shader: one setup in the code.
@@ -32,7 +50,7 @@ struct VertexGradients {
   const uint8_t* const* vertex;
   int offset;
   __attribute__((always_inline)) int32_t operator[](int j) const {
-    return load_i32(vertex[j >> 1] + offset + 4 * (j & 1));
+    return read_i32(vertex[j >> 1] + offset + 4 * (j & 1));
   }
 };
 
@@ -82,7 +100,7 @@ struct ZienkiewiczTriangle {
   int first_channel;
   ZienkiewiczChannel ch[Channels];
   BarycentricStepper steps;
-  int fd_state = 0;  // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
+  int fd_state = 0;     // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
   bool narrow = false;  // every channel fits ZienkiewiczChannel::eval_narrow (zienkiewicz_narrow_forms)
 
   // The set-up of a triangle in parts: the stepper (begin_steps), the coefficients (begin_channels)
@@ -154,12 +172,15 @@ struct ZienkiewiczTriangle {
       narrow = fits;
     }
   }
-  // Forward differencing set up (fd_state 1, or -1 outside the bit budget).
+  // Forward differencing set up (fd_state 1, or -1 outside its budget).
   __attribute__((always_inline)) bool set_up_rows() {
-    fd_state = 1;
+    const int32_t da = int32_t(steps.dadx), db = int32_t(steps.dbdx);
+    fd_state = -1;
+    if (!ZienkiewiczChannel::steps_fit_rows(da, db)) return false;  // no row of 4 pixels or more
     for (int c = 0; c < Channels; ++c)
-      if (!ch[c].setup_rows(int32_t(steps.dadx), int32_t(steps.dbdx))) fd_state = -1;
-    return fd_state > 0;
+      if (!ch[c].setup_rows(da, db)) return false;
+    fd_state = 1;
+    return true;
   }
   // begin's last part with the 32-bit forms: forward differencing set up for every triangle large
   // enough, not on its first long row (span then never calls the set-up, whose frames were below
@@ -271,29 +292,34 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
     constexpr int32_t half = 1 << (q24_8::frac_bits - 1);
     auto* p = writer.at(x0, y);
-#if !defined(__OPTIMIZE_SIZE__)
     if constexpr (Narrow && DirectRgb565<Writer>::value) {
       // RGB565 from the 32-bit forms: the dither flag read once a row, not a pixel, and each pixel
       // packed as put_rounded packs it (put_span_in_range's loops: the tables without dithering,
       // the row's offsets with it); the same pixels. -2 % to -5 % modelled Cortex-M4 cycles at -O2.
-      // Optimized for size the loop below (its one loop: this one costs 92 bytes of flash there).
+      // Optimized for size one loop, by the offsets (without dithering those of pack565_nearest,
+      // as forward_differenced): no tables.
       constexpr PixelFormat F = DirectRgb565<Writer>::format;
-      if (writer.dither) {
-        const uint32_t* const offset = dither_span_offsets(y, x0, p);
+#if defined(__OPTIMIZE_SIZE__)
+      const uint32_t* const offset = writer.dither ? dither_span_offsets(y, x0, p) : nearest_offsets;
+#else
+      const uint32_t* const offset = writer.dither ? dither_span_offsets(y, x0, p) : nullptr;
+#endif
+      if (offset) {
         const uint32_t k31 = in_register(dither_k31), k63 = in_register(dither_k63);
         rgb565_pixels(p, x1 - x0 + 1, a, b, [&](uint8_t* q, uint32_t r, uint32_t g, uint32_t bl) {
           store565_bytes(q, rgb565_bytes<F>(pack565_dithered(r, g, bl, offset[dither_index(q)], k31, k63)));
         });
       } else {
+#if !defined(__OPTIMIZE_SIZE__)
         const uint16_t* table = rgb565_table<F>.v;
         __asm__("" : "+r"(table));  // the table's address in a register (see put_span_in_range)
         rgb565_pixels(p, x1 - x0 + 1, a, b, [&](uint8_t* q, uint32_t r, uint32_t g, uint32_t bl) {
           store565_bytes(q, pack565_bytes_by_table_biased<F>(r, g + 256, bl, table));
         });
+#endif
       }
       return;
     }
-#endif
     for (int32_t x = x0; x <= x1; ++x) {
       const int32_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;
       if constexpr (Writer::takes_rounded) {
@@ -355,18 +381,115 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       store(p, one(0, a15, b15), one(1, a15, b15), one(2, a15, b15));
     }
   }
+  // Pixels x0..x1 of row y by forward differencing from the weights at xs.
+  __attribute__((noinline)) void forward_differenced(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
+    constexpr int vf = ZienkiewiczChannel::value_frac_bits;
+    constexpr uint32_t half = uint32_t(1) << (vf - 1);
+    uint32_t a, b;
+    steps.at(xs, y, &a, &b);
+    auto* p = writer.at(x0, y);
+    const int step = bpp;  // a local: the pixel stores could alias the member
+    const uint32_t da = steps.dadx, db = steps.dbdx;
+#if TS_USE_SSE2
+    if constexpr (Writer::takes_rounded && Channels == 3) {
+      // Rounding to nearest folded into the values. The three channels in 32-bit lanes: three
+      // additions a pixel, the rounded values the lanes shifted down.
+      const int32_t last = x1 - xs;
+      zienkiewicz_row_chunks<3>(ch, a, b, da, db, x0 - xs, last, half, [&](int32_t n, int32_t end, CubicSteps* s) {
+        // The three channels' (v, d1, d2, d3) transposed into a vector of each.
+        static_assert(sizeof(CubicSteps) == 16, "four words a channel");
+        auto row = [&](int c) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(&s[c])); };
+        const __m128i r0 = row(0), r1 = row(1), r2 = row(2), zero = _mm_setzero_si128();
+        const __m128i t0 = _mm_unpacklo_epi32(r0, r1), t1 = _mm_unpacklo_epi32(r2, zero);
+        const __m128i t2 = _mm_unpackhi_epi32(r0, r1), t3 = _mm_unpackhi_epi32(r2, zero);
+        __m128i v = _mm_unpacklo_epi64(t0, t1), d1 = _mm_unpackhi_epi64(t0, t1), d2 = _mm_unpacklo_epi64(t2, t3);
+        const __m128i d3 = _mm_unpackhi_epi64(t2, t3);
+        for (; n <= end; ++n) {
+          writer.put_lanes(p, Writer::ordered(_mm_srai_epi32(v, vf)), xs + n, y, n != last);
+          p += step;
+          v = _mm_add_epi32(v, d1), d1 = _mm_add_epi32(d1, d2), d2 = _mm_add_epi32(d2, d3);
+        }
+      });
+      return;
+    }
+#endif
+    if constexpr (DirectRgb565<Writer>::value) {
+      // Rounding to nearest folded into the values (exact: the differences are unchanged). One
+      // channel at a time over the whole row, its field of each pixel stored (channel 0) or OR-ed
+      // into the halfword (1, 2): the RGB565 fields of put_rounded are separate bit fields of the
+      // same value (pack565_nearest, pack565_dithered), so the pixels are the same. No staging of
+      // the three channels' steps and bytes.
+      static_assert(bytes_per_pixel(DirectRgb565<Writer>::format) == 2, "RGB565");
+#if defined(__OPTIMIZE_SIZE__)
+      // One loop for both (half the code).
+      const uint32_t* const offsets = writer.dither ? dither_span_offsets(y, x0, p) : nearest_offsets;
+#else
+      const uint32_t* const offsets = writer.dither ? dither_span_offsets(y, x0, p) : nullptr;
+#endif
+      auto pass = [&](auto channel) __attribute__((always_inline)) {
+        constexpr int c = decltype(channel)::value;
+        zienkiewicz_row_chunks<1>(&ch[c], a, b, da, db, x0 - xs, x1 - xs, half,
+                                  [&](int32_t n, int32_t end, CubicSteps* s) {
+                                    uint8_t* const q = p + 2 * (n - (x0 - xs));
+#if defined(__OPTIMIZE_SIZE__)
+                                    rgb565_channel<c, true>(*s, q, end - n + 1, offsets);
+#else
+                                    if (offsets) {
+                                      rgb565_channel<c, true>(*s, q, end - n + 1, offsets);
+                                    } else {
+                                      rgb565_channel<c, false>(*s, q, end - n + 1, offsets);
+                                    }
+#endif
+                                  });
+      };
+      pass(IntConstant<0>{});
+      pass(IntConstant<1>{});
+      pass(IntConstant<2>{});
+    } else if constexpr (Writer::takes_rounded) {
+      // Rounding to nearest folded into the values; clamped here (rarely needed: the writer's
+      // clamp then folds away).
+      zienkiewicz_row_chunks<Channels>(ch, a, b, da, db, x0 - xs, x1 - xs, half,
+                                       [&](int32_t n, int32_t end, CubicSteps* s) {
+                                         for (; n <= end; ++n) {
+                                           int32_t r[Channels];
+                                           for (int c = 0; c < Channels; ++c) {
+                                             int32_t v = int32_t(s[c].v) >> vf;
+                                             if (uint32_t(v) > 255) v = v < 0 ? 0 : 255;  // rare
+                                             r[c] = v;
+                                             s[c].step();
+                                           }
+                                           writer.put_rounded(p, xs + n, y, r);
+                                           p += step;
+                                         }
+                                       });
+    } else {
+      zienkiewicz_row_chunks<Channels>(ch, a, b, da, db, x0 - xs, x1 - xs, 0,
+                                       [&](int32_t n, int32_t end, CubicSteps* s) {
+                                         for (; n <= end; ++n) {
+                                           int32_t q8[Channels];
+                                           for (int c = 0; c < Channels; ++c) {
+                                             q8[c] = int32_t(s[c].v) >> (vf - q24_8::frac_bits);
+                                             s[c].step();
+                                           }
+                                           writer.put(p, xs + n, y, q8);
+                                           p += step;
+                                         }
+                                       });
+    }
+  }
   // Channel C's RGB565 field of `count` pixels from p (2 bytes each) from the steps s (value in
-  // 2^-32 grey plus the rounding offset): clamp(int32(v / 2^32), 0, 255) as put_rounded takes it,
+  // 2^-18 grey plus the rounding offset): clamp(int32(v) >> 18, 0, 255) as put_rounded takes it,
   // its field alone (channel 0: stored; 1, 2: OR-ed into the pixel), dithered by the row's offsets
   // (dither_span_offsets) or by the tables (where the code is optimized for size by the offsets
-  // of pack565_nearest: no tables). Its own loop over locals: the eight words of the steps stay
+  // of pack565_nearest: no tables). Its own loop over locals: the four words of the steps stay
   // in the registers of a Cortex-M4.
   template <int C, bool Dither>
-  __attribute__((noinline)) static void rgb565_channel(const CubicSteps* s, uint8_t* p, int32_t count,
+  __attribute__((noinline)) static void rgb565_channel(CubicSteps s, uint8_t* p, int32_t count,
                                                        const uint32_t* offsets) {
     constexpr PixelFormat F = DirectRgb565<Writer>::format;
-    uint64_t value = s->v, first = s->d1, second = s->d2;
-    const uint64_t third = s->d3;
+    constexpr int vf = ZienkiewiczChannel::value_frac_bits;
+    uint32_t value = s.v, first = s.d1, second = s.d2;
+    const uint32_t third = s.d3;
     uint8_t* const end = p + 2 * count;
     [[maybe_unused]] const uint32_t k = in_register(C == 1 ? dither_k63 : dither_k31);
 #if !defined(__OPTIMIZE_SIZE__)
@@ -374,22 +497,20 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     if constexpr (C == 1 && !Dither) __asm__("" : "+r"(green));
 #endif
     for (; p != end; p += 2) {
-      const int32_t h = int32_t(uint32_t(value >> 32));
+      const int32_t h = int32_t(value) >> vf;
       const uint32_t v = uint32_t(h < 0 ? 0 : (h > 255 ? 255 : h));
       uint32_t field;
       if constexpr (Dither) {
-        // pack565_dithered's field of this channel.
         field = rgb565_bytes<F>(((v * k + offsets[dither_index(p)]) >> 23) << (C == 0 ? 11 : (C == 1 ? 5 : 0)));
       } else {
 #if defined(__OPTIMIZE_SIZE__)
         static_assert(Dither, "-Os: one loop, by the offsets");
 #else
-        // pack565_bytes_by_table's term of this channel.
-        const uint16_t* const rt = rgb565_table<F>.v;  // R fields at v, G fields at 256 + v
+        const uint16_t* const rt = rgb565_table<F>.v;
         if constexpr (C == 0) {
           field = rt[v];
         } else if constexpr (C == 1) {
-          field = green[v];  // the G half's address in a register (no addition a pixel)
+          field = green[v];
         } else {
           field = uint16_t(F == PixelFormat::rgb565_be ? uint32_t(rt[v]) << 5 : uint32_t(rt[v]) >> 11);
         }
@@ -400,123 +521,6 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       value += first;
       first += second;
       second += third;
-    }
-  }
-  // Pixels x0..x1 of row y by forward differencing from the weights at xs.
-  __attribute__((noinline)) void forward_differenced(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
-    constexpr int vf = ZienkiewiczChannel::value_frac_bits;
-    uint32_t a, b;
-    steps.at(xs, y, &a, &b);
-    auto* p = writer.at(x0, y);
-    const int step = bpp;  // a local: the pixel stores could alias the member
-#if TS_USE_SSE2
-    if constexpr (Writer::takes_rounded && Channels == 3) {
-      // The three channels' values and differences in 64-bit lanes (channels 0, 1 in one vector,
-      // 2 in another): six additions a pixel, the rounded values are the high words.
-      const int32_t last = x1 - xs;
-      zienkiewicz_row_chunks<3>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, last, uint64_t(1) << (vf - 1),
-                                [&](int32_t n, int32_t end, const CubicSteps* s) {
-                                  auto pair = [](uint64_t c0, uint64_t c1) {
-                                    return _mm_set_epi64x(int64_t(c1), int64_t(c0));
-                                  };
-                                  __m128i v01 = pair(s[0].v, s[1].v), v2 = pair(s[2].v, 0);
-                                  __m128i d01 = pair(s[0].d1, s[1].d1), d2 = pair(s[2].d1, 0);
-                                  __m128i e01 = pair(s[0].d2, s[1].d2), e2 = pair(s[2].d2, 0);
-                                  const __m128i f01 = pair(s[0].d3, s[1].d3), f2 = pair(s[2].d3, 0);
-                                  for (; n <= end; ++n) {
-                                    const __m128i q =
-                                        _mm_unpacklo_epi64(_mm_shuffle_epi32(v01, _MM_SHUFFLE(3, 1, 3, 1)),
-                                                           _mm_shuffle_epi32(v2, _MM_SHUFFLE(1, 1, 1, 1)));
-                                    writer.put_lanes(p, Writer::ordered(q), xs + n, y, n != last);
-                                    p += step;
-                                    v01 = _mm_add_epi64(v01, d01), v2 = _mm_add_epi64(v2, d2);
-                                    d01 = _mm_add_epi64(d01, e01), d2 = _mm_add_epi64(d2, e2);
-                                    e01 = _mm_add_epi64(e01, f01), e2 = _mm_add_epi64(e2, f2);
-                                  }
-                                });
-      return;
-    }
-#endif
-    if constexpr (DirectRgb565<Writer>::value) {
-      // Rounding to nearest folded into the values (exact: the differences are unchanged). One
-      // channel at a time over the whole row, its field of each pixel stored (channel 0) or OR-ed
-      // into the halfword (1, 2): the RGB565 fields of put_rounded are separate bit fields of the
-      // same value (pack565_nearest, pack565_dithered), so the pixels are the same. No staging of
-      // the three channels' steps and bytes: -160 bytes of the deepest Cortex-M4 frames.
-      static_assert(bytes_per_pixel(DirectRgb565<Writer>::format) == 2, "RGB565");
-#if defined(__OPTIMIZE_SIZE__)
-      // One loop for both (half the code): without dithering pack565_dithered's fields with the
-      // offset 127 of pack565_nearest (the same values: t <= 16313 there too).
-      static constexpr uint32_t nearest[4] = {127 * dither_scale, 127 * dither_scale, 127 * dither_scale,
-                                              127 * dither_scale};
-      const uint32_t* const offsets = writer.dither ? dither_span_offsets(y, x0, p) : nearest;
-#else
-      const uint32_t* const offsets = writer.dither ? dither_span_offsets(y, x0, p) : nullptr;
-#endif
-      const uint64_t bias = uint64_t(1) << (vf - 1);
-      auto pass = [&](auto channel) __attribute__((always_inline)) {
-        constexpr int c = decltype(channel)::value;
-        zienkiewicz_row_chunks<1>(&ch[c], a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, bias,
-                                  [&](int32_t n, int32_t end, CubicSteps* s) {
-                                    uint8_t* const q = p + 2 * (n - (x0 - xs));
-#if defined(__OPTIMIZE_SIZE__)
-                                    rgb565_channel<c, true>(s, q, end - n + 1, offsets);
-#else
-                                    if (offsets) {
-                                      rgb565_channel<c, true>(s, q, end - n + 1, offsets);
-                                    } else {
-                                      rgb565_channel<c, false>(s, q, end - n + 1, offsets);
-                                    }
-#endif
-                                  });
-      };
-      pass(IntConstant<0>{});
-      pass(IntConstant<1>{});
-      pass(IntConstant<2>{});
-    } else if constexpr (Writer::takes_rounded && Channels == 3) {
-      // Rounding to nearest folded into the values (exact: the differences are unchanged). Each
-      // channel's rounded bytes of up to `piece` pixels in a loop of its own (CubicSteps::high_bytes),
-      // then the pixels by the writer's put_rounded_bytes (its step is bpp, as the shader's): the
-      // same values as stepping the three channels together.
-      // 16 pixels a piece: the staging (three times `piece` bytes) is in the deepest frame of the
-      // zienkiewicz render for these formats (-48 bytes of Cortex-M4 stack against 32).
-      constexpr int32_t piece = 16;
-      zienkiewicz_row_chunks<3>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),
-                                [&](int32_t n, int32_t end, CubicSteps* s) {
-                                  uint8_t bytes[3][piece];
-                                  while (n <= end) {
-                                    const int32_t count = end - n + 1 < piece ? end - n + 1 : piece;
-                                    for (int c = 0; c < 3; ++c) s[c].high_bytes(bytes[c], count);
-                                    writer.put_rounded_bytes(p, xs + n, y, bytes[0], bytes[1], bytes[2], count);
-                                    p += count * step;
-                                    n += count;
-                                  }
-                                });
-    } else if constexpr (Writer::takes_rounded) {
-      // Rounding to nearest folded into the values (exact: the differences are unchanged).
-      zienkiewicz_row<Channels>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint64_t(1) << (vf - 1),
-                                [&](int32_t n, const CubicSteps* s) {
-                                  int32_t r[Channels];
-                                  for (int c = 0; c < Channels; ++c) {
-                                    int32_t v = int32_t(int64_t(s[c].v) >> vf);
-                                    // Clamped here, rarely needed: the writer's clamp then folds away.
-                                    if (uint32_t(v) > 255) v = v < 0 ? 0 : 255;
-                                    r[c] = v;
-                                  }
-                                  writer.put_rounded(p, xs + n, y, r);
-                                  p += step;
-                                });
-    } else {
-      zienkiewicz_row<Channels>(ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, 0,
-                                [&](int32_t n, const CubicSteps* s) {
-                                  int32_t q8[Channels];
-                                  for (int c = 0; c < Channels; ++c) {
-                                    const int64_t v = int64_t(s[c].v) >> (vf - q24_8::frac_bits);
-                                    q8[c] = int32_t(v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : v));
-                                  }
-                                  writer.put(p, xs + n, y, q8);
-                                  p += step;
-                                });
     }
   }
 };

@@ -6,9 +6,9 @@
 // never depends on where a tile or span starts.
 #include <stdint.h>
 
-#include "tristream/fixed_point.h"
 #include "tristream/detail/arith.h"
 #include "tristream/detail/edge.h"
+#include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {
 
@@ -87,61 +87,39 @@ struct BilinearChannel {
   uint32_t step() const { return dvdx; }
 };
 
-// Forward differences of a cubic along a row: the value and its first three differences,
-// modulo 2^64 (the values read as int64 are exact whenever they fit, see ZienkiewiczChannel).
-struct CubicSteps {
-  uint64_t v, d1, d2, d3;  // no initializers: arrays of them are filled by steps_at, not zeroed first
+// Out of line on Cortex-M: CubicSteps::skip (rows cut by a tile's left edge take it; inlined, its
+// binomials were formed for every restart) and ZienkiewiczChannel::setup_rows (called for every
+// channel of a triangle; its frame is the deepest of the zienkiewicz render there). setup_rows
+// inlined elsewhere (x86-64: GCC left it out of line, +1.3 % instructions of a 4,000-triangle
+// frame).
+#if TS_USE_INT128
+#define TS_CUBIC_SKIP_ATTRIBUTES
+#define TS_SETUP_ROWS_ATTRIBUTES __attribute__((always_inline))
+#else
+#define TS_CUBIC_SKIP_ATTRIBUTES __attribute__((noinline))
+#define TS_SETUP_ROWS_ATTRIBUTES __attribute__((noinline))
+#endif
 
-  void step() {
+// Forward differences of a cubic along a row (ZienkiewiczChannel::setup_rows, steps_at): the
+// value and its first three differences in 2^-18 grey, modulo 2^32 (a value read as int32 is
+// exact whenever it fits, see ZienkiewiczChannel::max_fd_sum).
+struct CubicSteps {
+  uint32_t v, d1, d2, d3;  // no initializers: arrays of them are filled by steps_at, not zeroed first
+
+  __attribute__((always_inline)) void step() {
     v += d1;
     d1 += d2;
     d2 += d3;
   }
-  // The bytes clamp(int32(v / 2^32), 0, 255) of this and the next count - 1 steps, into out;
-  // leaves the steps `count` steps on. Its own loop over locals, one channel at a time: the
-  // state (eight words) then stays in the registers of a Cortex-M4, as three channels' (24) cannot.
-  __attribute__((noinline)) void high_bytes(uint8_t* out, int32_t count) {
-    uint64_t value = v, first = d1, second = d2;
-    const uint64_t third = d3;
-    auto one = [&](int32_t i) __attribute__((always_inline)) {
-      const int32_t h = int32_t(uint32_t(value >> 32));
-      out[i] = uint8_t(h < 0 ? 0 : (h > 255 ? 255 : h));
-      value += first;
-      first += second;
-      second += third;
-    };
-#if defined(__OPTIMIZE_SIZE__)
-    // Unrolled by two here: -Os ignores #pragma GCC unroll (-2 % modelled Cortex-M4 cycles at -Os).
-    int32_t i = 0;
-    for (; i + 1 < count; i += 2) {
-      one(i);
-      one(i + 1);
-    }
-    if (i < count) one(i);
-#else
-#pragma GCC unroll 2
-    for (int32_t i = 0; i < count; ++i) one(i);
-#endif
-    v = value;
-    d1 = first;
-    d2 = second;
-  }
   // k steps at once: v(k) = v + k d1 + C(k,2) d2 + C(k,3) d3, and so on; exactly what k calls of
-  // step() give (integer identities, modulo 2^64). For k < max_skip (a restart chunk: k <
-  // zienkiewicz_fd_restart), so that the binomials are formed in 32 bits (below 2^29; on Cortex-M
-  // a 64-bit product and division by 3 each would be several instructions). Out of line there
-  // (rows cut by a tile's left edge call it; inlined, its temporaries took 8 bytes of the deepest
-  // frame).
+  // step() give (integer identities, modulo 2^32), for k < max_skip (the binomials fit 32 bits:
+  // k (k - 1) (k - 2) < 2^30).
   static constexpr uint32_t max_skip = 1024;
-#if !TS_USE_INT128
-  __attribute__((noinline))
-#endif
-  void skip(uint32_t k) {
+  TS_CUBIC_SKIP_ATTRIBUTES void skip(uint32_t k) {
     const uint32_t k2 = k * (k - 1) / 2, k3 = k2 * (k - 2) / 3;  // k (k - 1) (k - 2) / 2 is a multiple of 3
-    const uint64_t k1 = k;
-    v += k1 * d1 + uint64_t(k2) * d2 + uint64_t(k3) * d3;
-    d1 += k1 * d2 + uint64_t(k2) * d3;
-    d2 += k1 * d3;
+    v += k * d1 + k2 * d2 + k3 * d3;
+    d1 += k * d2 + k2 * d3;
+    d2 += k * d3;
   }
 };
 
@@ -165,22 +143,17 @@ constexpr bool zienkiewicz_narrow_forms = !TS_USE_INT128;
 //
 // Two evaluations (docs/FIXED_POINT.md, Zienkiewicz):
 // - eval: Horner's rule with a, b in q17_15 at one pixel (short rows, small triangles, and
-//   triangles outside the forward-difference bit budget; see zienkiewicz_fd_min_length);
+//   triangles outside the forward-difference budget; see zienkiewicz_fd_min_length);
 // - forward differencing along a row: a and b are linear in x (steps da, db in q2_30), so f is a
-//   cubic in x. setup_rows() expands, once per triangle, the value P(a, b) and its forward
-//   differences D1(a, b) = P(a + da, b + db) - P(a, b), D2 (the difference of D1) and D3 as
-//   polynomials in (a, b) with coefficients in 2^-32 grey levels (each the exact value rounded
-//   once); steps_at() evaluates them at a restart point, then a pixel costs three additions.
+//   cubic in x. setup_rows() expands, once per triangle, its forward differences
+//   D1(a, b) = P(a + da, b + db) - P(a, b), D2 (the difference of D1) and D3 as polynomials in
+//   (a, b) with coefficients in 2^-18 grey levels (each the exact value rounded once); steps_at()
+//   evaluates P and them at a restart point in 32 bits, then a pixel costs three 32-bit
+//   additions.
 struct ZienkiewiczChannel {
-  // The ten coefficients in int64, and the forward-difference polynomials in 2^-32 grey: D1
-  // (quadratic), D2 (linear), D3.
+  // The ten coefficients in int64.
   struct WideCoefficients {
     int64_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
-  };
-  struct RowCoefficients {
-    int64_t g00, g01, g02, g10, g11, g20;
-    int64_t h00, h01, h10;
-    int64_t d3;
   };
 #if TS_USE_INT128
   int64_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
@@ -189,23 +162,29 @@ struct ZienkiewiczChannel {
   // coefficients in int32 when every one fits (40 bytes a channel less of the stack, which holds
   // three channels' for a triangle), else wide(): p30 is wide_mark and all ten are in `w`, in the
   // place of the forward-difference polynomials: such a triangle is outside their budget
-  // (fits_rows), so they are never set for it. The mark in place of a flag: 8 bytes a channel
+  // (setup_rows), so they are never set for it. The mark in place of a flag: 8 bytes a channel
   // less (the flag's padding). An int32 coefficient is never wide_mark (store sends it to `w`).
   int32_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
   static constexpr int32_t wide_mark = INT32_MIN;
   bool wide() const { return p30 == wide_mark; }
 #endif
 
-  // Forward differencing: fraction bits of values and differences (grey levels).
-  static constexpr int value_frac_bits = 32;
-  // Coefficients p (q24_8) must be below this in magnitude (2^20 grey levels) for forward
-  // differencing; the bit budget below rests on it.
-  static constexpr int64_t max_fd_coefficient = int64_t(1) << 28;
-  // The forward-difference polynomials (set by setup_rows); the value's are p * 2^24, stored only
-  // on 64-bit hosts (a load is cheaper than a shift there; on Cortex-M formed where used, 80 bytes
-  // a channel less of the stack).
+  // The four coefficients that enter eval_narrow's products first (p03, p21, p30, p12), times 4
+  // (by unsigned shifts: the same bits), as eval_narrow takes them (lifted()).
+  struct Lifted {
+    int32_t p03, p21, p30, p12;
+  };
+  // The forward-difference polynomials (set by setup_rows): P itself in 2^-14 grey (e = p 2^6),
+  // D1 (quadratic), D2 (linear) and D3 in 2^-18 grey. The coefficients that Horner's rule
+  // multiplies first (e03, e12, e21, e30, g20, g11, g02, h10, h01) are stored times 4 (by unsigned
+  // shifts: the same bits), as mla_high takes them. 80 bytes, as WideCoefficients in the union.
+  struct RowCoefficients {
+    int32_t e00, e01, e02, e10, e11, e20, e03x4, e12x4, e21x4, e30x4;  // P in 2^-14 grey
+    int32_t g00, g01, g10, g02x4, g11x4, g20x4;
+    int32_t h00, h01x4, h10x4;
+    int32_t d3;
+  };
 #if TS_USE_INT128
-  int64_t f00, f01, f02, f03, f10, f11, f12, f20, f21, f30;
   RowCoefficients fd;
 #else
   union {
@@ -231,7 +210,8 @@ struct ZienkiewiczChannel {
   // (gx, gy per vertex; values[k] and gradients[j] for k < 3, j < 6: arrays, or readers of the
   // blob's bytes). Returns fits_narrow() with the 32-bit forms (Narrow), else false.
   template <bool Narrow = zienkiewicz_narrow_forms, typename Values, typename Gradients>
-  TS_ZIENKIEWICZ_SETUP_INLINE bool setup(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values, const Gradients& gradients) {
+  TS_ZIENKIEWICZ_SETUP_INLINE bool setup(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
+                                         const Gradients& gradients) {
     if constexpr (Narrow) {
       if (setup_narrow(edge_dx, edge_dy, values, gradients)) return true;
     }
@@ -253,7 +233,7 @@ struct ZienkiewiczChannel {
     const int64_t u2 = u(0, 0), u3 = u(0, 1);  // AB . gA, AB . gB
     const int64_t u5 = u(1, 1), u6 = u(1, 2);  // BC . gB, BC . gC
     const int64_t u8 = u(2, 2), u9 = u(2, 0);  // CA . gC, CA . gA
-    // |u| <= max_narrow_derivative as one unsigned comparison (as fits_rows).
+    // |u| <= max_narrow_derivative as one unsigned comparison.
     auto small = [](int64_t v) {
       return uint32_t(uint64_t(v) + uint64_t(max_narrow_derivative) <= uint64_t(2 * max_narrow_derivative));
     };
@@ -319,8 +299,8 @@ struct ZienkiewiczChannel {
     if constexpr (sizeof(T) > sizeof(int32_t)) {
       // wide_mark itself goes wide (any value that large is outside both 32-bit budgets).
       auto fits = [](T q) { return uint32_t(q > wide_mark && q <= INT32_MAX); };
-      if (!(fits(q00) & fits(q01) & fits(q02) & fits(q03) & fits(q10) & fits(q11) & fits(q12) & fits(q20) &
-            fits(q21) & fits(q30))) {
+      if (!(fits(q00) & fits(q01) & fits(q02) & fits(q03) & fits(q10) & fits(q11) & fits(q12) & fits(q20) & fits(q21) &
+            fits(q30))) {
         w = {q00, q01, q02, q03, q10, q11, q12, q20, q21, q30};
         p30 = wide_mark;
         return;
@@ -368,7 +348,7 @@ struct ZienkiewiczChannel {
   static constexpr int32_t max_narrow_coefficient = int32_t(1) << 23;
   static constexpr int64_t narrow_eval_bound(int64_t p) { return 49 * p + 24; }
   bool fits_narrow() const {
-    // |c| <= max as one unsigned comparison, as fits_rows.
+    // |c| <= max as one unsigned comparison.
     auto out = [](int64_t c) {
       return uint32_t(uint64_t(c) + uint64_t(max_narrow_coefficient) > uint64_t(2 * max_narrow_coefficient));
     };
@@ -384,9 +364,6 @@ struct ZienkiewiczChannel {
   // The four coefficients that enter eval_narrow's products first (p03, p21, p30, p12), times 4
   // (by unsigned shifts: the same bits), as eval_narrow takes them: a loop over pixels forms them
   // once, not once a pixel.
-  struct Lifted {
-    int32_t p03, p21, p30, p12;
-  };
   __attribute__((always_inline)) Lifted lifted() const {
     auto four = [](int64_t p) { return int32_t(uint32_t(int32_t(p)) << 2); };
     return {four(p03), four(p21), four(p30), four(p12)};
@@ -420,90 +397,130 @@ struct ZienkiewiczChannel {
 #endif
   }
 
-  // Whether the coefficients are within the forward-difference bit budget.
-  bool fits_rows() const {
-    // |c| < max as one unsigned comparison: c + max - 1 in [0, 2 max - 2] (added modulo 2^64, so
-    // no overflow whatever c is); no branch per coefficient. 0 or 1, combined with bitwise or.
-    auto out = [](int64_t c) {
-      return uint32_t(uint64_t(c) + uint64_t(max_fd_coefficient - 1) > uint64_t(2 * (max_fd_coefficient - 1)));
-    };
+  // Forward differencing (docs/FIXED_POINT.md, Zienkiewicz): values and differences in 2^-18 grey,
+  // modulo 2^32, for triangles whose coefficients' magnitudes sum to below max_fd_sum (8,176 grey
+  // levels: a covered value, at most that sum, is then below 2^13 grey with room for the errors,
+  // so its int32 reading is exact), whose steps are those of rows of 5 pixels or more
+  // (steps_fit_rows) and whose difference polynomials are within steps_at's budget (setup_rows).
+  static constexpr int value_frac_bits = 18;
+  static constexpr int32_t max_fd_sum = (int32_t(1) << 21) - (int32_t(1) << 12);
+  // Whether the steps are within setup_rows's budget, |da|, |db| <= 2^28 + 2^26 (5/16): every
+  // triangle with a row of 5 covered pixels or more (the weights at both ends are in [0, 1] up
+  // to a rounding far below 2^-30 times the row's length, so 4 |da| <= 1 + that).
+  static bool steps_fit_rows(int32_t da, int32_t db) {
+    constexpr uint32_t limit = (uint32_t(1) << 28) + (uint32_t(1) << 26);
+    return (uint32_t(da) + limit <= 2 * limit) & (uint32_t(db) + limit <= 2 * limit);
+  }
+  // The forward-difference polynomials for the steps da, db (steps_fit_rows: the caller's check);
+  // false (fd then undefined) outside the budget. The Taylor terms along the row in 2^-38 grey (p
+  // in 2^-8 times q2_30): c1 exact, c2 and c3 from floor(x w / 2^30) products (mul_q30; below 2
+  // and 3 units of 2^-38 off), then each coefficient rounded once to 2^-18.
+  TS_SETUP_ROWS_ATTRIBUTES bool setup_rows(int32_t da, int32_t db) {
 #if !TS_USE_INT128
     if (wide()) return false;
 #endif
-    return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
-             out(p30));
-  }
-
-  // Forward-difference polynomials for the steps da, db (q2_30) of a pixel along x; false (and
-  // nothing set) when the coefficients or the steps are outside the bit budget: |p| < 2^28 (q24_8)
-  // and |da|, |db| <= 2^30 (a row of n >= 2 covered pixels has weights in [0, 1] at both ends,
-  // so |da|, |db| <= 2^30 / (n - 1) + 1/2). Taylor terms along the row, in 2^-38 grey (p in
-  // 2^-8 times weights in 2^-30): c1 exact, c2 and c3 with floor(x w / 2^30) (below 2 and 4 units
-  // of error); then D1 = c1 + c2 + c3, D2 = 2 c2 + 6 c3, D3 = 6 c3 are rounded to 2^-32.
-  bool setup_rows(int32_t da_q30, int32_t db_q30) {
-    constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
-    if (!fits_rows() || da_q30 > one || da_q30 < -one || db_q30 > one || db_q30 < -one) return false;
-    constexpr int lift = value_frac_bits - q24_8::frac_bits;
-    constexpr int down = q24_8::frac_bits + q2_30::frac_bits - value_frac_bits;  // 2^-38 to 2^-32
-    static_assert(lift >= 0 && down >= 1, "values have more fraction bits than q24_8, fewer than 2^-38");
-    // Bounds at 2^-38 with |p| < 2^28, |da|, |db| <= 2^30: p da <= 2^58, so c1 terms <= 2^60,
-    // c2 terms <= 6 * 2^58, c3 <= 4 * 2^58, and the largest sum 2 c2 + 6 c3 < 2^62.9.
-    static_assert(max_fd_coefficient <= (int64_t(1) << 28) && q2_30::frac_bits == 30 && down == 6,
-                  "bit budget of setup_rows");
-    const int64_t A = da_q30, B = db_q30;
-    // c1 = P_a da + P_b db (quadratic in a, b). Small multiples of p (3 p < 2^30) stay in int32 where p is.
-    const int64_t r00 = p10 * A + p01 * B, r10 = 2 * p20 * A + p11 * B, r01 = p11 * A + 2 * p02 * B;
-    const int64_t r20 = 3 * p30 * A + p21 * B, r11 = 2 * p21 * A + 2 * p12 * B, r02 = p12 * A + 3 * p03 * B;
-    // c2 = (P_aa da^2 + 2 P_ab da db + P_bb db^2) / 2 (linear in a, b).
-    const int64_t s00 = mul_q30(p20 * A + p11 * B, int32_t(A)) + mul_q30(p02 * B, int32_t(B));
-    const int64_t s10 = mul_q30(3 * p30 * A + 2 * p21 * B, int32_t(A)) + mul_q30(p12 * B, int32_t(B));
-    const int64_t s01 = mul_q30(p21 * A + 2 * p12 * B, int32_t(A)) + mul_q30(3 * p03 * B, int32_t(B));
-    // c3 = p30 da^3 + p21 da^2 db + p12 da db^2 + p03 db^3.
-    const int64_t c3 = mul_q30(mul_q30(p30 * A + p21 * B, int32_t(A)), int32_t(A)) +
-                       mul_q30(mul_q30(p12 * A + p03 * B, int32_t(B)), int32_t(B));
-    auto round_down = [](int64_t v) { return (v + (int64_t(1) << (down - 1))) >> down; };
+      // The sum of magnitudes below max_fd_sum: at once when every p is in [-2^17, 2^17) (ten of
+      // them sum to below it; each p + 2^17 in [0, 2^18), so their bitwise or below 2^18), else
+      // summed, in 32 bits after each p in [-2^21, 2^21) (implied by the sum's budget): below 2^25.
 #if TS_USE_INT128
-    constexpr int64_t to_value = int64_t(1) << lift;
-    f00 = p00 * to_value, f01 = p01 * to_value, f02 = p02 * to_value, f03 = p03 * to_value;
-    f10 = p10 * to_value, f11 = p11 * to_value, f12 = p12 * to_value;
-    f20 = p20 * to_value, f21 = p21 * to_value, f30 = p30 * to_value;
+    using U = uint64_t;
+#else
+    using U = uint32_t;  // the int32 coefficients
 #endif
-    // P(a + m da, b + m db) = P + c1 m + c2 m^2 + c3 m^3.
-    fd.g00 = round_down(r00 + s00 + c3), fd.g10 = round_down(r10 + s10), fd.g01 = round_down(r01 + s01);
-    fd.g20 = round_down(r20), fd.g11 = round_down(r11), fd.g02 = round_down(r02);
-    fd.h00 = round_down(2 * s00 + 6 * c3), fd.h10 = round_down(2 * s10), fd.h01 = round_down(2 * s01);
-    fd.d3 = round_down(6 * c3);
+    auto within = [&](int bits) {
+      const U lift = U(1) << bits;
+      auto o = [lift](auto c) { return U(c) + lift; };
+      return (o(p00) | o(p01) | o(p02) | o(p03) | o(p10) | o(p11) | o(p12) | o(p20) | o(p21) | o(p30)) < 2 * lift;
+    };
+    static_assert(10 * (int64_t(1) << 17) < max_fd_sum, "ten coefficients below 2^17 sum to below max_fd_sum");
+    if (!within(17)) {
+      if (!within(21)) return false;
+      auto mag = [](auto c) { return uint32_t(c < 0 ? -c : c); };
+      if (mag(p00) + mag(p01) + mag(p02) + mag(p03) + mag(p10) + mag(p11) + mag(p12) + mag(p20) + mag(p21) + mag(p30) >=
+          uint32_t(max_fd_sum))
+        return false;
+    }
+    const int32_t q00 = int32_t(p00), q01 = int32_t(p01), q02 = int32_t(p02), q03 = int32_t(p03);
+    const int32_t q10 = int32_t(p10), q11 = int32_t(p11), q12 = int32_t(p12), q20 = int32_t(p20), q21 = int32_t(p21);
+    const int32_t q30 = int32_t(p30);
+    auto mul = [](int32_t x, int32_t y) { return int64_t(x) * y; };
+    // P(a + m da, b + m db) = P + c1 m + c2 m^2 + c3 m^3 with c1 = P_a da + P_b db = r00 + r10 a
+    // + r01 b + r20 a^2 + r11 a b + r02 b^2 (r00 = p10 da + p01 db, r10 = 2 p20 da + p11 db, ...),
+    // c2 = s00 + s10 a + s01 b (s00 = p20 da^2 + p11 da db + p02 db^2, ...), c3 = p30 da^3 +
+    // p21 da^2 db + p12 da db^2 + p03 db^3; D1 = c1 + c2 + c3, D2 = 2 c2 + 6 c3, D3 = 6 c3.
+    // Bounds with the sum of |p| below 2^21 and |da|, |db| below 2^28.33: every sum below 2^51
+    // (g10, g01: 3 times the sum times 2^28.33), so each coefficient rounded to 2^-18 is below
+    // 2^31 (no int32 wraps before the budget below).
+    constexpr int down = q24_8::frac_bits + q2_30::frac_bits - value_frac_bits;
+    auto round_down = [](int64_t v) { return int32_t((v + (int64_t(1) << (down - 1))) >> down); };
+    // Horner's budget (steps_at): -2^26 <= g < 2^26, -2^28 <= h < 2^28 (256 and 1,024 grey
+    // levels), so that every multiplicand times 4 and every partial sum fit int32 with weights a
+    // little beyond [0, 1] (at most 3 |g| then 6 |g| in a sum; 3 |h|): each c + 2^k in [0, 2^(k+1)),
+    // so their bitwise or below 2^(k+1). Each coefficient stored as soon as it is formed (fd is
+    // undefined when the budget fails): few values live at once (the deepest Cortex-M4 frame).
+    constexpr uint32_t g_lift = uint32_t(1) << 26, h_lift = uint32_t(1) << 28;
+    uint32_t g_or = 0, h_or = 0;
+    auto x4 = [](int32_t v) { return int32_t(uint32_t(v) << 2); };
+    RowCoefficients& f = fd;
+    auto g = [&](int64_t sum, int32_t* to, bool lifted) __attribute__((always_inline)) {
+      const int32_t v = round_down(sum);
+      g_or |= uint32_t(v) + g_lift;
+      *to = lifted ? x4(v) : v;
+    };
+    auto h = [&](int64_t sum, int32_t* to, bool lifted) __attribute__((always_inline)) {
+      const int32_t v = round_down(sum);
+      h_or |= uint32_t(v) + h_lift;
+      *to = lifted ? x4(v) : v;
+    };
+    {
+      const int64_t c3 = mul_q30(mul_q30(mul(q30, da) + mul(q21, db), da), da) +
+                         mul_q30(mul_q30(mul(q12, da) + mul(q03, db), db), db);
+      f.d3 = round_down(6 * c3);
+      const int64_t s00 = mul_q30(mul(q20, da) + mul(q11, db), da) + mul_q30(mul(q02, db), db);
+      h(2 * s00 + 6 * c3, &f.h00, false);
+      g(mul(q10, da) + mul(q01, db) + s00 + c3, &f.g00, false);
+    }
+    {
+      const int64_t s10 = mul_q30(mul(3 * q30, da) + mul(2 * q21, db), da) + mul_q30(mul(q12, db), db);
+      h(2 * s10, &f.h10x4, true);
+      g(mul(2 * q20, da) + mul(q11, db) + s10, &f.g10, false);
+    }
+    {
+      const int64_t s01 = mul_q30(mul(q21, da) + mul(2 * q12, db), da) + mul_q30(mul(3 * q03, db), db);
+      h(2 * s01, &f.h01x4, true);
+      g(mul(q11, da) + mul(2 * q02, db) + s01, &f.g01, false);
+    }
+    g(mul(3 * q30, da) + mul(q21, db), &f.g20x4, true);
+    g(mul(2 * q21, da) + mul(2 * q12, db), &f.g11x4, true);
+    g(mul(q12, da) + mul(3 * q03, db), &f.g02x4, true);
+    if (g_or >= 2 * g_lift || h_or >= 2 * h_lift) return false;
+    // P in 2^-14 grey (e = p 2^6): the ten |e| sum to below 2^27.
+    constexpr int up = value_horner_frac_bits - q24_8::frac_bits;
+    auto e = [](int32_t q) { return int32_t(uint32_t(q) << up); };
+    f.e00 = e(q00), f.e01 = e(q01), f.e02 = e(q02), f.e10 = e(q10), f.e11 = e(q11), f.e20 = e(q20);
+    f.e03x4 = x4(e(q03)), f.e12x4 = x4(e(q12)), f.e21x4 = x4(e(q21)), f.e30x4 = x4(e(q30));
     return true;
   }
-
-  // Value and differences at weights a, b (q2_30, within [0, 1] up to rounding), in 2^-32 grey
-  // levels; only the first `order` differences (0 to 3), the others stay 0 (they do not reach
-  // the first `order` steps). Horner's rule with floor(x w / 2^30): below 9, 5 and 2 units of
-  // 2^-32 of error for the value, D1 and D2 from the products (docs/FIXED_POINT.md adds the
-  // coefficients' rounding).
-  CubicSteps steps_at(int32_t a, int32_t b, int order) const {
+  // The fraction bits of steps_at's value before it is shifted to value_frac_bits.
+  static constexpr int value_horner_frac_bits = 14;
+  // The value, D1 and D2 at weights a, b (q2_30, a covered pixel's) in 2^-18 grey by Horner's rule
+  // with floor(w t / 2^30) (mla_high): the value's in 2^-14 grey (below 10 units of error from
+  // its products), then times 16; D1's and D2's below 5 and 2 units. D3.
+  __attribute__((always_inline)) CubicSteps steps_at(int32_t a, int32_t b) const {
+    auto m4 = [](int32_t w, int32_t t4, int32_t p) __attribute__((always_inline)) { return mla_high(w, t4, p); };
+    auto m = [](int32_t w, int32_t t, int32_t p) __attribute__((always_inline)) {
+      return mla_high(w, int32_t(uint32_t(t) << 2), p);
+    };
+    const RowCoefficients& r = fd;
     CubicSteps s;
-    // The value's coefficients in 2^-32 grey (p is q24_8; |p| < 2^28 by the budget, so below 2^52).
-    // The innermost products as floor(p 2^24 w / 2^30) = floor(p w / 2^6): one 32 x 32 -> 64
-    // product, p fitting int32.
-    constexpr int lift = value_frac_bits - q24_8::frac_bits;
-    static_assert(max_fd_coefficient <= INT32_MAX, "coefficients of forward-differenced triangles fit int32");
-    auto fw = [](int64_t p, int32_t w) { return (int64_t(int32_t(p)) * w) >> (q2_30::frac_bits - lift); };
-#if TS_USE_INT128
-    const int64_t pb = f00 + mul_q30(f01 + mul_q30(f02 + fw(p03, b), b), b);
-    const int64_t pa = f10 + mul_q30(f11 + fw(p12, b), b) + mul_q30(f20 + fw(p21, b) + fw(p30, a), a);
-#else
-    auto f = [](int64_t p) { return int64_t(int32_t(p)) * (int64_t(1) << lift); };
-    const int64_t pb = f(p00) + mul_q30(f(p01) + mul_q30(f(p02) + fw(p03, b), b), b);
-    const int64_t pa = f(p10) + mul_q30(f(p11) + fw(p12, b), b) + mul_q30(f(p20) + fw(p21, b) + fw(p30, a), a);
-#endif
-    s.v = uint64_t(pb + mul_q30(pa, a));
-    // Every field written (0 beyond the order), so callers' arrays need no zeroing first.
-    s.d1 = order >= 1 ? uint64_t(fd.g00 + mul_q30(fd.g01 + mul_q30(fd.g02, b), b) +
-                                 mul_q30(fd.g10 + mul_q30(fd.g11, b) + mul_q30(fd.g20, a), a))
-                      : 0;
-    s.d2 = order >= 2 ? uint64_t(fd.h00 + mul_q30(fd.h10, a) + mul_q30(fd.h01, b)) : 0;
-    s.d3 = order >= 3 ? uint64_t(fd.d3) : 0;
+    s.d1 = uint32_t(m(a, m4(a, r.g20x4, m4(b, r.g11x4, r.g10)), m(b, m4(b, r.g02x4, r.g01), r.g00)));
+    s.d2 = uint32_t(m4(a, r.h10x4, m4(b, r.h01x4, r.h00)));
+    s.d3 = uint32_t(r.d3);
+    // Every partial sum at most the sum of the ten |e| < 2^27 (weights a little beyond [0, 1]), so
+    // times 4 within int32.
+    const int32_t pb = m(b, m(b, m4(b, r.e03x4, r.e02), r.e01), r.e00);
+    const int32_t pa = m(a, m4(a, r.e30x4, m4(b, r.e21x4, r.e20)), m(b, m4(b, r.e12x4, r.e11), r.e10));
+    s.v = uint32_t(m(a, pa, pb)) << (value_frac_bits - value_horner_frac_bits);
     return s;
   }
 };
@@ -520,57 +537,45 @@ static_assert(20 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <= Zienkie
 constexpr int32_t zienkiewicz_fd_min_length = 5;
 constexpr int32_t zienkiewicz_fd_min_area = 32;
 constexpr int64_t zienkiewicz_fd_min_area2 = int64_t(2 * zienkiewicz_fd_min_area) << (2 * config::subpixel_bits);
-// Forward differencing restarts (recomputes the differences from the weights) every this many
-// pixels counted from the row's first covered pixel.
-constexpr int32_t zienkiewicz_fd_restart = 64;
-
-// One row by forward differencing: a, b are the weights (q2_30) at the row's first covered pixel
-// xs, da, db their steps; calls put(n, steps) for the pixels xs + n, n = n0..n1, where steps[c].v
-// is channel c's value in 2^-32 grey plus `bias`. A pixel's value depends only on the triangle,
-// the row and n (the chunk [n - n % R, ...] it lies in restarts from integers), never on n0.
-// The error bound of docs/FIXED_POINT.md at m = R - 1 steps after a restart, in thousandths of a
-// unit of 2^-32 grey: 9 + m 8.2 + C(m,2) 4.1 + C(m,3) 0.875 units must stay below 2^-16 grey.
-constexpr int64_t zienkiewicz_fd_bound_milli(int64_t m) {
-  return 9000 + m * 8200 + m * (m - 1) / 2 * 4100 + m * (m - 1) * (m - 2) / 6 * 875;
+// Forward differencing restarts (steps_at from the weights) every this many pixels counted from
+// the row's first covered pixel.
+constexpr int32_t zienkiewicz_fd_restart = 32;
+// The error bound of docs/FIXED_POINT.md at m steps after a restart, in tenths of a unit of
+// 2^-18 grey: the differences' errors at the restart (D1 below 6.6 units, D2 below 3.1, D3 below
+// 0.6) grown by m, C(m, 2) and C(m, 3) steps. At m = R - 1 it must stay below 2^-5 grey.
+constexpr int64_t zienkiewicz_fd_bound_tenths(int64_t m) {
+  return m * 66 + m * (m - 1) / 2 * 31 + m * (m - 1) * (m - 2) / 6 * 6;
 }
-static_assert(zienkiewicz_fd_bound_milli(zienkiewicz_fd_restart - 1) <
-                  (int64_t(1000) << (ZienkiewiczChannel::value_frac_bits - 16)),
+static_assert(zienkiewicz_fd_bound_tenths(zienkiewicz_fd_restart - 1) <
+                  (int64_t(10) << (ZienkiewiczChannel::value_frac_bits - 5)),
               "forward differencing error must stay far below the final rounding");
 
-// The same a restart chunk at a time: chunk(n, end, steps) for the pixels n..end of one chunk,
-// steps at pixel n (to be stepped with CubicSteps::step from there).
+// One row by forward differencing, a restart chunk at a time: a, b are the weights (q2_30) at the
+// row's first covered pixel xs, da, db their steps; calls chunk(n, end, steps) for the pixels
+// xs + n, n = n0..n1, chunk by chunk, steps at pixel n (to be stepped with CubicSteps::step from
+// there), steps[c].v channel c's value in 2^-18 grey plus `bias`. A pixel's value depends only
+// on the triangle, the row and n (the chunk [n - n % R, ...] it lies in restarts from integers),
+// never on n0.
 template <int Channels, typename Chunk>
-inline void zienkiewicz_row_chunks(const ZienkiewiczChannel* ch, uint32_t a, uint32_t b, uint32_t da, uint32_t db,
-                                   int32_t n0, int32_t n1, uint64_t bias, Chunk&& chunk) {
+__attribute__((always_inline)) inline void zienkiewicz_row_chunks(const ZienkiewiczChannel* ch, uint32_t a, uint32_t b,
+                                                                  uint32_t da, uint32_t db, int32_t n0, int32_t n1,
+                                                                  uint32_t bias, Chunk&& chunk) {
   constexpr int32_t R = zienkiewicz_fd_restart;
-  static_assert(R > 0 && (R & (R - 1)) == 0, "restart interval is a power of two");
-  static_assert(uint32_t(R) <= CubicSteps::max_skip, "a chunk's skip within CubicSteps::skip's range");
+  static_assert(R > 0 && (R & (R - 1)) == 0 && R <= 1024, "restart interval: a power of two within CubicSteps::skip");
   int32_t n = n0;
   while (n <= n1) {
     const int32_t start = n & ~(R - 1);
     const int32_t end = start + (R - 1) < n1 ? start + (R - 1) : n1;
-    const int order = end - start < 3 ? end - start : 3;
     const int32_t ac = int32_t(a + da * uint32_t(start)), bc = int32_t(b + db * uint32_t(start));
     CubicSteps s[Channels];
     for (int c = 0; c < Channels; ++c) {
-      s[c] = ch[c].steps_at(ac, bc, order);
+      s[c] = ch[c].steps_at(ac, bc);
       s[c].v += bias;
       if (n > start) s[c].skip(uint32_t(n - start));
     }
     chunk(n, end, s);
     n = end + 1;
   }
-}
-
-template <int Channels, typename Put>
-inline void zienkiewicz_row(const ZienkiewiczChannel* ch, uint32_t a, uint32_t b, uint32_t da, uint32_t db, int32_t n0,
-                            int32_t n1, uint64_t bias, Put&& put) {
-  zienkiewicz_row_chunks<Channels>(ch, a, b, da, db, n0, n1, bias, [&](int32_t n, int32_t end, CubicSteps* s) {
-    for (; n <= end; ++n) {
-      put(n, s);
-      for (int c = 0; c < Channels; ++c) s[c].step();
-    }
-  });
 }
 
 // Barycentric weights a (vertex 0) and b (vertex 1) in q2_30, modulo 2^32, at a pixel (x, y):
