@@ -176,7 +176,6 @@ struct ZienkiewiczTriangle {
   __attribute__((always_inline)) bool set_up_rows() {
     const int32_t da = int32_t(steps.dadx), db = int32_t(steps.dbdx);
     fd_state = -1;
-    if (!ZienkiewiczChannel::steps_fit_rows(da, db)) return false;  // no row of 4 pixels or more
     for (int c = 0; c < Channels; ++c)
       if (!ch[c].setup_rows(da, db)) return false;
     fd_state = 1;
@@ -241,7 +240,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   using ZienkiewiczTriangle<Channels>::narrow;
 
   // Forward differencing set up on the first row that uses it (where begin did not: see
-  // begin_rows); false for a small triangle or one outside the bit budget (then every row is
+  // begin_rows); false for a small triangle or one outside the budget (then every row is
   // evaluated per pixel).
   __attribute__((noinline)) bool rows_ready_slow() { return this->set_up_rows(); }
   // The first row of at least zienkiewicz_fd_min_length pixels: forward differencing set up

@@ -117,9 +117,9 @@ std::vector<int32_t> row_values(const RowCase& rc, int c, int32_t n0, int32_t n1
   return out;
 }
 
-// A restart's value is within this many units of 2^-18 grey of the cubic at its weights (ten
+// A restart's value is within this many units of 2^-18 grey of the cubic at its weights (nine
 // floors of units of 2^-14: docs/FIXED_POINT.md).
-constexpr double restart_bound = 160;
+constexpr double restart_bound = double(zienkiewicz_fd_value_bound_tenths) / 10;
 
 // Every pixel of the row against its restart's value plus the exact change of the cubic from the
 // restart, and each restart's value against the cubic; returns the largest error in units of
@@ -308,7 +308,7 @@ TEST_CASE("setup_rows and steps_at equal their definitions in 128-bit arithmetic
   constexpr int64_t step_limit = (int64_t(1) << 28) + (int64_t(1) << 26);
   auto floor30 = [](i128 x, int64_t w) { return int64_t((x * w) >> 30); };
   auto round20 = [](i128 x) { return int64_t((x + (i128(1) << 19)) >> 20); };
-  int in_budget = 0, out_of_budget = 0;
+  int in_budget = 0, out_of_budget = 0, out_of_sum = 0;
   for (int i = 0; i < 40000; ++i) {
     ZienkiewiczChannel z{};
     Coefficients p;
@@ -346,10 +346,17 @@ TEST_CASE("setup_rows and steps_at equal their definitions in 128-bit arithmetic
     const int64_t h01 = round20(i128(2) * s01);
     const int64_t d3 = round20(i128(6) * c3);
     auto within = [](int64_t v, int bits) { return v >= -(int64_t(1) << bits) && v < (int64_t(1) << bits); };
-    const bool budget = sum < max_sum && within(g00, 26) && within(g10, 26) && within(g01, 26) && within(g20, 26) &&
-                        within(g11, 26) && within(g02, 26) && within(h00, 28) && within(h10, 28) && within(h01, 28);
+    const bool g_budget =
+        within(g00, 26) && within(g10, 26) && within(g01, 26) && within(g20, 26) && within(g11, 26) && within(g02, 26);
+    const bool h_budget = within(h00, 28) && within(h10, 28) && within(h01, 28);
+    const bool budget = sum < max_sum && g_budget && h_budget;
     REQUIRE(z.setup_rows(int32_t(da), int32_t(db)) == budget);
-    if (sum >= max_sum) continue;  // its g and h may not fit the comparison above
+    if (sum >= max_sum) {
+      ++out_of_sum;
+      continue;
+    }
+    // With the steps' budget the g budget implies the h budget (interpolate.h).
+    if (g_budget) REQUIRE(h_budget);
     if (!budget) {
       ++out_of_budget;
       continue;
@@ -384,6 +391,15 @@ TEST_CASE("setup_rows and steps_at equal their definitions in 128-bit arithmetic
   }
   CHECK(in_budget > 10000);
   CHECK(out_of_budget > 100);
+  CHECK(out_of_sum > 100);
+  // Steps beyond their budget, whatever the coefficients.
+  {
+    ZienkiewiczChannel z{};
+    set_coefficients(z, Coefficients{});
+    CHECK(z.setup_rows(int32_t(step_limit), 0));
+    CHECK_FALSE(z.setup_rows(int32_t(step_limit + 1), 0));
+    CHECK_FALSE(z.setup_rows(0, int32_t(-step_limit - 1)));
+  }
   // At and beyond the coefficients' budget (either sign, one coefficient or spread) and the steps'.
   for (int k = 0; k < 10; ++k)
     for (int64_t sign : {1, -1}) {
@@ -427,12 +443,13 @@ TEST_CASE("forward-differenced rows stay within the documented bound of the cubi
 
 TEST_CASE("coefficients and steps at the budget: no overflow, still within the bound") {
   std::mt19937 rng(23);
-  const int64_t sum = ZienkiewiczChannel::max_fd_sum - 1;
-  int rows = 0;
-  for (int t = 0; t < 400; ++t) {
+  int rows = 0, shortest = 0;
+  for (int t = 0; t < 800; ++t) {
     RowCase rc;
+    // The sum of magnitudes at the budget (or, for the short rows' steps to pass the differences'
+    // budget, a power of two below), spread over the ten or in one coefficient.
+    const int64_t sum = (ZienkiewiczChannel::max_fd_sum - 1) >> (t % 2 ? 0 : int(rng() % 8));
     for (auto& ch : rc.ch) {
-      // The sum of magnitudes at the budget, spread over the ten or in one coefficient.
       Coefficients p{};
       if (rng() % 3 == 0) {
         p[rng() % 10] = rng() % 2 ? sum : -sum;
@@ -449,6 +466,7 @@ TEST_CASE("coefficients and steps at the budget: no overflow, still within the b
     for (auto& ch : rc.ch) fits &= ch.setup_rows(-step, step);
     if (!fits) continue;  // the differences' budget (tested above against its definition)
     ++rows;
+    shortest += length == 5;
     rc.a = 1u << 30;
     rc.b = 0;
     rc.da = uint32_t(-step);
@@ -456,7 +474,8 @@ TEST_CASE("coefficients and steps at the budget: no overflow, still within the b
     rc.length = length;
     check_row(rc, nullptr);
   }
-  CHECK(rows > 50);
+  CHECK(rows > 100);
+  CHECK(shortest > 10);  // rows at the steps' limit
 }
 
 TEST_CASE("a pixel's value does not depend on where its span starts") {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Zienkiewicz rows long enough for forward differencing and its restarts every 64 pixels (large
+// Zienkiewicz rows long enough for forward differencing and its restarts every 32 pixels (large
 // triangles of sparse meshes): the output must be bit-identical for every tiling, whatever tile
 // edge cuts a row inside a restart chunk.
 #include <catch2/catch.hpp>

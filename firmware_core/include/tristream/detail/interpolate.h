@@ -411,11 +411,17 @@ struct ZienkiewiczChannel {
     constexpr uint32_t limit = (uint32_t(1) << 28) + (uint32_t(1) << 26);
     return (uint32_t(da) + limit <= 2 * limit) & (uint32_t(db) + limit <= 2 * limit);
   }
-  // The forward-difference polynomials for the steps da, db (steps_fit_rows: the caller's check);
-  // false (fd then undefined) outside the budget. The Taylor terms along the row in 2^-38 grey (p
+  // The forward-difference polynomials for the steps da, db; false (fd then undefined) outside
+  // the budget (the steps', steps_fit_rows, first). The Taylor terms along the row in 2^-38 grey (p
   // in 2^-8 times q2_30): c1 exact, c2 and c3 from floor(x w / 2^30) products (mul_q30; below 2
   // and 3 units of 2^-38 off), then each coefficient rounded once to 2^-18.
-  TS_SETUP_ROWS_ATTRIBUTES bool setup_rows(int32_t da, int32_t db) {
+  __attribute__((always_inline)) bool setup_rows(int32_t da, int32_t db) {
+    // No row of 5 pixels or more, and the bounds below rest on the steps' budget. Checked here,
+    // inlined: in the out-of-line part it cost the deepest Cortex-M4 frame 8 bytes.
+    return steps_fit_rows(da, db) && setup_rows_within(da, db);
+  }
+  // setup_rows for steps within steps_fit_rows.
+  TS_SETUP_ROWS_ATTRIBUTES bool setup_rows_within(int32_t da, int32_t db) {
 #if !TS_USE_INT128
     if (wide()) return false;
 #endif
@@ -449,32 +455,34 @@ struct ZienkiewiczChannel {
     // c2 = s00 + s10 a + s01 b (s00 = p20 da^2 + p11 da db + p02 db^2, ...), c3 = p30 da^3 +
     // p21 da^2 db + p12 da db^2 + p03 db^3; D1 = c1 + c2 + c3, D2 = 2 c2 + 6 c3, D3 = 6 c3.
     // Bounds with the sum of |p| below 2^21 and |da|, |db| below 2^28.33: every sum below 2^51
-    // (g10, g01: 3 times the sum times 2^28.33), so each coefficient rounded to 2^-18 is below
+    // (g20, g02: 3 times the sum times 2^28.33), so each coefficient rounded to 2^-18 is below
     // 2^31 (no int32 wraps before the budget below).
     constexpr int down = q24_8::frac_bits + q2_30::frac_bits - value_frac_bits;
     auto round_down = [](int64_t v) { return int32_t((v + (int64_t(1) << (down - 1))) >> down); };
     // Horner's budget (steps_at): -2^26 <= g < 2^26, -2^28 <= h < 2^28 (256 and 1,024 grey
     // levels), so that every multiplicand times 4 and every partial sum fit int32 with weights a
     // little beyond [0, 1] (at most 3 |g| then 6 |g| in a sum; 3 |h|): each c + 2^k in [0, 2^(k+1)),
-    // so their bitwise or below 2^(k+1). Each coefficient stored as soon as it is formed (fd is
+    // so their bitwise or below 2^(k+1). With the steps' budget the g budget implies the h budget
+    // (D2's terms are the steps times D1's: |h| below 1.6 2^26); its check is kept so that steps_at's
+    // bound does not rest on that derivation. Each coefficient stored as soon as it is formed (fd is
     // undefined when the budget fails): few values live at once (the deepest Cortex-M4 frame).
     constexpr uint32_t g_lift = uint32_t(1) << 26, h_lift = uint32_t(1) << 28;
     uint32_t g_or = 0, h_or = 0;
     auto x4 = [](int32_t v) { return int32_t(uint32_t(v) << 2); };
     RowCoefficients& f = fd;
-    auto g = [&](int64_t sum, int32_t* to, bool lifted) __attribute__((always_inline)) {
+    auto g = [&](int64_t sum, int32_t * to, bool lifted) __attribute__((always_inline)) {
       const int32_t v = round_down(sum);
       g_or |= uint32_t(v) + g_lift;
       *to = lifted ? x4(v) : v;
     };
-    auto h = [&](int64_t sum, int32_t* to, bool lifted) __attribute__((always_inline)) {
+    auto h = [&](int64_t sum, int32_t * to, bool lifted) __attribute__((always_inline)) {
       const int32_t v = round_down(sum);
       h_or |= uint32_t(v) + h_lift;
       *to = lifted ? x4(v) : v;
     };
     {
-      const int64_t c3 = mul_q30(mul_q30(mul(q30, da) + mul(q21, db), da), da) +
-                         mul_q30(mul_q30(mul(q12, da) + mul(q03, db), db), db);
+      const int64_t c3 =
+          mul_q30(mul_q30(mul(q30, da) + mul(q21, db), da), da) + mul_q30(mul_q30(mul(q12, da) + mul(q03, db), db), db);
       f.d3 = round_down(6 * c3);
       const int64_t s00 = mul_q30(mul(q20, da) + mul(q11, db), da) + mul_q30(mul(q02, db), db);
       h(2 * s00 + 6 * c3, &f.h00, false);
@@ -504,8 +512,8 @@ struct ZienkiewiczChannel {
   // The fraction bits of steps_at's value before it is shifted to value_frac_bits.
   static constexpr int value_horner_frac_bits = 14;
   // The value, D1 and D2 at weights a, b (q2_30, a covered pixel's) in 2^-18 grey by Horner's rule
-  // with floor(w t / 2^30) (mla_high): the value's in 2^-14 grey (below 10 units of error from
-  // its products), then times 16; D1's and D2's below 5 and 2 units. D3.
+  // with floor(w t / 2^30) (mla_high): the value's in 2^-14 grey (below 9 units of error from
+  // its nine floors), then times 16; D1's and D2's below 5 and 2 units. D3.
   __attribute__((always_inline)) CubicSteps steps_at(int32_t a, int32_t b) const {
     auto m4 = [](int32_t w, int32_t t4, int32_t p) __attribute__((always_inline)) { return mla_high(w, t4, p); };
     auto m = [](int32_t w, int32_t t, int32_t p) __attribute__((always_inline)) {
@@ -542,11 +550,14 @@ constexpr int64_t zienkiewicz_fd_min_area2 = int64_t(2 * zienkiewicz_fd_min_area
 constexpr int32_t zienkiewicz_fd_restart = 32;
 // The error bound of docs/FIXED_POINT.md at m steps after a restart, in tenths of a unit of
 // 2^-18 grey: the differences' errors at the restart (D1 below 6.6 units, D2 below 3.1, D3 below
-// 0.6) grown by m, C(m, 2) and C(m, 3) steps. At m = R - 1 it must stay below 2^-5 grey.
+// 0.6) grown by m, C(m, 2) and C(m, 3) steps, against the restart's value plus the cubic's exact
+// change; the restart's value is within zienkiewicz_fd_value_bound_tenths of the cubic (nine
+// floors of 2^-14). Their sum at m = R - 1 must stay below 2^-5 grey.
 constexpr int64_t zienkiewicz_fd_bound_tenths(int64_t m) {
   return m * 66 + m * (m - 1) / 2 * 31 + m * (m - 1) * (m - 2) / 6 * 6;
 }
-static_assert(zienkiewicz_fd_bound_tenths(zienkiewicz_fd_restart - 1) <
+constexpr int64_t zienkiewicz_fd_value_bound_tenths = 10 * 9 * 16;
+static_assert(zienkiewicz_fd_value_bound_tenths + zienkiewicz_fd_bound_tenths(zienkiewicz_fd_restart - 1) <
                   (int64_t(10) << (ZienkiewiczChannel::value_frac_bits - 5)),
               "forward differencing error must stay far below the final rounding");
 
