@@ -54,8 +54,8 @@ struct VertexGradients {
   }
 };
 
-// RGB565 written by DirectWriter from three channels (rounded): the forward-differenced rows then go
-// channel by channel into the pixels (ZienkiewiczShader::rgb565_channel), with no staging.
+// RGB565 written by DirectWriter from three channels (rounded): the rows go straight into the
+// pixels (ZienkiewiczShader::rgb565_rows, rgb565_pixels), with no staging.
 template <typename W>
 struct DirectRgb565 {
   static constexpr bool value = false;
@@ -65,21 +65,6 @@ struct DirectRgb565<DirectWriter<F, 3, false>> {
   static constexpr bool value = F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be;
   static constexpr PixelFormat format = F;
 };
-template <int N>
-struct IntConstant {
-  static constexpr int value = N;
-};
-
-// The halfword that store565_bytes stored at p (its two bytes in little-endian order of their bits).
-__attribute__((always_inline)) inline uint16_t load565_bytes(const uint8_t* p) {
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-  uint16_t h;
-  memcpy(&h, p, 2);  // one halfword load
-  return h;
-#else
-  return uint16_t(p[0] | p[1] << 8);
-#endif
-}
 
 // ZienkiewiczTriangle::begin's parts: out of line where the 32-bit forms are used (Cortex-M, where
 // each then has its own frame on top of the tile function's, not their sum: see begin), inlined
@@ -382,6 +367,21 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   }
   // Pixels x0..x1 of row y by forward differencing from the weights at xs.
   __attribute__((noinline)) void forward_differenced(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
+#if !TS_USE_SSE2
+    if constexpr (DirectRgb565<Writer>::value) {
+      // Tail calls: this frame is gone below theirs. Optimized for size one loop, by the offsets.
+#if defined(__OPTIMIZE_SIZE__)
+      rgb565_rows<true>(y, xs, x0, x1);
+#else
+      if (writer.dither) {
+        rgb565_rows<true>(y, xs, x0, x1);
+      } else {
+        rgb565_rows<false>(y, xs, x0, x1);
+      }
+#endif
+      return;
+    }
+#endif
     constexpr int vf = ZienkiewiczChannel::value_frac_bits;
     constexpr uint32_t half = uint32_t(1) << (vf - 1);
     uint32_t a, b;
@@ -412,39 +412,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       return;
     }
 #endif
-    if constexpr (DirectRgb565<Writer>::value) {
-      // Rounding to nearest folded into the values (exact: the differences are unchanged). One
-      // channel at a time over the whole row, its field of each pixel stored (channel 0) or OR-ed
-      // into the halfword (1, 2): the RGB565 fields of put_rounded are separate bit fields of the
-      // same value (pack565_nearest, pack565_dithered), so the pixels are the same. No staging of
-      // the three channels' steps and bytes.
-      static_assert(bytes_per_pixel(DirectRgb565<Writer>::format) == 2, "RGB565");
-#if defined(__OPTIMIZE_SIZE__)
-      // One loop for both (half the code).
-      const uint32_t* const offsets = writer.dither ? dither_span_offsets(y, x0, p) : nearest_offsets;
-#else
-      const uint32_t* const offsets = writer.dither ? dither_span_offsets(y, x0, p) : nullptr;
-#endif
-      auto pass = [&](auto channel) __attribute__((always_inline)) {
-        constexpr int c = decltype(channel)::value;
-        zienkiewicz_row_chunks<1>(&ch[c], a, b, da, db, x0 - xs, x1 - xs, half,
-                                  [&](int32_t n, int32_t end, CubicSteps* s) {
-                                    uint8_t* const q = p + 2 * (n - (x0 - xs));
-#if defined(__OPTIMIZE_SIZE__)
-                                    rgb565_channel<c, true>(*s, q, end - n + 1, offsets);
-#else
-                                    if (offsets) {
-                                      rgb565_channel<c, true>(*s, q, end - n + 1, offsets);
-                                    } else {
-                                      rgb565_channel<c, false>(*s, q, end - n + 1, offsets);
-                                    }
-#endif
-                                  });
-      };
-      pass(IntConstant<0>{});
-      pass(IntConstant<1>{});
-      pass(IntConstant<2>{});
-    } else if constexpr (Writer::takes_rounded) {
+    if constexpr (Writer::takes_rounded) {
       // Rounding to nearest folded into the values; clamped here (rarely needed: the writer's
       // clamp then folds away).
       zienkiewicz_row_chunks<Channels>(ch, a, b, da, db, x0 - xs, x1 - xs, half,
@@ -476,51 +444,61 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
                                        });
     }
   }
-  // Channel C's RGB565 field of `count` pixels from p (2 bytes each) from the steps s (value in
-  // 2^-18 grey plus the rounding offset): clamp(int32(v) >> 18, 0, 255) as put_rounded takes it,
-  // its field alone (channel 0: stored; 1, 2: OR-ed into the pixel), dithered by the row's offsets
-  // (dither_span_offsets) or by the tables (where the code is optimized for size by the offsets
-  // of pack565_nearest: no tables). Its own loop over locals: the four words of the steps stay
-  // in the registers of a Cortex-M4.
-  template <int C, bool Dither>
-  __attribute__((noinline)) static void rgb565_channel(CubicSteps s, uint8_t* p, int32_t count,
-                                                       const uint32_t* offsets) {
+  // forward_differenced's RGB565 rows without SSE2 (rounding to nearest folded into the values):
+  // the three channels stepped together a pixel (nine words of differences in registers, the
+  // three D3 reloaded), each pixel packed as put_rounded packs it: by the tables, or ByOffsets by
+  // the row's Bayer offsets when dithering (optimized for size also without, by nearest_offsets:
+  // no tables). One channel at a time into its bit field cost three calls a chunk: -2 % to -8 %
+  // modelled Cortex-M4 cycles at -O2. Its own frame, not below forward_differenced's (the deepest
+  // zienkiewicz stack stays that of the set-up).
+  template <bool ByOffsets>
+  __attribute__((noinline)) void rgb565_rows(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
     constexpr PixelFormat F = DirectRgb565<Writer>::format;
     constexpr int vf = ZienkiewiczChannel::value_frac_bits;
-    uint32_t value = s.v, first = s.d1, second = s.d2;
-    const uint32_t third = s.d3;
-    uint8_t* const end = p + 2 * count;
-    [[maybe_unused]] const uint32_t k = in_register(C == 1 ? dither_k63 : dither_k31);
-#if !defined(__OPTIMIZE_SIZE__)
-    [[maybe_unused]] const uint16_t* green = rgb565_table<F>.v + 256;
-    if constexpr (C == 1 && !Dither) __asm__("" : "+r"(green));
-#endif
-    for (; p != end; p += 2) {
-      const int32_t h = int32_t(value) >> vf;
-      const uint32_t v = uint32_t(h < 0 ? 0 : (h > 255 ? 255 : h));
-      uint32_t field;
-      if constexpr (Dither) {
-        field = rgb565_bytes<F>(((v * k + offsets[dither_index(p)]) >> 23) << (C == 0 ? 11 : (C == 1 ? 5 : 0)));
-      } else {
+    uint32_t a, b;
+    steps.at(xs, y, &a, &b);
+    uint8_t* const p = writer.at(x0, y);
+    [[maybe_unused]] const uint32_t* offset = nullptr;
+    if constexpr (ByOffsets) {
 #if defined(__OPTIMIZE_SIZE__)
-        static_assert(Dither, "-Os: one loop, by the offsets");
+      offset = writer.dither ? dither_span_offsets(y, x0, p) : nearest_offsets;
 #else
-        const uint16_t* const rt = rgb565_table<F>.v;
-        if constexpr (C == 0) {
-          field = rt[v];
-        } else if constexpr (C == 1) {
-          field = green[v];
-        } else {
-          field = uint16_t(F == PixelFormat::rgb565_be ? uint32_t(rt[v]) << 5 : uint32_t(rt[v]) >> 11);
-        }
+      offset = dither_span_offsets(y, x0, p);
 #endif
-      }
-      if constexpr (C != 0) field |= load565_bytes(p);
-      store565_bytes(p, uint16_t(field));
-      value += first;
-      first += second;
-      second += third;
     }
+    zienkiewicz_row_chunks<3>(
+        ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint32_t(1) << (vf - 1),
+        [&](int32_t n, int32_t end, CubicSteps* s) {
+          uint32_t r = s[0].v, r1 = s[0].d1, r2 = s[0].d2;
+          uint32_t g = s[1].v, g1 = s[1].d1, g2 = s[1].d2;
+          uint32_t bl = s[2].v, b1 = s[2].d1, b2 = s[2].d2;
+          const uint32_t r3 = s[0].d3, g3 = s[1].d3, b3 = s[2].d3;
+          auto u8 = [](uint32_t v) {
+            const int32_t h = int32_t(v) >> vf;
+            return uint32_t(h < 0 ? 0 : (h > 255 ? 255 : h));
+          };
+          uint8_t* q = p + 2 * (n - (x0 - xs));
+          uint8_t* const stop = q + 2 * (end - n + 1);
+          if constexpr (ByOffsets) {
+            const uint32_t k31 = in_register(dither_k31), k63 = in_register(dither_k63);
+            for (; q != stop; q += 2) {
+              store565_bytes(
+                  q, rgb565_bytes<F>(pack565_dithered(u8(r), u8(g), u8(bl), offset[dither_index(q)], k31, k63)));
+              r += r1, r1 += r2, r2 += r3;
+              g += g1, g1 += g2, g2 += g3;
+              bl += b1, b1 += b2, b2 += b3;
+            }
+          } else {
+            const uint16_t* table = rgb565_table<F>.v;
+            __asm__("" : "+r"(table));  // the table's address in a register
+            for (; q != stop; q += 2) {
+              store565_bytes(q, pack565_bytes_by_table_biased<F>(u8(r), u8(g) + 256, u8(bl), table));
+              r += r1, r1 += r2, r2 += r3;
+              g += g1, g1 += g2, g2 += g3;
+              bl += b1, b1 += b2, b2 += b3;
+            }
+          }
+        });
   }
 };
 
