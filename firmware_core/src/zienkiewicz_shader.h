@@ -86,7 +86,7 @@ struct ZienkiewiczTriangle {
   ZienkiewiczChannel ch[Channels];
   BarycentricStepper steps;
   int fd_state = 0;     // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
-  bool narrow = false;  // every channel fits ZienkiewiczChannel::eval_narrow (zienkiewicz_narrow_forms)
+  bool narrow = false;  // every channel fits ZienkiewiczChannel::eval_narrow
 
   // The set-up of a triangle in parts: the stepper (begin_steps), the coefficients (begin_channels)
   // and, on Cortex-M, the 64-bit expansion of the rare channels beyond the 32-bit budget
@@ -152,6 +152,7 @@ struct ZienkiewiczTriangle {
       }
     } else {
       bool fits = true;
+#pragma GCC unroll 3
       for (int c = 0; c < Channels; ++c)
         fits &= ch[c].setup(in.dx, in.dy, VertexValues{in.values, 2 * c}, VertexGradients{in.gradients, 8 * c});
       narrow = fits;
@@ -205,7 +206,7 @@ struct ZienkiewiczTriangle {
   __attribute__((noinline)) bool wide_channel(const TriangleView& tv, int c) {
     int32_t dx[3], dy[3];
     for (int k = 0; k < 3; ++k) edge(tv, k, &dx[k], &dy[k]);
-    return ch[c].template expand_wide<true>(dx, dy, IndexedValues{this, &tv, c}, IndexedGradients{this, &tv, c});
+    return ch[c].expand_wide(dx, dy, IndexedValues{this, &tv, c}, IndexedGradients{this, &tv, c});
   }
 };
 
@@ -263,8 +264,8 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     uint32_t a, b;
     // The weights at x0 directly: the same sums modulo 2^32 as at xs plus (x0 - xs) steps.
     steps.at(x0, y, &a, &b);
-    if (zienkiewicz_narrow_forms && narrow) {
-      per_pixel<zienkiewicz_narrow_forms>(y, x0, x1, a, b);
+    if (narrow) {
+      per_pixel<true>(y, x0, x1, a, b);
     } else {
       per_pixel<false>(y, x0, x1, a, b);
     }
@@ -273,8 +274,6 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   // channel's coefficients fit ZienkiewiczChannel::eval_narrow (the same values in 32 bits).
   template <bool Narrow>
   void per_pixel(int32_t y, int32_t x0, int32_t x1, uint32_t a, uint32_t b) {
-    constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
-    constexpr int32_t half = 1 << (q24_8::frac_bits - 1);
     auto* p = writer.at(x0, y);
     if constexpr (Narrow && DirectRgb565<Writer>::value) {
       // RGB565 from the 32-bit forms: the dither flag read once a row, not a pixel, and each pixel
@@ -304,35 +303,45 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       }
       return;
     }
-    for (int32_t x = x0; x <= x1; ++x) {
-      const int32_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;
-      if constexpr (Writer::takes_rounded) {
+    if constexpr (Narrow && Writer::takes_rounded) {
+      // The weights as eval_narrow takes them, stepped (on 64-bit hosts times 2^32: no shifts a pixel).
+      using Weights = ZienkiewiczChannel::Weights;
+      Weights w = Weights::of(a, b);
+      const Weights dw = Weights::of(steps.dadx, steps.dbdx);
+      for (int32_t x = x0; x <= x1; ++x, w.step(dw)) {
         // Rounded and clamped here (as to_u8 of the int32-clamped value); the writer's clamp then
-        // folds away, and values are rarely out of range.
+        // folds away, and values are rarely out of range. The channels written out, not a loop (as
+        // a loop the values go through the stack): -2 % to -3 % modelled Cortex-M4 cycles at -O2,
+        // -4 % to -7 % at -Os.
         int32_t r[Channels];
-        if constexpr (Narrow) {
-          // The channels written out, not a loop (as a loop the values go through the stack):
-          // -2 % to -3 % modelled Cortex-M4 cycles at -O2, -4 % to -7 % at -Os.
-          auto one = [&](int c) __attribute__((always_inline)) {
-            r[c] = int32_t(rounded(ch[c].eval_narrow(a15, b15)));
-          };
-          static_assert(Channels == 1 || Channels == 3, "grey or three channels");
-          one(0);
-          if constexpr (Channels == 3) {
-            one(1);
-            one(2);
-          }
-        } else {
-          for (int c = 0; c < Channels; ++c) {
-            int64_t v = (ch[c].eval_wide(a15, b15) + half) >> q24_8::frac_bits;
-            if (uint64_t(v) > 255) v = v < 0 ? 0 : 255;
-            r[c] = int32_t(v);
-          }
+        auto one = [&](int c) __attribute__((always_inline)) { r[c] = int32_t(rounded(ch[c].eval_narrow(w))); };
+        static_assert(Channels == 1 || Channels == 3, "grey or three channels");
+        one(0);
+        if constexpr (Channels == 3) {
+          one(1);
+          one(2);
+        }
+        writer.put_rounded(p, x, y, r);
+        p += bpp;
+      }
+      return;
+    }
+    for (int32_t x = x0; x <= x1; ++x) {
+      const int32_t wa = int32_t(a), wb = int32_t(b);
+      if constexpr (Writer::takes_rounded) {
+        int32_t r[Channels];
+        for (int c = 0; c < Channels; ++c) {
+          int64_t v = ch[c].eval_wide(wa, wb) >> q24_8::frac_bits;  // the bias: rounded to nearest
+          if (uint64_t(v) > 255) v = v < 0 ? 0 : 255;
+          r[c] = int32_t(v);
         }
         writer.put_rounded(p, x, y, r);
       } else {
         int32_t q8[Channels];
-        for (int c = 0; c < Channels; ++c) q8[c] = Narrow ? ch[c].eval_narrow(a15, b15) : ch[c].eval(a15, b15);
+        for (int c = 0; c < Channels; ++c)
+          q8[c] = Narrow && !ZienkiewiczChannel::narrow_always
+                      ? int32_t(ch[c].eval_narrow(wa, wb) - ZienkiewiczChannel::rounding_bias)
+                      : ch[c].eval(wa, wb);
         writer.put(p, x, y, q8);
       }
       p += bpp;
@@ -340,29 +349,43 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       b += steps.dbdx;
     }
   }
-  // A q24_8 value from eval_narrow rounded and clamped to [0, 255] (as to_u8 of the int32-clamped
-  // value, what put_rounded takes).
-  __attribute__((always_inline)) static uint32_t rounded(int32_t q8) {
-    constexpr int32_t half = 1 << (q24_8::frac_bits - 1);
-    const int32_t v = (q8 + half) >> q24_8::frac_bits;
-    return uint32_t(v < 0 ? 0 : (v > 255 ? 255 : v));
+  // A q24_8 value plus ZienkiewiczChannel::rounding_bias from eval_narrow rounded and clamped to
+  // [0, 255] (as to_u8 of the int32-clamped value, what put_rounded takes).
+  using NarrowValue = ZienkiewiczChannel::NarrowValue;
+  __attribute__((always_inline)) static uint32_t rounded(NarrowValue biased) {
+    NarrowValue v = biased >> q24_8::frac_bits;
+#if defined(__ARM_FEATURE_SAT)
+    return uint32_t(v < 0 ? 0 : (v > 255 ? 255 : v));  // one USAT
+#else
+    // Rare: a branch (x86-64: 3 instructions a channel less than conditional moves).
+    if (static_cast<decltype(uint64_t(0) + v)>(v) > 255) v = v < 0 ? 0 : 255;
+    return uint32_t(v);
+#endif
+  }
+  // Three channels rounded: out(rounded(v0), rounded(v1), rounded(v2)); without USAT one test for
+  // the three (all in range when their bitwise or is below 2^16: x86-64 5 instructions a pixel less).
+  template <typename Out>
+  __attribute__((always_inline)) static void rounded3(NarrowValue v0, NarrowValue v1, NarrowValue v2, const Out& out) {
+#if !defined(__ARM_FEATURE_SAT)
+    constexpr int f = q24_8::frac_bits;
+    if (uint64_t(v0 | v1 | v2) < (uint64_t(256) << f)) {
+      out(uint32_t(v0) >> f, uint32_t(v1) >> f, uint32_t(v2) >> f);
+      return;
+    }
+#endif
+    out(rounded(v0), rounded(v1), rounded(v2));
   }
   // per_pixel's RGB565 loop by the 32-bit forms: `count` pixels from p (2 bytes each) from the
   // weights a, b, each channel rounded and clamped as put_rounded takes it, then store(pixel, r, g, b).
   template <typename Store>
   __attribute__((always_inline)) void rgb565_pixels(uint8_t* p, int32_t count, uint32_t a, uint32_t b,
                                                     const Store& store) const {
-    constexpr int down = q2_30::frac_bits - q17_15::frac_bits;
-    const uint32_t da = steps.dadx, db = steps.dbdx;
-    // The lifted coefficients formed once for the row, not once a pixel (0 to -2.5 % modelled
-    // Cortex-M4 cycles at -O2, -3.5 % dithered).
-    const ZienkiewiczChannel::Lifted lifted[3] = {ch[0].lifted(), ch[1].lifted(), ch[2].lifted()};
-    auto one = [&](int c, int32_t a15, int32_t b15) __attribute__((always_inline)) {
-      return rounded(ch[c].eval_narrow(a15, b15, lifted[c]));
-    };
-    for (uint8_t* const end = p + 2 * count; p != end; p += 2, a += da, b += db) {
-      const int32_t a15 = int32_t(a) >> down, b15 = int32_t(b) >> down;
-      store(p, one(0, a15, b15), one(1, a15, b15), one(2, a15, b15));
+    using Weights = ZienkiewiczChannel::Weights;
+    Weights w = Weights::of(a, b);
+    const Weights dw = Weights::of(steps.dadx, steps.dbdx);
+    for (uint8_t* const end = p + 2 * count; p != end; p += 2, w.step(dw)) {
+      rounded3(ch[0].eval_narrow(w), ch[1].eval_narrow(w), ch[2].eval_narrow(w),
+               [&](uint32_t r, uint32_t g, uint32_t bl) { store(p, r, g, bl); });
     }
   }
   // Pixels x0..x1 of row y by forward differencing from the weights at xs.

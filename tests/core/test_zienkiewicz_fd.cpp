@@ -5,6 +5,7 @@
 // independent of where a span starts.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <random>
@@ -151,7 +152,7 @@ double check_row(const RowCase& rc, double* worst_ratio) {
 
 }  // namespace
 
-TEST_CASE("mul_q30 and Wide equal 128-bit arithmetic") {
+TEST_CASE("mul_q30, mul_q32 and Wide equal 128-bit arithmetic") {
   std::mt19937_64 rng(3);
   const int64_t xs[] = {0, 1, -1, (int64_t(1) << 61) - 1, -(int64_t(1) << 61) + 1, 0x123456789abcdefll >> 4};
   const int32_t ys[] = {0, 1, -1, INT32_MAX, INT32_MIN, 1 << 30, -(1 << 30)};
@@ -159,12 +160,16 @@ TEST_CASE("mul_q30 and Wide equal 128-bit arithmetic") {
     for (int32_t y : ys) {
       CHECK(mul_q30_portable(x, y) == int64_t((i128(x) * y) >> 30));
       CHECK(mul_q30(x, y) == mul_q30_portable(x, y));
+      CHECK(SplitProduct(x, y).high == int64_t((i128(x) * y) >> 32));
+      CHECK(mul_q32(x, y) == SplitProduct(x, y).high);
     }
   for (int i = 0; i < 200000; ++i) {
     const int64_t x = int64_t(rng()) >> (3 + rng() % 60);
     const int32_t y = int32_t(uint32_t(rng())) >> (rng() % 31);
     REQUIRE(mul_q30_portable(x, y) == int64_t((i128(x) * y) >> 30));
     REQUIRE(mul_q30(x, y) == mul_q30_portable(x, y));
+    REQUIRE(SplitProduct(x, y).high == int64_t((i128(x) * y) >> 32));
+    REQUIRE(mul_q32(x, y) == SplitProduct(x, y).high);
     const int64_t a = int64_t(rng()) >> (rng() % 63), b = int64_t(rng()) >> (rng() % 63);
     const int64_t c = int64_t(rng()) >> (2 + rng() % 61), d = int64_t(rng()) >> (2 + rng() % 61);
     const Wide w = Wide::product(a, b) + Wide::product(c, d);
@@ -192,42 +197,96 @@ TEST_CASE("CubicSteps::skip equals repeated steps") {
   }
 }
 
+// The degree of coefficient k of Coefficients (p00, p01, p02, p03, p10, p11, p12, p20, p21, p30).
+constexpr int degree[10] = {0, 1, 2, 3, 1, 2, 3, 2, 3, 3};
+
 TEST_CASE("eval_narrow equals eval_wide within its coefficient budget") {
   std::mt19937_64 rng(11);
-  constexpr int64_t max = ZienkiewiczChannel::max_narrow_coefficient;
+  // The budget is on the scaled coefficients s = p 4^degree (s00 with the rounding bias): each in
+  // [-S, S).
+  constexpr int64_t max = ZienkiewiczChannel::max_narrow_coefficient, bias = ZienkiewiczChannel::rounding_bias;
+  auto lo = [](int k) { return -(max >> (2 * degree[k])) - (k == 0 ? bias : 0); };
+  auto hi = [](int k) { return (max >> (2 * degree[k])) - 1 - (k == 0 ? bias : 0); };
   ZienkiewiczChannel z{};
   Coefficients p{};
-  // Weights as the shader forms them (int32 q2_30 >> 15: |w| <= 2^16), the extremes included.
-  const int32_t extremes[] = {-(1 << 16), (1 << 16) - 1, 1 << 15, -1, 0, 1};
+  // Any int32 q2_30 weights (the shader's modular sums read as int32), the extremes included.
+  const int32_t extremes[] = {INT32_MIN, INT32_MAX, 1 << 30, -(1 << 30), -1, 0, 1};
   for (int i = 0; i < 200000; ++i) {
-    for (int64_t& q : p) {
+    for (int k = 0; k < 10; ++k) {
       const uint64_t r = rng();
-      q = r % 3 == 0 ? (r & 8 ? max : -max) : int64_t(r % uint64_t(2 * max + 1)) - max;
+      p[k] = r % 3 == 0 ? (r & 8 ? hi(k) : lo(k)) : lo(k) + int64_t(r % uint64_t(hi(k) - lo(k) + 1));
     }
     set_coefficients(z, p);
     REQUIRE(z.fits_narrow());
-    const int32_t a = i % 3 ? int32_t(uint32_t(rng())) >> 15 : extremes[rng() % 6];
-    const int32_t b = i % 5 ? int32_t(uint32_t(rng())) >> 15 : extremes[rng() % 6];
-    REQUIRE(int64_t(z.eval_narrow(a, b)) == z.eval_wide(a, b));
+    const int32_t a = i % 3 ? int32_t(uint32_t(rng())) : extremes[rng() % 7];
+    const int32_t b = i % 5 ? int32_t(uint32_t(rng())) : extremes[rng() % 7];
+    REQUIRE(int64_t(z.eval32(a, b)) == z.eval_wide(a, b));
+    REQUIRE(int64_t(z.eval_narrow(ZienkiewiczChannel::Weights::of(uint32_t(a), uint32_t(b)))) == z.eval_wide(a, b));
   }
-  // All coefficients at the limit with the same sign: the largest partial sums.
-  for (int64_t sign : {1, -1})
-    for (int32_t w : {-(1 << 16), 1 << 15, (1 << 16) - 1}) {
-      for (int64_t& q : p) q = sign * max;
+  // All coefficients at a limit with the same sign: the largest partial sums.
+  for (const bool top : {true, false})
+    for (int32_t w : extremes) {
+      for (int k = 0; k < 10; ++k) p[k] = top ? hi(k) : lo(k);
       set_coefficients(z, p);
       REQUIRE(z.fits_narrow());
-      REQUIRE(int64_t(z.eval_narrow(w, w)) == z.eval_wide(w, w));
+      const int32_t v = int32_t(0u - uint32_t(w));  // -w, modulo 2^32
+      INFO("weights " << w << ", " << v);
+      REQUIRE(int64_t(z.eval32(w, w)) == z.eval_wide(w, w));
+      REQUIRE(int64_t(z.eval32(w, v)) == z.eval_wide(w, v));
     }
-  for (int64_t& q : p) {
-    const int64_t keep = q;
-    q = max + 1;
+  for (int k = 0; k < 10; ++k) {
+    const int64_t keep = p[k];
+    p[k] = hi(k) + 1;
     set_coefficients(z, p);
     CHECK_FALSE(z.fits_narrow());
-    q = -max - 1;
+    p[k] = lo(k) - 1;
     set_coefficients(z, p);
     CHECK_FALSE(z.fits_narrow());
-    q = keep;
+    p[k] = keep;
   }
+}
+
+TEST_CASE("eval_wide equals the portable Horner steps (mul_q32) for coefficients of any size") {
+  // Where a 128-bit product exists eval_wide (and eval_narrow, for every triangle) takes the high
+  // word of (w 2^32) t; Cortex-M takes mul_q32's two 32 x 32 -> 64 products: the same integers.
+  std::mt19937_64 rng(17);
+  ZienkiewiczChannel z{};
+  Coefficients p{};
+  for (int i = 0; i < 200000; ++i) {
+    for (int64_t& q : p) q = int64_t(rng()) >> (12 + rng() % 52);  // |p| < 2^52
+    set_coefficients(z, p);
+    const int32_t a = int32_t(uint32_t(rng())), b = int32_t(uint32_t(rng()));
+    const ZienkiewiczChannel::ScaledCoefficients c = z.scaled();
+    auto h = [](int32_t w, int64_t t, int64_t s) { return s + SplitProduct(t, w).high; };
+    const int64_t pb = h(b, h(b, h(b, c.s03, c.s02), c.s01), c.s00);
+    const int64_t pa = h(a, h(a, c.s30, h(b, c.s21, c.s20)), h(b, h(b, c.s12, c.s11), c.s10));
+    REQUIRE(z.eval_wide(a, b) == h(a, pa, pb));
+    if (ZienkiewiczChannel::narrow_always) REQUIRE(int64_t(z.eval_narrow(a, b)) == z.eval_wide(a, b));
+  }
+}
+
+TEST_CASE("eval_wide is within 3 units of 2^-8 grey below the exact cubic for weights in [0, 1]") {
+  // docs/FIXED_POINT.md: each step's floor is below one unit of its scale, the scales 4^degree
+  // times the value's; for |a|, |b| <= 1 the errors sum to below 3 units of the value, all downward.
+  std::mt19937_64 rng(13);
+  ZienkiewiczChannel z{};
+  Coefficients p{};
+  double worst = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const int bits = 8 + int(rng() % 22);  // exact_p within i128
+    for (int64_t& q : p) q = int64_t(rng() % (uint64_t(2) << bits)) - (int64_t(1) << bits);
+    set_coefficients(z, p);
+    const int32_t one = 1 << 30;
+    int32_t a = int32_t(rng() % (uint32_t(one) + 1)), b = int32_t(rng() % (uint32_t(one) + 1));
+    if (i % 7 == 0) a = i % 2 ? one : 0;
+    if (i % 11 == 0) b = i % 3 ? one : 0;
+    // Exact P 2^90 (value in 2^-8 grey) against eval_wide (less the rounding bias) 2^90.
+    const i128 diff = exact_p(z, a, b) - (i128(z.eval_wide(a, b) - ZienkiewiczChannel::rounding_bias) << 90);
+    REQUIRE(diff >= 0);
+    REQUIRE(diff < i128(3) << 90);
+    worst = std::max(worst, double(diff) / double(i128(1) << 90));
+  }
+  CHECK(worst > 1);  // the bound is not loose by much
 }
 
 TEST_CASE("the coefficients in 32 bits equal those in 64 bits within max_narrow_derivative") {
@@ -264,9 +323,11 @@ TEST_CASE("setup takes the 32-bit coefficients only for small edge derivatives, 
     ZienkiewiczChannel z{};
     const bool narrow = z.setup<true>(dx, dy, v3, g);
     ZienkiewiczChannel z64{};
-    CHECK_FALSE(z64.setup<false>(dx, dy, v3, g));
-    REQUIRE(narrow == z.fits_narrow());
-    narrow_cases += narrow;
+    // setup's result: whether eval_narrow evaluates the triangle (every one where it is exact for
+    // any coefficients, else within fits_narrow), the same from either expansion.
+    REQUIRE(z64.setup<false>(dx, dy, v3, g) == narrow);
+    REQUIRE(narrow == (ZienkiewiczChannel::narrow_always || z.fits_narrow()));
+    narrow_cases += z.fits_narrow();
     // The same coefficients from the derivatives in 64 bits.
     constexpr int down = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
     auto dot = [&](int e, int v) {
@@ -286,9 +347,9 @@ TEST_CASE("setup takes the 32-bit coefficients only for small edge derivatives, 
       CHECK_FALSE(z.setup_rows(1 << 20, 1 << 20));
       CHECK_FALSE(z.fits_narrow());
     }
-    const ZienkiewiczChannel::WideCoefficients c = w.coefficients();
+    const ZienkiewiczChannel::ScaledCoefficients c = w.scaled();
     for (int j = 0; j < 4; ++j) {
-      const int64_t a = int64_t(rng() % (2u << 16)) - (1 << 16), b = int64_t(rng() % (2u << 16)) - (1 << 16);
+      const int32_t a = int32_t(uint32_t(rng())), b = int32_t(uint32_t(rng()));
       REQUIRE(z.eval_wide(a, b) == ZienkiewiczChannel::horner(c, a, b));
       REQUIRE(z64.eval_wide(a, b) == ZienkiewiczChannel::horner(c, a, b));
     }

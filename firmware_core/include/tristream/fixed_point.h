@@ -37,8 +37,6 @@ using q24_8 = Fixed<int32_t, 8>;
 using q16_16 = Fixed<int32_t, 16>;
 // Barycentric coordinates stepped along a span: 0..1 with 30 fraction bits.
 using q2_30 = Fixed<int32_t, 30>;
-// Barycentric coordinates used in the zienkiewicz polynomial: 0..1 with 15 fraction bits.
-using q17_15 = Fixed<int32_t, 15>;
 // Per-vertex gradients of zienkiewicz, value units per domain pixel.
 using q19_12 = Fixed<int32_t, config::gradient_frac_bits>;
 

@@ -228,18 +228,26 @@ class PreinvRoundingDivider {
   uint32_t inv_;
 };
 
-// floor(x * y / 2^30) for |x| < 2^61 and any int32 y (a q2_30 weight): the 96-bit product from
-// two signed 32 x 32 -> 64 products, so no 128-bit type is needed (the same result everywhere; the
-// native 128-bit product where there is one). x = xh 2^32 + xl with xl its low word read as
-// signed (xh takes the borrow, |xh| <= 2^29): x y = (xh y + floor(xl y / 2^32)) 2^32 + u with
-// 0 <= u < 2^32, the first a multiply-accumulate (SMULL, then SMLAL on Cortex-M4). Always
-// inlined (-Os would call it for each product of a row's restart).
+// floor(x * y / 2^32) and floor(x * y / 2^30) for |x| < 2^61 and any int32 y (a q2_30 weight):
+// the 96-bit product from two signed 32 x 32 -> 64 products, so no 128-bit type is needed (the
+// same result everywhere; the native 128-bit product where there is one). x = xh 2^32 + xl with
+// xl its low word read as signed (xh takes the borrow, |xh| <= 2^29): x y = (xh y + floor(xl y /
+// 2^32)) 2^32 + u with 0 <= u < 2^32, the first a multiply-accumulate (SMULL, then SMLAL on
+// Cortex-M4). Always inlined (-Os would call it for each product of a row's restart).
+struct SplitProduct {
+  int64_t high;  // floor(x y / 2^32)
+  uint32_t low;  // x y mod 2^32
+  __attribute__((always_inline)) SplitProduct(int64_t x, int32_t y) {
+    const int32_t xl = int32_t(uint32_t(x));
+    const int32_t xh = int32_t(x >> 32) + int32_t(uint32_t(x) >> 31);
+    const int64_t l = int64_t(xl) * y;
+    high = int64_t(xh) * y + (l >> 32);
+    low = uint32_t(l);
+  }
+};
 __attribute__((always_inline)) inline int64_t mul_q30_portable(int64_t x, int32_t y) {
-  const int32_t xl = int32_t(uint32_t(x));
-  const int32_t xh = int32_t(x >> 32) + int32_t(uint32_t(x) >> 31);
-  const int64_t low = int64_t(xl) * y;
-  const int64_t high = int64_t(xh) * y + (low >> 32);  // floor(x y / 2^32)
-  return int64_t(uint64_t(high) << 2) | int64_t(uint32_t(low) >> 30);
+  const SplitProduct p(x, y);
+  return int64_t(uint64_t(p.high) << 2) | int64_t(p.low >> 30);
 }
 
 __attribute__((always_inline)) inline int64_t mul_q30(int64_t x, int32_t y) {
@@ -248,6 +256,14 @@ __attribute__((always_inline)) inline int64_t mul_q30(int64_t x, int32_t y) {
   return int64_t((i128(x) * y) >> 30);
 #else
   return mul_q30_portable(x, y);
+#endif
+}
+__attribute__((always_inline)) inline int64_t mul_q32(int64_t x, int32_t y) {
+#if TS_USE_INT128
+  __extension__ typedef __int128 i128;
+  return int64_t((i128(x) * y) >> 32);
+#else
+  return SplitProduct(x, y).high;
 #endif
 }
 

@@ -139,11 +139,15 @@ constexpr bool zienkiewicz_narrow_forms = !TS_USE_INT128;
 
 // Zienkiewicz (docs/CONVENTIONS.md) as a cubic polynomial in the barycentric weights (a, b) of vertices
 // 0 and 1: f = sum p[i][j] a^i b^j, coefficients in q24_8 from the vertex values and the edge
-// derivatives u = edge . gradient.
+// derivatives u = edge . gradient, kept scaled by degree: s[i][j] = p[i][j] 4^(i + j), and s00 with
+// half a grey level added (rounding_bias: an evaluation is f + 2^7, whole grey levels by a shift).
 //
 // Two evaluations (docs/FIXED_POINT.md, Zienkiewicz):
-// - eval: Horner's rule with a, b in q17_15 at one pixel (short rows, small triangles, and
-//   triangles outside the forward-difference budget; see zienkiewicz_fd_min_length);
+// - per pixel: Horner's rule on the scaled coefficients with a and b as q2_30 weights w, each
+//   step t' = s + floor(w t / 2^32) (= s + floor(weight t / 4): the scale drops by 4 a degree, so no
+//   shifts; one SMMLA on Cortex-M4). eval_narrow in 32 bits within its budget, eval_wide in 64;
+//   the same integers (short rows, small triangles, and triangles outside the forward-difference
+//   budget; see zienkiewicz_fd_min_length);
 // - forward differencing along a row: a and b are linear in x (steps da, db in q2_30), so f is a
 //   cubic in x. setup_rows() expands, once per triangle, its forward differences
 //   D1(a, b) = P(a + da, b + db) - P(a, b), D2 (the difference of D1) and D3 as polynomials in
@@ -151,33 +155,34 @@ constexpr bool zienkiewicz_narrow_forms = !TS_USE_INT128;
 //   evaluates P and them at a restart point in 32 bits, then a pixel costs three 32-bit
 //   additions.
 struct ZienkiewiczChannel {
-  // The ten coefficients in int64.
+  // The ten coefficients p in int64, unscaled (coefficients(), set_coefficients()).
   struct WideCoefficients {
     int64_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
   };
+  // The bias in s00: half a grey level in q24_8.
+  static constexpr int32_t rounding_bias = int32_t(1) << (q24_8::frac_bits - 1);
+  // The ten scaled coefficients s in int64.
+  struct ScaledCoefficients {
+    int64_t s00, s01, s02, s03, s10, s11, s12, s20, s21, s30;
+  };
 #if TS_USE_INT128
-  int64_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
+  int64_t s00, s01, s02, s03, s10, s11, s12, s20, s21, s30;
 #else
   // Where a 64-bit product is not one instruction (Cortex-M, zienkiewicz_narrow_forms): the
-  // coefficients in int32 when every one fits (40 bytes a channel less of the stack, which holds
-  // three channels' for a triangle), else wide(): p30 is wide_mark and all ten are in `w`, in the
-  // place of the forward-difference polynomials: such a triangle is outside their budget
+  // scaled coefficients in int32 when every one fits (40 bytes a channel less of the stack, which
+  // holds three channels' for a triangle), else wide(): s30 is wide_mark and all ten are in `w`,
+  // in the place of the forward-difference polynomials: such a triangle is outside their budget
   // (setup_rows), so they are never set for it. The mark in place of a flag: 8 bytes a channel
   // less (the flag's padding). An int32 coefficient is never wide_mark (store sends it to `w`).
-  int32_t p00, p01, p02, p03, p10, p11, p12, p20, p21, p30;
+  int32_t s00, s01, s02, s03, s10, s11, s12, s20, s21, s30;
   static constexpr int32_t wide_mark = INT32_MIN;
-  bool wide() const { return p30 == wide_mark; }
+  bool wide() const { return s30 == wide_mark; }
 #endif
 
-  // The four coefficients that enter eval_narrow's products first (p03, p21, p30, p12), times 4
-  // (by unsigned shifts: the same bits), as eval_narrow takes them (lifted()).
-  struct Lifted {
-    int32_t p03, p21, p30, p12;
-  };
   // The forward-difference polynomials (set by setup_rows): P itself in 2^-14 grey (e = p 2^6),
   // D1 (quadratic), D2 (linear) and D3 in 2^-18 grey. The coefficients that Horner's rule
   // multiplies first (e03, e12, e21, e30, g20, g11, g02, h10, h01) are stored times 4 (by unsigned
-  // shifts: the same bits), as mla_high takes them. 80 bytes, as WideCoefficients in the union.
+  // shifts: the same bits), as mla_high takes them. 80 bytes, as ScaledCoefficients in the union.
   struct RowCoefficients {
     int32_t e00, e01, e02, e10, e11, e20, e03x4, e12x4, e21x4, e30x4;  // P in 2^-14 grey
     int32_t g00, g01, g10, g02x4, g11x4, g20x4;
@@ -188,8 +193,8 @@ struct ZienkiewiczChannel {
   RowCoefficients fd;
 #else
   union {
-    RowCoefficients fd;  // when !wide()
-    WideCoefficients w;  // when wide()
+    RowCoefficients fd;    // when !wide()
+    ScaledCoefficients w;  // when wide()
   };
 #endif
 
@@ -208,7 +213,8 @@ struct ZienkiewiczChannel {
 
   // dx, dy: domain-space edge vectors AB, BC, CA in position_fx; values q8_8; gradients q19_12
   // (gx, gy per vertex; values[k] and gradients[j] for k < 3, j < 6: arrays, or readers of the
-  // blob's bytes). Returns fits_narrow() with the 32-bit forms (Narrow), else false.
+  // blob's bytes). Returns whether eval_narrow evaluates the coefficients: always where it is
+  // exact for every triangle (narrow_always), else fits_narrow().
   template <bool Narrow = zienkiewicz_narrow_forms, typename Values, typename Gradients>
   TS_ZIENKIEWICZ_SETUP_INLINE bool setup(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
                                          const Gradients& gradients) {
@@ -216,14 +222,14 @@ struct ZienkiewiczChannel {
       if (setup_narrow(edge_dx, edge_dy, values, gradients)) return true;
     }
 #if TS_USE_INT128
-    return expand_wide<Narrow>(edge_dx, edge_dy, values, gradients);
+    return expand_wide(edge_dx, edge_dy, values, gradients);
 #else
-    return setup_wide<Narrow>(edge_dx, edge_dy, values, gradients);
+    return setup_wide(edge_dx, edge_dy, values, gradients);
 #endif
   }
   // setup's 32-bit expansion alone: true with the coefficients set when every edge derivative is
-  // within max_narrow_derivative (the coefficients are then narrow), else false with nothing set
-  // (setup_wide then).
+  // within max_narrow_derivative (narrow_derivatives: the coefficients are then narrow), else false
+  // with nothing set (setup_wide then).
   template <typename Values, typename Gradients>
   TS_ZIENKIEWICZ_SETUP_INLINE bool setup_narrow(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
                                                 const Gradients& gradients) {
@@ -233,11 +239,7 @@ struct ZienkiewiczChannel {
     const int64_t u2 = u(0, 0), u3 = u(0, 1);  // AB . gA, AB . gB
     const int64_t u5 = u(1, 1), u6 = u(1, 2);  // BC . gB, BC . gC
     const int64_t u8 = u(2, 2), u9 = u(2, 0);  // CA . gC, CA . gA
-    // |u| <= max_narrow_derivative as one unsigned comparison.
-    auto small = [](int64_t v) {
-      return uint32_t(uint64_t(v) + uint64_t(max_narrow_derivative) <= uint64_t(2 * max_narrow_derivative));
-    };
-    if (!(small(u2) & small(u3) & small(u5) & small(u6) & small(u8) & small(u9))) return false;
+    if (!narrow_derivatives(u2, u3, u5, u6, u8, u9)) return false;
     expand<int32_t>(values[0], int32_t(u2), int32_t(u3), values[1], int32_t(u5), int32_t(u6), values[2], int32_t(u8),
                     int32_t(u9));
     return true;
@@ -246,24 +248,32 @@ struct ZienkiewiczChannel {
   // (Cortex-M, where setup takes it only for large derivatives), the derivatives formed again
   // there: inlined into setup it costs the deepest stack 56 bytes and 1 % to 4 % modelled cycles
   // at -O2; called with the nine int64 inputs it costs the caller's frame their 64 bytes.
-  template <bool Narrow, typename Values, typename Gradients>
+  template <typename Values, typename Gradients>
   __attribute__((noinline)) bool setup_wide(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
                                             const Gradients& gradients) {
-    return expand_wide<Narrow>(edge_dx, edge_dy, values, gradients);
+    return expand_wide(edge_dx, edge_dy, values, gradients);
   }
   // setup_wide's body, for a caller that has it inline.
-  template <bool Narrow, typename Values, typename Gradients>
+  template <typename Values, typename Gradients>
   __attribute__((always_inline)) bool expand_wide(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
                                                   const Gradients& gradients) {
     auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
       return derivative(edge_dx, edge_dy, gradients, edge, vertex);
     };
     expand<int64_t>(values[0], u(0, 0), u(0, 1), values[1], u(1, 1), u(1, 2), values[2], u(2, 2), u(2, 0));
-    return Narrow && fits_narrow();
+    return narrow_always || fits_narrow();
   }
-  // Edge derivatives (and values, below 2^16) up to this in magnitude give coefficients within
-  // max_narrow_coefficient, formed in 32 bits: every sum of expand is at most 20 max |u| (p21 and
-  // p12: t = 6 u7 - k111 with |k111| <= 9 max |u|, plus 5 max |u|).
+  // Whether every edge derivative is in [-max_narrow_derivative, max_narrow_derivative): each
+  // u + max in [0, 2 max), so their bitwise or below 2 max.
+  __attribute__((always_inline)) static bool narrow_derivatives(int64_t u2, int64_t u3, int64_t u5, int64_t u6,
+                                                                int64_t u8, int64_t u9) {
+    constexpr uint64_t lift = uint64_t(max_narrow_derivative);
+    auto o = [](int64_t v) { return uint64_t(v) + lift; };
+    return (o(u2) | o(u3) | o(u5) | o(u6) | o(u8) | o(u9)) < 2 * lift;
+  }
+  // Edge derivatives (and values, below 2^16) up to this in magnitude give coefficients of at most
+  // 2^23 (every sum of expand is at most 20 max |u|: p21 and p12, t = 6 u7 - k111 with |k111| <= 9
+  // max |u|, plus 5 max |u|), so scaled ones within max_narrow_coefficient, formed in 32 bits.
   static constexpr int32_t max_narrow_derivative = int32_t(1) << 18;
   // The coefficients p from the vertex values u1, u4, u7 (q8_8) and the edge derivatives
   // (q24_8) in T: int64_t for any inputs, int32_t (the same integers) within max_narrow_derivative.
@@ -283,106 +293,147 @@ struct ZienkiewiczChannel {
              t - u3 - u5 - 2 * u6 + u8, 3 * (u1 - u7) - 2 * u8 - u9, t + u2 - u6 + 2 * u8 + u9,
              2 * (u7 - u1) + u8 + u9);
   }
-  // All ten coefficients in int64 (from either layout), and setting them as expand does (tests).
-  WideCoefficients coefficients() const {
+  // The scaled coefficients in int64, from either layout.
+  ScaledCoefficients scaled() const {
 #if !TS_USE_INT128
     if (wide()) return w;
 #endif
-    return {p00, p01, p02, p03, p10, p11, p12, p20, p21, p30};
+    return {s00, s01, s02, s03, s10, s11, s12, s20, s21, s30};
+  }
+  // All ten coefficients p in int64 (from either layout), and setting them as expand does (tests).
+  WideCoefficients coefficients() const {
+    const ScaledCoefficients c = scaled();
+    WideCoefficients p;
+    p.p00 = c.s00 - rounding_bias, p.p01 = c.s01 >> 2, p.p02 = c.s02 >> 4, p.p03 = c.s03 >> 6, p.p10 = c.s10 >> 2;
+    p.p11 = c.s11 >> 4, p.p12 = c.s12 >> 6, p.p20 = c.s20 >> 4, p.p21 = c.s21 >> 6, p.p30 = c.s30 >> 6;
+    return p;
   }
   void set_coefficients(const WideCoefficients& c) {
     store<int64_t>(c.p00, c.p01, c.p02, c.p03, c.p10, c.p11, c.p12, c.p20, c.p21, c.p30);
   }
+  // The coefficients p stored scaled, s = p 4^(i + j) (|p| < 2^52 from any inputs: |u| < 2^47; in
+  // int32 within the narrow budget, |p| <= 2^23).
   template <typename T>
   __attribute__((always_inline)) void store(T q00, T q01, T q02, T q03, T q10, T q11, T q12, T q20, T q21, T q30) {
 #if !TS_USE_INT128
     if constexpr (sizeof(T) > sizeof(int32_t)) {
-      // wide_mark itself goes wide (any value that large is outside both 32-bit budgets).
-      auto fits = [](T q) { return uint32_t(q > wide_mark && q <= INT32_MAX); };
-      if (!(fits(q00) & fits(q01) & fits(q02) & fits(q03) & fits(q10) & fits(q11) & fits(q12) & fits(q20) & fits(q21) &
-            fits(q30))) {
-        w = {q00, q01, q02, q03, q10, q11, q12, q20, q21, q30};
-        p30 = wide_mark;
+      // Whether each scaled coefficient fits int32 (wide_mark itself goes wide: any value that large
+      // is outside both 32-bit budgets), tested on p against the int32 bounds over 4^degree: the
+      // int64 products only for a wide triangle.
+      auto fits = [](T q, int degree) {
+        return uint32_t(q > (T(wide_mark) >> (2 * degree)) && q <= (T(INT32_MAX) >> (2 * degree)));
+      };
+      if (!(fits(q00 + rounding_bias, 0) & fits(q01, 1) & fits(q02, 2) & fits(q03, 3) & fits(q10, 1) & fits(q11, 2) &
+            fits(q12, 3) & fits(q20, 2) & fits(q21, 3) & fits(q30, 3))) {
+        w.s00 = q00 + rounding_bias, w.s01 = 4 * q01, w.s02 = 16 * q02, w.s03 = 64 * q03, w.s10 = 4 * q10;
+        w.s11 = 16 * q11, w.s12 = 64 * q12, w.s20 = 16 * q20, w.s21 = 64 * q21, w.s30 = 64 * q30;
+        s30 = wide_mark;
         return;
       }
-    } else {
-      static_assert(max_narrow_coefficient < -int64_t(wide_mark), "a narrow coefficient is never wide_mark");
-    }
-    using P = int32_t;  // each fits (checked above, or T is int32_t)
-#else
-    using P = int64_t;
+      store<int32_t>(int32_t(q00), int32_t(q01), int32_t(q02), int32_t(q03), int32_t(q10), int32_t(q11), int32_t(q12),
+                     int32_t(q20), int32_t(q21), int32_t(q30));
+    } else
 #endif
-    p30 = P(q30), p21 = P(q21), p20 = P(q20), p12 = P(q12), p11 = P(q11);
-    p10 = P(q10), p03 = P(q03), p02 = P(q02), p01 = P(q01), p00 = P(q00);
+    {
+      static_assert(TS_USE_INT128 || max_narrow_coefficient < -int64_t(INT32_MIN),
+                    "a narrow coefficient is never wide_mark");
+      s30 = 64 * q30, s21 = 64 * q21, s20 = 16 * q20, s12 = 64 * q12, s11 = 16 * q11;
+      s10 = 4 * q10, s03 = 64 * q03, s02 = 16 * q02, s01 = 4 * q01, s00 = q00 + rounding_bias;
+    }
   }
-  // q24_8 value at barycentric weights a, b (q17_15), unclamped (below 2^45 in magnitude).
-  int64_t eval_wide(int64_t a, int64_t b) const {
+  // A pixel's barycentric weights as horner and eval_narrow take them (of), stepped by those of the
+  // steps (step: modulo 2^32 in the high word): q2_30 in uint32, or where the 128-bit product is
+  // used those times 2^32 in uint64 (its high word then the step's value, no shift a pixel).
+  struct Weights {
+#if TS_USE_INT128
+    uint64_t a, b;
+    __attribute__((always_inline)) static Weights of(uint32_t a, uint32_t b) {
+      return {uint64_t(a) << 32, uint64_t(b) << 32};
+    }
+#else
+    uint32_t a, b;
+    __attribute__((always_inline)) static Weights of(uint32_t a, uint32_t b) { return {a, b}; }
+#endif
+    __attribute__((always_inline)) void step(const Weights& d) { a += d.a, b += d.b; }
+  };
+  // The q24_8 value at the barycentric weights a, b (q2_30) plus rounding_bias, unclamped (below
+  // 2^60 in magnitude: |s| < 2^58).
+  int64_t eval_wide(int32_t a, int32_t b) const {
 #if !TS_USE_INT128
     if (wide()) return horner(w, a, b);
 #endif
     return horner(*this, a, b);
   }
-  // eval_wide of the coefficients c.p00 .. c.p30.
+  // eval_wide of the scaled coefficients c.s00 .. c.s30: each step s + floor(w t / 2^32), exact.
+  // With a 128-bit product (64-bit hosts) the weights as W = w 2^32 and floor(w t / 2^32) the high
+  // word of W t: one multiply a step, as cheap as a 64-bit product and exact for every t (so every
+  // triangle takes it: narrow_always); elsewhere mul_q32.
   template <typename C>
-  static int64_t horner(const C& c, int64_t a, int64_t b) {
-    constexpr int s = q17_15::frac_bits;
-    const int64_t pb = c.p00 + ((b * (c.p01 + ((b * (c.p02 + ((b * c.p03) >> s))) >> s))) >> s);
-    const int64_t pa = c.p10 + ((b * (c.p11 + ((b * c.p12) >> s))) >> s) +
-                       ((a * (c.p20 + ((b * c.p21) >> s) + ((a * c.p30) >> s))) >> s);
-    return pb + ((a * pa) >> s);
+  __attribute__((always_inline)) static int64_t horner(const C& c, int32_t a, int32_t b) {
+    return horner(c, Weights::of(uint32_t(a), uint32_t(b)));
   }
-  // The same clamped to int32.
-  int32_t eval(int64_t a, int64_t b) const {
-    const int64_t f = eval_wide(a, b);
+  template <typename C>
+  __attribute__((always_inline)) static int64_t horner(const C& c, Weights w) {
+#if TS_USE_INT128
+    __extension__ typedef __int128 i128;
+    const int64_t wa = int64_t(w.a), wb = int64_t(w.b);
+    auto h = [](int64_t v, int64_t t, int64_t s) __attribute__((always_inline)) {
+      return s + int64_t((i128(v) * t) >> 64);
+    };
+#else
+    const int32_t wa = int32_t(w.a), wb = int32_t(w.b);
+    auto h = [](int32_t v, int64_t t, int64_t s) __attribute__((always_inline)) { return s + mul_q32(t, v); };
+#endif
+    const int64_t pb = h(wb, h(wb, h(wb, c.s03, c.s02), c.s01), c.s00);
+    const int64_t pa = h(wa, h(wa, c.s30, h(wb, c.s21, c.s20)), h(wb, h(wb, c.s12, c.s11), c.s10));
+    return h(wa, pa, pb);
+  }
+  // The q24_8 value (without the bias) clamped to int32.
+  int32_t eval(int32_t a, int32_t b) const {
+    const int64_t f = eval_wide(a, b) - rounding_bias;
     return int32_t(f > INT32_MAX ? INT32_MAX : (f < INT32_MIN ? INT32_MIN : f));
   }
 
-  // eval_wide in 32 bits, for coefficients with |p| <= max_narrow_coefficient (fits_narrow) and
-  // any a, b read from int32 q2_30 weights shifted to q17_15 (so -2^16 <= a, b < 2^16): the same
-  // truncating Horner steps t' = p + floor(w t / 2^15), so the same value when every partial sum
-  // fits. With |w| <= 2^16, |floor(w t / 2^15)| <= 2 |t| + 1, and the partial sums of eval_wide's
-  // Horner scheme are then at most 49 P + 24 (narrow_eval_bound; tested against eval_wide at the
-  // limits), below 2^29: so floor(w t / 2^15) is the high word of the 32 x 32 -> 64 product
-  // (w 2^15) (4 t), both factors in int32 (one SMULL on Cortex-M4 and no shifts back, against
-  // three multiplies a 64-bit product).
-  static constexpr int32_t max_narrow_coefficient = int32_t(1) << 23;
-  static constexpr int64_t narrow_eval_bound(int64_t p) { return 49 * p + 24; }
-  bool fits_narrow() const {
-    // |c| <= max as one unsigned comparison.
-    auto out = [](int64_t c) {
-      return uint32_t(uint64_t(c) + uint64_t(max_narrow_coefficient) > uint64_t(2 * max_narrow_coefficient));
-    };
-#if !TS_USE_INT128
+  // eval_wide in 32 bits (eval32), for scaled coefficients in [-S, S), S = max_narrow_coefficient
+  // (fits_narrow), and any int32 q2_30 weights (|w| <= 2^31: weights in [-2, 2)): the same steps,
+  // so the same value when every partial sum fits int32. With |w| <= 2^31, |floor(w t / 2^32)| <=
+  // |t| / 2 + 1, and the partial sums are then at most 13 S / 4 + 5 (narrow_eval_bound; the inner
+  // sum of three terms at most 2 S + 2), below 2^31: so each step is p plus the high word of the
+  // 32 x 32 -> 64 product w t (one SMMLA on Cortex-M4, against three multiplies a 64-bit product).
+  static constexpr int32_t max_narrow_coefficient = int32_t(1) << 29;
+  static constexpr int64_t narrow_eval_bound(int64_t s) { return 13 * s / 4 + 5; }
+  // Every s in [-S, S): each s + S in [0, 2 S), so their bitwise or below 2 S.
+  __attribute__((always_inline)) bool fits_narrow() const {
+#if TS_USE_INT128
+    using U = uint64_t;
+#else
+    using U = uint32_t;  // the int32 fields
     if (wide()) return false;
 #endif
-    return !(out(p00) | out(p01) | out(p02) | out(p03) | out(p10) | out(p11) | out(p12) | out(p20) | out(p21) |
-             out(p30));
+    auto o = [](auto c) { return U(c) + U(max_narrow_coefficient); };
+    return (o(s00) | o(s01) | o(s02) | o(s03) | o(s10) | o(s11) | o(s12) | o(s20) | o(s21) | o(s30)) <
+           2 * U(max_narrow_coefficient);
   }
-  __attribute__((always_inline)) int32_t eval_narrow(int32_t a, int32_t b) const {  // -Os: not a call a pixel
-    return eval_narrow(a, b, lifted());
-  }
-  // The four coefficients that enter eval_narrow's products first (p03, p21, p30, p12), times 4
-  // (by unsigned shifts: the same bits), as eval_narrow takes them: a loop over pixels forms them
-  // once, not once a pixel.
-  __attribute__((always_inline)) Lifted lifted() const {
-    auto four = [](int64_t p) { return int32_t(uint32_t(int32_t(p)) << 2); };
-    return {four(p03), four(p21), four(p30), four(p12)};
-  }
-  __attribute__((always_inline)) int32_t eval_narrow(int32_t a, int32_t b, const Lifted& l) const {
-    constexpr int s = q17_15::frac_bits;
-    static_assert(32 - s == 17, "floor(w t / 2^15) as the high word of (w 2^15) (4 t)");
-    // w 2^15 and 4 t by unsigned shifts (the same bits; no signed overflow).
-    const int32_t wa = int32_t(uint32_t(a) << s), wb = int32_t(uint32_t(b) << s);
-    // Each Horner step p + floor(w t / 2^15) as one multiply-accumulate of the high word (m), or
-    // of 4 t given (m4: the lifted coefficients).
-    auto m4 = [](int32_t w, int32_t t4, int32_t p) __attribute__((always_inline)) { return mla_high(w, t4, p); };
-    auto m = [&](int32_t w, int32_t t, int32_t p) __attribute__((always_inline)) {
-      return m4(w, int32_t(uint32_t(t) << 2), p);
-    };
-    const int32_t pb = m(wb, m(wb, m4(wb, l.p03, int32_t(p02)), int32_t(p01)), int32_t(p00));
-    const int32_t pa =
-        m(wa, m4(wa, l.p30, m4(wb, l.p21, int32_t(p20))), m(wb, m4(wb, l.p12, int32_t(p11)), int32_t(p10)));
-    return m(wa, pa, pb);
+  // Whether eval_narrow is exact for every triangle (the 128-bit form of eval_wide), so that no
+  // triangle needs fits_narrow.
+  static constexpr bool narrow_always = TS_USE_INT128;
+  // The evaluation per pixel of a triangle that setup found narrow: eval_wide where it costs no
+  // more (narrow_always), else eval32. The value plus rounding_bias: int32 in eval32's budget.
+#if TS_USE_INT128
+  using NarrowValue = int64_t;
+  __attribute__((always_inline)) int64_t eval_narrow(int32_t a, int32_t b) const { return horner(*this, a, b); }
+  __attribute__((always_inline)) int64_t eval_narrow(Weights w) const { return horner(*this, w); }
+#else
+  using NarrowValue = int32_t;
+  __attribute__((always_inline)) int32_t eval_narrow(int32_t a, int32_t b) const { return eval32(a, b); }
+  __attribute__((always_inline)) int32_t eval_narrow(Weights w) const { return eval32(int32_t(w.a), int32_t(w.b)); }
+#endif
+  __attribute__((always_inline)) int32_t eval32(int32_t a, int32_t b) const {
+    auto h = [](int32_t w, int32_t t, int32_t s) __attribute__((always_inline)) { return mla_high(w, t, s); };
+    const int32_t pb = h(b, h(b, h(b, int32_t(s03), int32_t(s02)), int32_t(s01)), int32_t(s00));
+    const int32_t pa = h(a, h(a, int32_t(s30), h(b, int32_t(s21), int32_t(s20))),
+                         h(b, h(b, int32_t(s12), int32_t(s11)), int32_t(s10)));
+    return h(a, pa, pb);
   }
   // p + the high word of the 64-bit product w t (modulo 2^32; eval_narrow's sums fit). On a
   // Cortex-M with the DSP extension one SMMLA, which GCC does not form from the C (it emits
@@ -425,15 +476,19 @@ struct ZienkiewiczChannel {
 #if !TS_USE_INT128
     if (wide()) return false;
 #endif
-      // The sum of magnitudes below max_fd_sum: at once when every p is in [-2^17, 2^17) (ten of
-      // them sum to below it; each p + 2^17 in [0, 2^18), so their bitwise or below 2^18), else
-      // summed, in 32 bits after each p in [-2^21, 2^21) (implied by the sum's budget): below 2^25.
+    // The coefficients p (exact shifts of the scaled ones).
+    const auto p00 = s00 - rounding_bias, p01 = s01 >> 2, p02 = s02 >> 4, p03 = s03 >> 6, p10 = s10 >> 2,
+               p11 = s11 >> 4;
+    const auto p12 = s12 >> 6, p20 = s20 >> 4, p21 = s21 >> 6, p30 = s30 >> 6;
+    // The sum of magnitudes below max_fd_sum: at once when every p is in [-2^17, 2^17) (ten of
+    // them sum to below it; each p + 2^17 in [0, 2^18), so their bitwise or below 2^18), else
+    // summed, in 32 bits after each p in [-2^21, 2^21) (implied by the sum's budget): below 2^25.
 #if TS_USE_INT128
     using U = uint64_t;
 #else
     using U = uint32_t;  // the int32 coefficients
 #endif
-    auto within = [&](int bits) {
+    auto within = [&](int bits) __attribute__((always_inline)) {
       const U lift = U(1) << bits;
       auto o = [lift](auto c) { return U(c) + lift; };
       return (o(p00) | o(p01) | o(p02) | o(p03) | o(p10) | o(p11) | o(p12) | o(p20) | o(p21) | o(p30)) < 2 * lift;
@@ -441,18 +496,18 @@ struct ZienkiewiczChannel {
     static_assert(10 * (int64_t(1) << 17) < max_fd_sum, "ten coefficients below 2^17 sum to below max_fd_sum");
     if (!within(17)) {
       if (!within(21)) return false;
-      auto mag = [](auto c) { return uint32_t(c < 0 ? -c : c); };
+      auto mag = [](auto c) __attribute__((always_inline)) { return uint32_t(c < 0 ? -c : c); };
       if (mag(p00) + mag(p01) + mag(p02) + mag(p03) + mag(p10) + mag(p11) + mag(p12) + mag(p20) + mag(p21) + mag(p30) >=
           uint32_t(max_fd_sum))
         return false;
     }
-    const int32_t q00 = int32_t(p00), q01 = int32_t(p01), q02 = int32_t(p02), q03 = int32_t(p03);
+    const int32_t q01 = int32_t(p01), q02 = int32_t(p02), q03 = int32_t(p03);
     const int32_t q10 = int32_t(p10), q11 = int32_t(p11), q12 = int32_t(p12), q20 = int32_t(p20), q21 = int32_t(p21);
     const int32_t q30 = int32_t(p30);
     auto mul = [](int32_t x, int32_t y) { return int64_t(x) * y; };
     // P(a + m da, b + m db) = P + c1 m + c2 m^2 + c3 m^3 with c1 = P_a da + P_b db = r00 + r10 a
     // + r01 b + r20 a^2 + r11 a b + r02 b^2 (r00 = p10 da + p01 db, r10 = 2 p20 da + p11 db, ...),
-    // c2 = s00 + s10 a + s01 b (s00 = p20 da^2 + p11 da db + p02 db^2, ...), c3 = p30 da^3 +
+    // c2 = c2_00 + c2_10 a + c2_01 b (c2_00 = p20 da^2 + p11 da db + p02 db^2, ...), c3 = p30 da^3 +
     // p21 da^2 db + p12 da db^2 + p03 db^3; D1 = c1 + c2 + c3, D2 = 2 c2 + 6 c3, D3 = 6 c3.
     // Bounds with the sum of |p| below 2^21 and |da|, |db| below 2^28.33: every sum below 2^51
     // (g20, g02: 3 times the sum times 2^28.33), so each coefficient rounded to 2^-18 is below
@@ -484,19 +539,19 @@ struct ZienkiewiczChannel {
       const int64_t c3 =
           mul_q30(mul_q30(mul(q30, da) + mul(q21, db), da), da) + mul_q30(mul_q30(mul(q12, da) + mul(q03, db), db), db);
       f.d3 = round_down(6 * c3);
-      const int64_t s00 = mul_q30(mul(q20, da) + mul(q11, db), da) + mul_q30(mul(q02, db), db);
-      h(2 * s00 + 6 * c3, &f.h00, false);
-      g(mul(q10, da) + mul(q01, db) + s00 + c3, &f.g00, false);
+      const int64_t c2_00 = mul_q30(mul(q20, da) + mul(q11, db), da) + mul_q30(mul(q02, db), db);
+      h(2 * c2_00 + 6 * c3, &f.h00, false);
+      g(mul(q10, da) + mul(q01, db) + c2_00 + c3, &f.g00, false);
     }
     {
-      const int64_t s10 = mul_q30(mul(3 * q30, da) + mul(2 * q21, db), da) + mul_q30(mul(q12, db), db);
-      h(2 * s10, &f.h10x4, true);
-      g(mul(2 * q20, da) + mul(q11, db) + s10, &f.g10, false);
+      const int64_t c2_10 = mul_q30(mul(3 * q30, da) + mul(2 * q21, db), da) + mul_q30(mul(q12, db), db);
+      h(2 * c2_10, &f.h10x4, true);
+      g(mul(2 * q20, da) + mul(q11, db) + c2_10, &f.g10, false);
     }
     {
-      const int64_t s01 = mul_q30(mul(q21, da) + mul(2 * q12, db), da) + mul_q30(mul(3 * q03, db), db);
-      h(2 * s01, &f.h01x4, true);
-      g(mul(q11, da) + mul(2 * q02, db) + s01, &f.g01, false);
+      const int64_t c2_01 = mul_q30(mul(q21, da) + mul(2 * q12, db), da) + mul_q30(mul(3 * q03, db), db);
+      h(2 * c2_01, &f.h01x4, true);
+      g(mul(q11, da) + mul(2 * q02, db) + c2_01, &f.g01, false);
     }
     g(mul(3 * q30, da) + mul(q21, db), &f.g20x4, true);
     g(mul(2 * q21, da) + mul(2 * q12, db), &f.g11x4, true);
@@ -505,7 +560,7 @@ struct ZienkiewiczChannel {
     // P in 2^-14 grey (e = p 2^6): the ten |e| sum to below 2^27.
     constexpr int up = value_horner_frac_bits - q24_8::frac_bits;
     auto e = [](int32_t q) { return int32_t(uint32_t(q) << up); };
-    f.e00 = e(q00), f.e01 = e(q01), f.e02 = e(q02), f.e10 = e(q10), f.e11 = e(q11), f.e20 = e(q20);
+    f.e00 = e(int32_t(p00)), f.e01 = e(q01), f.e02 = e(q02), f.e10 = e(q10), f.e11 = e(q11), f.e20 = e(q20);
     f.e03x4 = x4(e(q03)), f.e12x4 = x4(e(q12)), f.e21x4 = x4(e(q21)), f.e30x4 = x4(e(q30));
     return true;
   }
@@ -533,9 +588,10 @@ struct ZienkiewiczChannel {
   }
 };
 
-static_assert(4 * ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) <= INT32_MAX,
-              "narrow evaluation: four times every partial sum (and the rounding offset) fits int32");
-static_assert(20 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <= ZienkiewiczChannel::max_narrow_coefficient &&
+static_assert(ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) + 128 <= INT32_MAX,
+              "narrow evaluation: every partial sum (and the rounding offset) fits int32");
+static_assert(20 * 64 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <=
+                      ZienkiewiczChannel::max_narrow_coefficient &&
                   (int64_t(1) << 16) <= ZienkiewiczChannel::max_narrow_derivative,
               "coefficients from narrow derivatives and q8_8 values are narrow");
 
