@@ -201,10 +201,11 @@ struct ZienkiewiczChannel {
   // The edge derivative u = edge . gradient of a vertex in q24_8 (rounded): edge vectors in
   // position_fx, gradients q19_12 (gradients[2 k], gradients[2 k + 1]: gx, gy of vertex k).
   // Inlined (-Os would call it, and the readers, once per product).
+  static constexpr int derivative_shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
   template <typename Gradients>
   __attribute__((always_inline)) static int64_t derivative(const int32_t* edge_dx, const int32_t* edge_dy,
                                                            const Gradients& gradients, int edge, int vertex) {
-    constexpr int shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
+    constexpr int shift = derivative_shift;
     static_assert(shift >= 1, "edge derivative needs at least one bit to round away");
     const int64_t d =
         int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
@@ -233,15 +234,35 @@ struct ZienkiewiczChannel {
   template <typename Values, typename Gradients>
   TS_ZIENKIEWICZ_SETUP_INLINE bool setup_narrow(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
                                                 const Gradients& gradients) {
+    constexpr int shift = derivative_shift;
+    if constexpr (shift + 19 >= 32) {
+      // (Configurations with many fraction bits.) The derivatives in int64, then tested.
+      auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
+        return derivative(edge_dx, edge_dy, gradients, edge, vertex);
+      };
+      const int64_t u2 = u(0, 0), u3 = u(0, 1), u5 = u(1, 1), u6 = u(1, 2), u8 = u(2, 2), u9 = u(2, 0);
+      if (!narrow_derivatives(u2, u3, u5, u6, u8, u9)) return false;
+      expand<int32_t>(values[0], int32_t(u2), int32_t(u3), values[1], int32_t(u5), int32_t(u6), values[2], int32_t(u8),
+                      int32_t(u9));
+      return true;
+    }
+    // derivative's rounded sum lifted by max 2^shift: u is in [-max, max) exactly when that is in
+    // [0, 2 max 2^shift) (its high word 0, its low word below the bound), and u is then the low
+    // word shifted, less max: no 64-bit shift or test (-50 modelled Cortex-M4 cycles a triangle).
+    constexpr int64_t lift = (int64_t(1) << (shift - 1)) + (int64_t(max_narrow_derivative) << shift);
+    uint32_t high = 0, low = 0;
     auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
-      return derivative(edge_dx, edge_dy, gradients, edge, vertex);
+      const int64_t d =
+          int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1] + lift;
+      high |= uint32_t(uint64_t(d) >> 32);
+      low |= uint32_t(d);
+      return int32_t(uint32_t(d) >> shift) - max_narrow_derivative;
     };
-    const int64_t u2 = u(0, 0), u3 = u(0, 1);  // AB . gA, AB . gB
-    const int64_t u5 = u(1, 1), u6 = u(1, 2);  // BC . gB, BC . gC
-    const int64_t u8 = u(2, 2), u9 = u(2, 0);  // CA . gC, CA . gA
-    if (!narrow_derivatives(u2, u3, u5, u6, u8, u9)) return false;
-    expand<int32_t>(values[0], int32_t(u2), int32_t(u3), values[1], int32_t(u5), int32_t(u6), values[2], int32_t(u8),
-                    int32_t(u9));
+    const int32_t u2 = u(0, 0), u3 = u(0, 1);  // AB . gA, AB . gB
+    const int32_t u5 = u(1, 1), u6 = u(1, 2);  // BC . gB, BC . gC
+    const int32_t u8 = u(2, 2), u9 = u(2, 0);  // CA . gC, CA . gA
+    if ((high | (low >> ((shift + 19) & 31))) != 0) return false;
+    expand<int32_t>(values[0], u2, u3, values[1], u5, u6, values[2], u8, u9);
     return true;
   }
   // setup's 64-bit expansion out of line where 64-bit arithmetic is several instructions
