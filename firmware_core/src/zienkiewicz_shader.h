@@ -274,12 +274,13 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     }
   }
   // Pixels x0..x1 of row y evaluated one by one from the weights a, b at x0; Narrow: every
-  // channel's coefficients fit ZienkiewiczChannel::eval_narrow (the same values in 32 bits).
+  // channel's coefficients fit ZienkiewiczChannel::eval_narrow (eval32 on Cortex-M; on 64-bit
+  // hosts every triangle: the 128-bit form).
   template <bool Narrow>
   void per_pixel(int32_t y, int32_t x0, int32_t x1, uint32_t a, uint32_t b) {
     auto* p = writer.at(x0, y);
     if constexpr (Narrow && DirectRgb565<Writer>::value) {
-      // RGB565 from the 32-bit forms: the dither flag read once a row, not a pixel, and each pixel
+      // RGB565 by eval_narrow: the dither flag read once a row, not a pixel, and each pixel
       // packed as put_rounded packs it (put_span_in_range's loops: the tables without dithering,
       // the row's offsets with it); the same pixels. -2 % to -5 % modelled Cortex-M4 cycles at -O2.
       // Optimized for size one loop, by the offsets (without dithering those of pack565_nearest,
@@ -312,7 +313,9 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       Weights w = Weights::of(a, b);
       const Weights dw = Weights::of(steps.dadx, steps.dbdx);
       for (int32_t x = x0; x <= x1; ++x, w.step(dw)) {
-        // Rounded and clamped here (as to_u8 of the int32-clamped value); the writer's clamp then
+        // Rounded and clamped here (as to_u8 of the int32-clamped value, rounding_bias's extra
+        // unit included: see ZienkiewiczChannel; the q8 writers below take the value without
+        // it and round it themselves); the writer's clamp then
         // folds away, and values are rarely out of range. The channels written out, not a loop (as
         // a loop the values go through the stack): -2 % to -3 % modelled Cortex-M4 cycles at -O2,
         // -4 % to -7 % at -Os.
@@ -353,7 +356,8 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     }
   }
   // A q24_8 value plus ZienkiewiczChannel::rounding_bias from eval_narrow rounded and clamped to
-  // [0, 255] (as to_u8 of the int32-clamped value, what put_rounded takes).
+  // [0, 255] (as to_u8 of the int32-clamped value plus the bias's extra unit, what put_rounded
+  // takes).
   using NarrowValue = ZienkiewiczChannel::NarrowValue;
   __attribute__((always_inline)) static uint32_t rounded(NarrowValue biased) {
     NarrowValue v = biased >> q24_8::frac_bits;
@@ -378,7 +382,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
 #endif
     out(rounded(v0), rounded(v1), rounded(v2));
   }
-  // per_pixel's RGB565 loop by the 32-bit forms: `count` pixels from p (2 bytes each) from the
+  // per_pixel's RGB565 loop by eval_narrow: `count` pixels from p (2 bytes each) from the
   // weights a, b, each channel rounded and clamped as put_rounded takes it, then store(pixel, r, g, b).
   template <typename Store>
   __attribute__((always_inline)) void rgb565_pixels(uint8_t* p, int32_t count, uint32_t a, uint32_t b,
@@ -517,12 +521,18 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
           } else {
             const uint16_t* table = rgb565_table<F>.v;
             __asm__("" : "+r"(table));  // the table's address in a register
-            for (; q != stop; q += 2) {
-              store565_bytes(q, pack565_bytes_by_table_biased<F>(u8(r), u8(g) + 256, u8(bl), table));
+            auto pixel = [&](uint8_t * at) __attribute__((always_inline)) {
+              store565_bytes(at, pack565_bytes_by_table_biased<F>(u8(r), u8(g) + 256, u8(bl), table));
               r += r1, r1 += r2, r2 += r3;
               g += g1, g1 += g2, g2 += g3;
               bl += b1, b1 += b2, b2 += b3;
+            };
+            // Two pixels an iteration (one loop test, the D3 words read once for both).
+            for (; stop - q >= 4; q += 4) {
+              pixel(q);
+              pixel(q + 2);
             }
+            if (q != stop) pixel(q);
           }
         });
   }

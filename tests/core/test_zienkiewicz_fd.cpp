@@ -255,6 +255,7 @@ TEST_CASE("eval_wide equals the portable Horner steps (mul_q32) for coefficients
   for (int i = 0; i < 200000; ++i) {
     for (int64_t& q : p) q = int64_t(rng()) >> (12 + rng() % 52);  // |p| < 2^52
     set_coefficients(z, p);
+    REQUIRE(coefficients(z) == p);  // stored (scaled, in int32 or int64) without loss
     const int32_t a = int32_t(uint32_t(rng())), b = int32_t(uint32_t(rng()));
     const ZienkiewiczChannel::ScaledCoefficients c = z.scaled();
     auto h = [](int32_t w, int64_t t, int64_t s) { return s + SplitProduct(t, w).high; };
@@ -286,7 +287,7 @@ TEST_CASE("eval_wide is within 3 units of 2^-8 grey below the exact cubic for we
     REQUIRE(diff < i128(3) << 90);
     worst = std::max(worst, double(diff) / double(i128(1) << 90));
   }
-  CHECK(worst > 1);  // the bound is not loose by much
+  CHECK(worst > 2);  // the bound is not loose by much
 }
 
 TEST_CASE("the coefficients in 32 bits equal those in 64 bits within max_narrow_derivative") {
@@ -305,6 +306,52 @@ TEST_CASE("the coefficients in 32 bits equal those in 64 bits within max_narrow_
     REQUIRE(n.fits_narrow());
     REQUIRE(coefficients(n) == coefficients(w));
   }
+}
+
+TEST_CASE("setup_narrow takes exactly the triangles whose edge derivatives are in [-2^18, 2^18)") {
+  // Its test on the words of the lifted rounding sums against the derivatives themselves, with
+  // gradients at the budget's edges (u = +-2^18 and one step inside) in every slot.
+  std::mt19937_64 rng(41);
+  constexpr int down = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
+  constexpr int64_t max = ZienkiewiczChannel::max_narrow_derivative;
+  int taken = 0, refused = 0;
+  for (int i = 0; i < 100000; ++i) {
+    int32_t dx[3], dy[3], v3[3], g[6];
+    for (int k = 0; k < 3; ++k) {
+      dx[k] = int32_t(rng() % 64) - 32;
+      dy[k] = int32_t(rng() % 64) - 32;
+      v3[k] = int32_t(rng() % 65536);
+    }
+    for (int32_t& gk : g) gk = (int32_t(rng() % (1u << 28)) - (1 << 27)) >> int(8 + rng() % 12);
+    if (i % 2) {
+      // One derivative at the budget's edge, the others 0: edge e = (1, 0), the other edges
+      // (0, 0), its vertex's gx chosen so that the rounded derivative is -max - 1, -max, max - 1
+      // or max.
+      const int slot = int(rng() % 6), e = slot / 2 == 0 ? 0 : (slot / 2 == 1 ? 1 : 2);
+      const int v = slot == 0 ? 0 : slot == 1 ? 1 : slot == 2 ? 1 : slot == 3 ? 2 : slot == 4 ? 2 : 0;
+      const int64_t targets[4] = {-max - 1, -max, max - 1, max};
+      const int64_t u = targets[rng() % 4];
+      for (int k = 0; k < 3; ++k) dx[k] = dy[k] = 0;
+      dx[e] = 1;
+      g[2 * v] = int32_t(u << down), g[2 * v + 1] = int32_t(rng() % 7) - 3;
+    }
+    auto dot = [&](int e, int v) {
+      return (int64_t(dx[e]) * g[2 * v] + int64_t(dy[e]) * g[2 * v + 1] + (int64_t(1) << (down - 1))) >> down;
+    };
+    const bool small =
+        ZienkiewiczChannel::narrow_derivatives(dot(0, 0), dot(0, 1), dot(1, 1), dot(1, 2), dot(2, 2), dot(2, 0));
+    ZienkiewiczChannel z{};
+    INFO("case " << i);
+    REQUIRE(z.setup_narrow(dx, dy, v3, g) == small);
+    if (small) {
+      ZienkiewiczChannel w{};
+      w.expand<int64_t>(v3[0], dot(0, 0), dot(0, 1), v3[1], dot(1, 1), dot(1, 2), v3[2], dot(2, 2), dot(2, 0));
+      REQUIRE(coefficients(z) == coefficients(w));
+    }
+    (small ? taken : refused) += 1;
+  }
+  CHECK(taken > 20000);
+  CHECK(refused > 20000);
 }
 
 TEST_CASE("setup takes the 32-bit coefficients only for small edge derivatives, with the same result") {
@@ -337,8 +384,9 @@ TEST_CASE("setup takes the 32-bit coefficients only for small edge derivatives, 
     w.expand<int64_t>(v3[0], dot(0, 0), dot(0, 1), v3[1], dot(1, 1), dot(1, 2), v3[2], dot(2, 2), dot(2, 0));
     REQUIRE(coefficients(z) == coefficients(w));
     REQUIRE(coefficients(z64) == coefficients(w));
-    // Coefficients beyond int32 (kept apart where the coefficients are int32: TS_USE_INT128=0)
-    // are outside both 32-bit budgets, and eval_wide is the int64 Horner scheme in either layout.
+    // Coefficients beyond int32 (whose scaled ones are kept apart where the fields are int32:
+    // TS_USE_INT128=0) are outside both 32-bit budgets, and eval_wide is the same Horner scheme
+    // in either layout.
     const Coefficients pw = coefficients(w);
     bool beyond_int32 = false;
     for (const int64_t q : pw) beyond_int32 |= q < INT32_MIN || q > INT32_MAX;

@@ -123,9 +123,10 @@ struct CubicSteps {
   }
 };
 
-// Whether ZienkiewiczChannel's 32-bit forms (eval_narrow, the 32-bit expansion in setup) are used:
-// where a 64-bit product is not one instruction (no 128-bit type: Cortex-M). On 64-bit hosts the
-// 64-bit forms are as fast and the checks that choose would only cost.
+// Whether ZienkiewiczChannel's 32-bit forms (eval32 for eval_narrow, the 32-bit expansion in
+// setup: setup_narrow) are used: where a 64-bit product is not one instruction (no 128-bit type:
+// Cortex-M). On 64-bit hosts the 64-bit forms are as fast and the checks that choose would only
+// cost.
 constexpr bool zienkiewicz_narrow_forms = !TS_USE_INT128;
 
 // ZienkiewiczChannel::setup inlined into each shader's begin (its loads and the triangle's edges
@@ -145,9 +146,10 @@ constexpr bool zienkiewicz_narrow_forms = !TS_USE_INT128;
 // Two evaluations (docs/FIXED_POINT.md, Zienkiewicz):
 // - per pixel: Horner's rule on the scaled coefficients with a and b as q2_30 weights w, each
 //   step t' = s + floor(w t / 2^32) (= s + floor(weight t / 4): the scale drops by 4 a degree, so no
-//   shifts; one SMMLA on Cortex-M4). eval_narrow in 32 bits within its budget, eval_wide in 64;
-//   the same integers (short rows, small triangles, and triangles outside the forward-difference
-//   budget; see zienkiewicz_fd_min_length);
+//   shifts; one SMMLA on Cortex-M4). eval_narrow: in 32 bits within its budget (eval32), or with
+//   a 128-bit product on 64-bit hosts; eval_wide in 64 bits; the same integers (short rows, small
+//   triangles, and triangles outside the forward-difference budget; see
+//   zienkiewicz_fd_min_length);
 // - forward differencing along a row: a and b are linear in x (steps da, db in q2_30), so f is a
 //   cubic in x. setup_rows() expands, once per triangle, its forward differences
 //   D1(a, b) = P(a + da, b + db) - P(a, b), D2 (the difference of D1) and D3 as polynomials in
@@ -346,8 +348,8 @@ struct ZienkiewiczChannel {
       auto fits = [](T q, int degree) {
         return uint32_t(q > (T(wide_mark) >> (2 * degree)) && q <= (T(INT32_MAX) >> (2 * degree)));
       };
-      if (!(fits(q00 + rounding_bias, 0) & fits(q01, 1) & fits(q02, 2) & fits(q03, 3) & fits(q10, 1) & fits(q11, 2) &
-            fits(q12, 3) & fits(q20, 2) & fits(q21, 3) & fits(q30, 3))) {
+      if (!(fits(q00, 0) & fits(q00 + rounding_bias, 0) & fits(q01, 1) & fits(q02, 2) & fits(q03, 3) & fits(q10, 1) &
+            fits(q11, 2) & fits(q12, 3) & fits(q20, 2) & fits(q21, 3) & fits(q30, 3))) {
         w.s00 = q00 + rounding_bias, w.s01 = 4 * q01, w.s02 = 16 * q02, w.s03 = 64 * q03, w.s10 = 4 * q10;
         w.s11 = 16 * q11, w.s12 = 64 * q12, w.s20 = 16 * q20, w.s21 = 64 * q21, w.s30 = 64 * q30;
         s30 = wide_mark;
@@ -611,8 +613,8 @@ struct ZienkiewiczChannel {
   }
 };
 
-static_assert(ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) + 128 <= INT32_MAX,
-              "narrow evaluation: every partial sum (and the rounding offset) fits int32");
+static_assert(ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) <= INT32_MAX,
+              "narrow evaluation: every partial sum fits int32");
 static_assert(20 * 64 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <=
                       ZienkiewiczChannel::max_narrow_coefficient &&
                   (int64_t(1) << 16) <= ZienkiewiczChannel::max_narrow_derivative,
@@ -620,7 +622,8 @@ static_assert(20 * 64 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <=
 
 // Rows at least this long (the row's whole covered length, independent of tiling) of triangles
 // of at least this area (pixels) are forward-differenced; other rows are evaluated pixel by pixel
-// (ZienkiewiczChannel::eval): below these sizes the setup costs more than it saves.
+// (ZienkiewiczChannel::eval_narrow, eval_wide): below these sizes the setup costs more than it
+// saves.
 constexpr int32_t zienkiewicz_fd_min_length = 5;
 constexpr int32_t zienkiewicz_fd_min_area = 32;
 constexpr int64_t zienkiewicz_fd_min_area2 = int64_t(2 * zienkiewicz_fd_min_area) << (2 * config::subpixel_bits);
