@@ -212,9 +212,13 @@ struct ZienkiewiczChannel {
                                                            const Gradients& gradients, int edge, int vertex) {
     constexpr int shift = derivative_shift;
     static_assert(shift >= 1, "edge derivative needs at least one bit to round away");
-    const int64_t d =
-        int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
-    return (d + (int64_t(1) << (shift - 1))) >> shift;
+    return (derivative_sum(edge_dx, edge_dy, gradients, edge, vertex) + (int64_t(1) << (shift - 1))) >> shift;
+  }
+  // derivative before its rounding: edge . gradient in 2^-(shift + 8) grey.
+  template <typename Gradients>
+  __attribute__((always_inline)) static int64_t derivative_sum(const int32_t* edge_dx, const int32_t* edge_dy,
+                                                               const Gradients& gradients, int edge, int vertex) {
+    return int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
   }
 
   // dx, dy: domain-space edge vectors AB, BC, CA in position_fx; values q8_8; gradients q19_12
@@ -257,8 +261,7 @@ struct ZienkiewiczChannel {
     constexpr int64_t lift = (int64_t(1) << (shift - 1)) + (int64_t(max_narrow_derivative) << shift);
     uint32_t high = 0, low = 0;
     auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
-      const int64_t d =
-          int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1] + lift;
+      const int64_t d = derivative_sum(edge_dx, edge_dy, gradients, edge, vertex) + lift;
       high |= uint32_t(uint64_t(d) >> 32);
       low |= uint32_t(d);
       return int32_t(uint32_t(d) >> shift) - max_narrow_derivative;
