@@ -82,7 +82,8 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& 
     }
   } else {
     if constexpr (config::methods & 2) {
-      ZienkiewiczShader<Channels, Writer> s{{layer, blob.values_per_vertex, first_channel, {}, {}, 0, false}, writer, step};
+      ZienkiewiczShader<Channels, Writer> s{
+          {layer, blob.values_per_vertex, uint8_t(first_channel), 0, false, {}, {}}, writer, step};
       draw_layer<Records>(list, map, rect, cull_columns, s);
     }
   }

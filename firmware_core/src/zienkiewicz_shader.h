@@ -81,18 +81,21 @@ struct DirectRgb565<DirectWriter<F, 3, false>> {
 template <int Channels>
 struct ZienkiewiczTriangle {
   const BlobLayer* layer;
-  int per_vertex;
-  int first_channel;
+  // Bytes, in one word beside the blob's layer: the shader lives in the frame of the tile
+  // function, the largest of the deepest Cortex-M4 stack (16 bytes less than as ints after steps).
+  uint8_t per_vertex;
+  uint8_t first_channel;
+  int8_t fd_state = 0;  // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
+  bool narrow = false;  // every channel fits ZienkiewiczChannel::eval_narrow
   ZienkiewiczChannel ch[Channels];
   BarycentricStepper steps;
-  int fd_state = 0;     // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
-  bool narrow = false;  // every channel fits ZienkiewiczChannel::eval_narrow
 
   // The set-up of a triangle in parts: the stepper (begin_steps), the coefficients (begin_channels)
   // and, on Cortex-M, the 64-bit expansion of the rare channels beyond the 32-bit budget
-  // (begin_wide) and forward differencing (begin_rows). There each part is out of line, one called
-  // after another (the last two as tail calls): the deepest stack below draw_with is one part's
-  // frame, not the sum of begin's, the stepper's and setup_wide's.
+  // (begin_wide, a tail call). There each part is out of line, one called after another: the
+  // deepest stack below draw_with is one part's frame, not the sum of begin's, the stepper's and
+  // setup_wide's. Forward differencing is set up on the triangle's first long row in the tile
+  // (set_up_rows).
   void begin(const TriangleView& tv, const TriangleSetup& s) {
     begin_steps(s);
     begin_channels(tv, s.area2);
@@ -148,11 +151,7 @@ struct ZienkiewiczTriangle {
         if (!ch[c].setup_narrow(in.dx, in.dy, VertexValues{in.values, 2 * c}, VertexGradients{in.gradients, 8 * c}))
           wide |= 1u << c;
       narrow = true;
-      if (wide) {
-        begin_wide(tv, wide);
-      } else {
-        begin_rows();
-      }
+      if (wide) begin_wide(tv, wide);
     } else {
       bool fits = true;
 #pragma GCC unroll 3  // as above (x86-64: 0.1 % to 0.5 % of the instructions)
@@ -161,21 +160,19 @@ struct ZienkiewiczTriangle {
       narrow = fits;
     }
   }
-  // Forward differencing set up (fd_state 1, or -1 outside its budget).
+  // Forward differencing set up (fd_state 1, or -1 outside its budget). The steps read again for
+  // each channel, not kept across the calls: on Cortex-M the caller's frame (first_long_row's) is
+  // below the set-up's, the deepest of the render.
   __attribute__((always_inline)) bool set_up_rows() {
-    const int32_t da = int32_t(steps.dadx), db = int32_t(steps.dbdx);
     fd_state = -1;
-    for (int c = 0; c < Channels; ++c)
-      if (!ch[c].setup_rows(da, db)) return false;
+    if (!ZienkiewiczChannel::steps_fit_rows(int32_t(steps.dadx), int32_t(steps.dbdx))) return false;
+#pragma GCC unroll 3
+    for (int c = 0; c < Channels; ++c) {
+      __asm__("" ::: "memory");  // the steps read here again (the compiler knows the call leaves them)
+      if (!ch[c].setup_rows_within(int32_t(steps.dadx), int32_t(steps.dbdx))) return false;
+    }
     fd_state = 1;
     return true;
-  }
-  // begin's last part with the 32-bit forms: forward differencing set up for every triangle large
-  // enough, not on its first long row (span then never calls the set-up, whose frames were below
-  // span's: 56 + 136 bytes against 32 + 136 here; the modelled Cortex-M4 cycles went down too,
-  // span having one test less).
-  __attribute__((noinline)) void begin_rows() {
-    if (fd_state == 0) set_up_rows();
   }
   // The channels of the mask `wide` by the 64-bit expansion; narrow when their coefficients fit
   // the 32-bit evaluation all the same. A channel a call (wide_channel): only one channel's
@@ -185,7 +182,6 @@ struct ZienkiewiczTriangle {
     for (int c = 0; c < Channels; ++c)
       if (wide >> c & 1) fits &= wide_channel(tv, c);
     narrow = fits;
-    begin_rows();
   }
   // Channel c's values and gradients read through the triangle's vertex indices (no arrays of
   // addresses in the frame of this rare path).
@@ -228,18 +224,24 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   using ZienkiewiczTriangle<Channels>::fd_state;
   using ZienkiewiczTriangle<Channels>::narrow;
 
-  // Forward differencing set up on the first row that uses it (where begin did not: see
-  // begin_rows); false for a small triangle or one outside the budget (then every row is
-  // evaluated per pixel).
+#if TS_USE_SSE2
+  // Forward differencing set up on the first row that uses it; false for a small triangle or one
+  // outside the budget (then every row is evaluated per pixel).
   __attribute__((noinline)) bool rows_ready_slow() { return this->set_up_rows(); }
-  // The first row of at least zienkiewicz_fd_min_length pixels: forward differencing set up
-  // (rows_ready_slow), then the row drawn by span again (by forward differencing or, out of the
-  // budget, per pixel), a tail call. Out of span: the set-up's frames are not below span's. Used
-  // without SSE2 where the 64-bit forms are (Cortex-M sets forward differencing up in begin_rows).
-  __attribute__((noinline)) void first_long_row(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
-    rows_ready_slow();
-    span(y, xs, xe, x0, x1);
+#else
+  // The first row of at least zienkiewicz_fd_min_length pixels in the tile (without SSE2):
+  // forward differencing set up, then the row drawn by it (a tail call) or, out of its budget,
+  // by span per pixel (a short row's end: xs). Out of span: the set-up's frames are not below
+  // span's. Set up here, not in begin: on Cortex-M4 10 % to 25 % of the set-ups had drawn no
+  // such row (-0.1 % to -2.5 % modelled cycles).
+  __attribute__((noinline)) void first_long_row(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
+    if (this->set_up_rows()) {
+      forward_differenced(y, xs, x0, x1);
+    } else {
+      span(y, xs, xs, x0, x1);  // per pixel (rare)
+    }
   }
+#endif
   // Row y of the triangle covers [xs, xe]; pixels x0..x1 of it are in the tile. Rows of at least
   // zienkiewicz_fd_min_length pixels (of large enough triangles) are forward-differenced, others
   // evaluated per pixel: the choice depends on the whole row, not on the tile. Out of line (both
@@ -254,12 +256,11 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     }
 #else
     if (xe - xs + 1 >= zienkiewicz_fd_min_length && fd_state >= 0) {
-      // Tail calls: this frame is gone before the forward differencing's and the set-up's. With
-      // the 32-bit forms begin set forward differencing up already (begin_rows).
-      if (zienkiewicz_narrow_forms || fd_state > 0) {
+      // Tail calls: this frame is gone before the forward differencing's and the set-up's.
+      if (fd_state > 0) {
         forward_differenced(y, xs, x0, x1);
       } else {
-        first_long_row(y, xs, xe, x0, x1);
+        first_long_row(y, xs, x0, x1);
       }
       return;
     }
