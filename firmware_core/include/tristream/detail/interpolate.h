@@ -549,7 +549,9 @@ struct ZienkiewiczChannel {
     // so their bitwise or below 2^(k+1). With the steps' budget the g budget implies the h budget
     // (D2's terms are the steps times D1's: |h| below 1.6 2^26); its check is kept so that steps_at's
     // bound does not rest on that derivation. Each coefficient stored as soon as it is formed (fd is
-    // undefined when the budget fails): few values live at once (the deepest Cortex-M4 frame).
+    // undefined when the budget fails), those of the cubic terms first, the products that share
+    // them in a row (c3 kept for h00, g00): few values live at once (the deepest Cortex-M4 frame:
+    // 28 bytes less than in the order c3, c2_00, c2_10, c2_01, and -0.03 % to -0.6 % cycles).
     constexpr uint32_t g_lift = uint32_t(1) << 26, h_lift = uint32_t(1) << 28;
     uint32_t g_or = 0, h_or = 0;
     auto x4 = [](int32_t v) { return int32_t(uint32_t(v) << 2); };
@@ -564,14 +566,12 @@ struct ZienkiewiczChannel {
       h_or |= uint32_t(v) + h_lift;
       *to = lifted ? x4(v) : v;
     };
-    {
-      const int64_t c3 =
-          mul_q30(mul_q30(mul(q30, da) + mul(q21, db), da), da) + mul_q30(mul_q30(mul(q12, da) + mul(q03, db), db), db);
-      f.d3 = round_down(6 * c3);
-      const int64_t c2_00 = mul_q30(mul(q20, da) + mul(q11, db), da) + mul_q30(mul(q02, db), db);
-      h(2 * c2_00 + 6 * c3, &f.h00, false);
-      g(mul(q10, da) + mul(q01, db) + c2_00 + c3, &f.g00, false);
-    }
+    g(mul(3 * q30, da) + mul(q21, db), &f.g20x4, true);
+    g(mul(2 * q21, da) + mul(2 * q12, db), &f.g11x4, true);
+    g(mul(q12, da) + mul(3 * q03, db), &f.g02x4, true);
+    const int64_t c3 =
+        mul_q30(mul_q30(mul(q30, da) + mul(q21, db), da), da) + mul_q30(mul_q30(mul(q12, da) + mul(q03, db), db), db);
+    f.d3 = round_down(6 * c3);
     {
       const int64_t c2_10 = mul_q30(mul(3 * q30, da) + mul(2 * q21, db), da) + mul_q30(mul(q12, db), db);
       h(2 * c2_10, &f.h10x4, true);
@@ -582,9 +582,11 @@ struct ZienkiewiczChannel {
       h(2 * c2_01, &f.h01x4, true);
       g(mul(q11, da) + mul(2 * q02, db) + c2_01, &f.g01, false);
     }
-    g(mul(3 * q30, da) + mul(q21, db), &f.g20x4, true);
-    g(mul(2 * q21, da) + mul(2 * q12, db), &f.g11x4, true);
-    g(mul(q12, da) + mul(3 * q03, db), &f.g02x4, true);
+    {
+      const int64_t c2_00 = mul_q30(mul(q20, da) + mul(q11, db), da) + mul_q30(mul(q02, db), db);
+      h(2 * c2_00 + 6 * c3, &f.h00, false);
+      g(mul(q10, da) + mul(q01, db) + c2_00 + c3, &f.g00, false);
+    }
     if (g_or >= 2 * g_lift || h_or >= 2 * h_lift) return false;
     // P in 2^-14 grey (e = p 2^6): the ten |e| sum to below 2^27.
     constexpr int up = value_horner_frac_bits - q24_8::frac_bits;
