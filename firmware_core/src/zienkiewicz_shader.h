@@ -120,6 +120,7 @@ struct ZienkiewiczTriangle {
     const uint8_t* gradients[3];
   };
   __attribute__((always_inline)) void inputs(const TriangleView& tv, Inputs* in) const {
+#pragma GCC unroll 3
     for (int k = 0; k < 3; ++k) {
       edge(tv, k, &in->dx[k], &in->dy[k]);
       const size_t first = size_t(tv.v[k]) * per_vertex + first_channel;
@@ -236,7 +237,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   // such row (-0.1 % to -2.5 % modelled cycles).
   __attribute__((noinline)) void first_long_row(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
     if (this->set_up_rows()) {
-      forward_differenced(y, xs, x0, x1);
+      forward_differenced_row(y, xs, x0, x1);
     } else {
       span(y, xs, xs, x0, x1);  // per pixel (rare)
     }
@@ -258,7 +259,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     if (xe - xs + 1 >= zienkiewicz_fd_min_length && fd_state >= 0) {
       // Tail calls: this frame is gone before the forward differencing's and the set-up's.
       if (fd_state > 0) {
-        forward_differenced(y, xs, x0, x1);
+        forward_differenced_row(y, xs, x0, x1);
       } else {
         first_long_row(y, xs, x0, x1);
       }
@@ -395,11 +396,12 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
                [&](uint32_t r, uint32_t g, uint32_t bl) { store(p, r, g, bl); });
     }
   }
-  // Pixels x0..x1 of row y by forward differencing from the weights at xs.
-  __attribute__((noinline)) void forward_differenced(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
+  // forward_differenced, called from span and first_long_row: without SSE2 in RGB565 the row
+  // loops themselves (tail calls, no call between: -0.3 % modelled Cortex-M4 cycles). Optimized
+  // for size one loop, by the offsets.
+  __attribute__((always_inline)) void forward_differenced_row(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
 #if !TS_USE_SSE2
     if constexpr (DirectRgb565<Writer>::value) {
-      // Tail calls: this frame is gone below theirs. Optimized for size one loop, by the offsets.
 #if defined(__OPTIMIZE_SIZE__)
       rgb565_rows<true>(y, xs, x0, x1);
 #else
@@ -412,6 +414,10 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       return;
     }
 #endif
+    forward_differenced(y, xs, x0, x1);
+  }
+  // Pixels x0..x1 of row y by forward differencing from the weights at xs.
+  __attribute__((noinline)) void forward_differenced(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
     constexpr int vf = ZienkiewiczChannel::value_frac_bits;
     constexpr uint32_t half = uint32_t(1) << (vf - 1);
     uint32_t a, b;
