@@ -25,3 +25,15 @@ for elf in "$build/firmware/firmware_demo.elf" "$build/firmware/firmware_demo_mi
   fi
 done
 echo "no heap allocator linked"
+# The core compiled as a firmware's Debug build (-O0) and by clang for Cortex-M4 (as armclang's
+# users would): the inline assembly must leave the compiler registers enough in both (compile only).
+echo "== firmware_core at -O0 (arm-none-eabi-g++) and -O2 (clang for thumbv7em, when installed):"
+flags=(-std=c++17 -mcpu=cortex-m4 -mthumb -Wall -Wextra -Werror -fno-exceptions -fno-rtti -I"$root/firmware_core/include")
+clang=$(command -v clang++-14 || true)
+for src in "$root"/firmware_core/src/*.cpp; do
+  arm-none-eabi-g++ "${flags[@]}" -O0 -c "$src" -o /dev/null
+  if [ -n "$clang" ]; then
+    "$clang" --target=thumbv7em-none-eabi -isystem /usr/lib/arm-none-eabi/include "${flags[@]}" -O2 -c "$src" -o /dev/null
+  fi
+done
+echo "compiled${clang:+ (and with $clang)}"

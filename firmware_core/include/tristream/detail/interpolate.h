@@ -4,6 +4,7 @@
 // vertex k to vertex k+1; E_k / area2 is the barycentric weight of vertex k+2 (indices mod 3).
 // Every quantity is an exact function of the pixel position and the triangle, so the output
 // never depends on where a tile or span starts.
+#include <stddef.h>
 #include <stdint.h>
 
 #include "tristream/detail/arith.h"
@@ -88,8 +89,8 @@ struct BilinearChannel {
 };
 
 // Out of line on Cortex-M: CubicSteps::skip (rows cut by a tile's left edge take it; inlined, its
-// binomials were formed for every restart) and ZienkiewiczChannel::setup_rows (called for every
-// channel of a triangle; its frame is the deepest of the zienkiewicz render there). setup_rows
+// binomials were formed for every restart) and ZienkiewiczChannel::setup_rows_within (called for
+// every channel of a triangle; its frame is the deepest of the zienkiewicz render there). It is
 // inlined elsewhere (x86-64: GCC left it out of line, +1.3 % instructions of a 4,000-triangle
 // frame).
 #if TS_USE_INT128
@@ -463,18 +464,21 @@ struct ZienkiewiczChannel {
     // Cortex-M4 a load right after a load takes one cycle, interleaved with the products two):
     // 87 modelled cycles a pixel of three channels against 97. GCC interleaves them (and a
     // barrier on the loaded values costs register copies).
+    // One base register (s00's address) and the coefficients' offsets from it (s00 .. s30 in
+    // their declaration's order, 4 bytes apart: static_assert below the class), the ten words one
+    // memory operand: an operand a coefficient takes an address register each where the compiler
+    // does not share them (-O0, clang), more than there are.
     int32_t v, t0, t1, t2, t3;
     __asm__(
-        "ldr %[t3], %[s03]\n\tldr %[t2], %[s02]\n\tldr %[t1], %[s01]\n\tldr %[t0], %[s00]\n\t"
+        "ldr %[t3], [%[p], #12]\n\tldr %[t2], [%[p], #8]\n\tldr %[t1], [%[p], #4]\n\tldr %[t0], [%[p]]\n\t"
         "smmla %[t3], %[b], %[t3], %[t2]\n\tsmmla %[t3], %[b], %[t3], %[t1]\n\tsmmla %[v], %[b], %[t3], %[t0]\n\t"
-        "ldr %[t2], %[s30]\n\tldr %[t1], %[s21]\n\tldr %[t0], %[s20]\n\t"
+        "ldr %[t2], [%[p], #36]\n\tldr %[t1], [%[p], #32]\n\tldr %[t0], [%[p], #28]\n\t"
         "smmla %[t1], %[b], %[t1], %[t0]\n\tsmmla %[t2], %[a], %[t2], %[t1]\n\t"
-        "ldr %[t3], %[s12]\n\tldr %[t1], %[s11]\n\tldr %[t0], %[s10]\n\t"
+        "ldr %[t3], [%[p], #24]\n\tldr %[t1], [%[p], #20]\n\tldr %[t0], [%[p], #16]\n\t"
         "smmla %[t3], %[b], %[t3], %[t1]\n\tsmmla %[t3], %[b], %[t3], %[t0]\n\t"
         "smmla %[t2], %[a], %[t2], %[t3]\n\tsmmla %[v], %[a], %[t2], %[v]"
         : [v] "=&r"(v), [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3)
-        : [a] "r"(a), [b] "r"(b), [s00] "m"(s00), [s01] "m"(s01), [s02] "m"(s02), [s03] "m"(s03), [s10] "m"(s10),
-          [s11] "m"(s11), [s12] "m"(s12), [s20] "m"(s20), [s21] "m"(s21), [s30] "m"(s30));
+        : [a] "r"(a), [b] "r"(b), [p] "r"(&s00), "m"(*reinterpret_cast<const int32_t(*)[10]>(&s00)));
     return v;
 #else
     auto h = [](int32_t w, int32_t t, int32_t s) __attribute__((always_inline)) { return mla_high(w, t, s); };
@@ -484,17 +488,10 @@ struct ZienkiewiczChannel {
     return h(a, pa, pb);
 #endif
   }
-  // p + the high word of the 64-bit product w t (modulo 2^32; eval_narrow's sums fit). On a
-  // Cortex-M with the DSP extension one SMMLA, which GCC does not form from the C (it emits
-  // SMULL and an ADD); elsewhere the same integers in C.
+  // p + the high word of the 64-bit product w t (modulo 2^32; eval_narrow's sums fit): what one
+  // SMMLA computes, the instruction of eval32's and steps_at's assembly on Cortex-M4.
   __attribute__((always_inline)) static int32_t mla_high(int32_t w, int32_t t, int32_t p) {
-#if defined(__ARM_FEATURE_DSP) && defined(__thumb2__)
-    int32_t r;
-    __asm__("smmla %0, %1, %2, %3" : "=r"(r) : "r"(w), "r"(t), "r"(p));
-    return r;
-#else
     return int32_t(uint32_t(p) + uint32_t(int32_t((int64_t(w) * t) >> 32)));
-#endif
   }
 
   // Forward differencing (docs/FIXED_POINT.md, Zienkiewicz): values and differences in 2^-18 grey,
@@ -515,9 +512,9 @@ struct ZienkiewiczChannel {
   // the budget (the steps', steps_fit_rows, first). The Taylor terms along the row in 2^-38 grey (p
   // in 2^-8 times q2_30): c1 exact, c2 and c3 from floor(x w / 2^30) products (mul_q30; below 2
   // and 3 units of 2^-38 off), then each coefficient rounded once to 2^-18.
+  // (The shader tests the steps once for its channels, then calls setup_rows_within.)
   __attribute__((always_inline)) bool setup_rows(int32_t da, int32_t db) {
-    // No row of 5 pixels or more, and the bounds below rest on the steps' budget. Checked here,
-    // inlined: in the out-of-line part it cost the deepest Cortex-M4 frame 8 bytes.
+    // No row of 5 pixels or more, and the bounds below rest on the steps' budget.
     return steps_fit_rows(da, db) && setup_rows_within(da, db);
   }
   // setup_rows for steps within steps_fit_rows.
@@ -629,35 +626,34 @@ struct ZienkiewiczChannel {
     // The same steps as the C below (m's multiplicand shifted left by 2 first), the coefficients
     // read in runs of loads as in eval32 (-0.5 % to -0.9 % modelled Cortex-M4 cycles, forward-
     // differenced rows of 7 to 11 pixels on average).
+    // By one base register and the fields' offsets, as eval32 (static_assert below the class).
+    const auto& words = *reinterpret_cast<const int32_t(*)[20]>(&r);
     int32_t d1, d2, v, t0, t1, t2, t3;
     __asm__(
-        "ldr %[t0], %[g11x4]\n\tldr %[t1], %[g10]\n\tldr %[t2], %[g20x4]\n\tldr %[t3], %[g02x4]\n\t"
+        "ldr %[t0], [%[p], #56]\n\tldr %[t1], [%[p], #48]\n\tldr %[t2], [%[p], #60]\n\tldr %[t3], [%[p], #52]\n\t"
         "smmla %[t0], %[b], %[t0], %[t1]\n\tsmmla %[t2], %[a], %[t2], %[t0]\n\t"
-        "ldr %[t1], %[g01]\n\tldr %[t0], %[g00]\n\t"
+        "ldr %[t1], [%[p], #44]\n\tldr %[t0], [%[p], #40]\n\t"
         "smmla %[t3], %[b], %[t3], %[t1]\n\tlsl %[t3], %[t3], #2\n\tsmmla %[t3], %[b], %[t3], %[t0]\n\t"
         "lsl %[t2], %[t2], #2\n\tsmmla %[d1], %[a], %[t2], %[t3]"
         : [d1] "=&r"(d1), [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3)
-        : [a] "r"(a), [b] "r"(b), [g00] "m"(r.g00), [g01] "m"(r.g01), [g10] "m"(r.g10), [g02x4] "m"(r.g02x4),
-          [g11x4] "m"(r.g11x4), [g20x4] "m"(r.g20x4));
+        : [a] "r"(a), [b] "r"(b), [p] "r"(&r), "m"(words));
     __asm__(
-        "ldr %[t0], %[h01x4]\n\tldr %[t1], %[h00]\n\tldr %[t2], %[h10x4]\n\t"
+        "ldr %[t0], [%[p], #68]\n\tldr %[t1], [%[p], #64]\n\tldr %[t2], [%[p], #72]\n\t"
         "smmla %[t0], %[b], %[t0], %[t1]\n\tsmmla %[d2], %[a], %[t2], %[t0]"
         : [d2] "=&r"(d2), [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2)
-        : [a] "r"(a), [b] "r"(b), [h00] "m"(r.h00), [h01x4] "m"(r.h01x4), [h10x4] "m"(r.h10x4));
+        : [a] "r"(a), [b] "r"(b), [p] "r"(&r), "m"(words));
     __asm__(
-        "ldr %[t0], %[e03x4]\n\tldr %[t1], %[e02]\n\tldr %[t2], %[e01]\n\tldr %[t3], %[e00]\n\t"
+        "ldr %[t0], [%[p], #24]\n\tldr %[t1], [%[p], #8]\n\tldr %[t2], [%[p], #4]\n\tldr %[t3], [%[p]]\n\t"
         "smmla %[t0], %[b], %[t0], %[t1]\n\tlsl %[t0], %[t0], #2\n\tsmmla %[t0], %[b], %[t0], %[t2]\n\t"
         "lsl %[t0], %[t0], #2\n\tsmmla %[v], %[b], %[t0], %[t3]\n\t"
-        "ldr %[t0], %[e21x4]\n\tldr %[t1], %[e20]\n\tldr %[t2], %[e30x4]\n\t"
+        "ldr %[t0], [%[p], #32]\n\tldr %[t1], [%[p], #20]\n\tldr %[t2], [%[p], #36]\n\t"
         "smmla %[t0], %[b], %[t0], %[t1]\n\tsmmla %[t2], %[a], %[t2], %[t0]\n\t"
-        "ldr %[t0], %[e12x4]\n\tldr %[t1], %[e11]\n\tldr %[t3], %[e10]\n\t"
+        "ldr %[t0], [%[p], #28]\n\tldr %[t1], [%[p], #16]\n\tldr %[t3], [%[p], #12]\n\t"
         "smmla %[t0], %[b], %[t0], %[t1]\n\tlsl %[t0], %[t0], #2\n\tsmmla %[t0], %[b], %[t0], %[t3]\n\t"
         "lsl %[t2], %[t2], #2\n\tsmmla %[t2], %[a], %[t2], %[t0]\n\t"
         "lsl %[t2], %[t2], #2\n\tsmmla %[v], %[a], %[t2], %[v]"
         : [v] "=&r"(v), [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3)
-        : [a] "r"(a), [b] "r"(b), [e00] "m"(r.e00), [e01] "m"(r.e01), [e02] "m"(r.e02), [e03x4] "m"(r.e03x4),
-          [e10] "m"(r.e10), [e11] "m"(r.e11), [e12x4] "m"(r.e12x4), [e20] "m"(r.e20), [e21x4] "m"(r.e21x4),
-          [e30x4] "m"(r.e30x4));
+        : [a] "r"(a), [b] "r"(b), [p] "r"(&r), "m"(words));
     s.d1 = uint32_t(d1);
     s.d2 = uint32_t(d2);
     s.d3 = uint32_t(r.d3);
@@ -678,6 +674,29 @@ struct ZienkiewiczChannel {
   }
 };
 
+#if defined(__ARM_FEATURE_DSP) && defined(__thumb2__)
+// The offsets eval32's and steps_at's assembly reads the coefficients at.
+#define TS_OFFSET_IS(type, base, field, bytes) (offsetof(type, field) - offsetof(type, base) == (bytes))
+static_assert(TS_OFFSET_IS(ZienkiewiczChannel, s00, s01, 4) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s02, 8) &&
+                  TS_OFFSET_IS(ZienkiewiczChannel, s00, s03, 12) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s10, 16) &&
+                  TS_OFFSET_IS(ZienkiewiczChannel, s00, s11, 20) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s12, 24) &&
+                  TS_OFFSET_IS(ZienkiewiczChannel, s00, s20, 28) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s21, 32) &&
+                  TS_OFFSET_IS(ZienkiewiczChannel, s00, s30, 36),
+              "eval32's offsets");
+using ZienkiewiczRows = ZienkiewiczChannel::RowCoefficients;
+static_assert(TS_OFFSET_IS(ZienkiewiczRows, e00, e01, 4) && TS_OFFSET_IS(ZienkiewiczRows, e00, e02, 8) &&
+                  TS_OFFSET_IS(ZienkiewiczRows, e00, e10, 12) && TS_OFFSET_IS(ZienkiewiczRows, e00, e11, 16) &&
+                  TS_OFFSET_IS(ZienkiewiczRows, e00, e20, 20) && TS_OFFSET_IS(ZienkiewiczRows, e00, e03x4, 24) &&
+                  TS_OFFSET_IS(ZienkiewiczRows, e00, e12x4, 28) && TS_OFFSET_IS(ZienkiewiczRows, e00, e21x4, 32) &&
+                  TS_OFFSET_IS(ZienkiewiczRows, e00, e30x4, 36) && TS_OFFSET_IS(ZienkiewiczRows, e00, g00, 40) &&
+                  TS_OFFSET_IS(ZienkiewiczRows, e00, g01, 44) && TS_OFFSET_IS(ZienkiewiczRows, e00, g10, 48) &&
+                  TS_OFFSET_IS(ZienkiewiczRows, e00, g02x4, 52) && TS_OFFSET_IS(ZienkiewiczRows, e00, g11x4, 56) &&
+                  TS_OFFSET_IS(ZienkiewiczRows, e00, g20x4, 60) && TS_OFFSET_IS(ZienkiewiczRows, e00, h00, 64) &&
+                  TS_OFFSET_IS(ZienkiewiczRows, e00, h01x4, 68) && TS_OFFSET_IS(ZienkiewiczRows, e00, h10x4, 72) &&
+                  sizeof(ZienkiewiczRows) == 80,
+              "steps_at's offsets");
+#undef TS_OFFSET_IS
+#endif
 static_assert(ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) <= INT32_MAX,
               "narrow evaluation: every partial sum fits int32");
 static_assert(20 * 64 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <=
