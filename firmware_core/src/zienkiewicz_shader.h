@@ -256,7 +256,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
 #if TS_USE_SSE2
     // The set-up called from here, as before first_long_row (which cost x86-64 up to +0.3 % instructions).
     if (xe - xs + 1 >= zienkiewicz_fd_min_length && (fd_state == 0 ? rows_ready_slow() : fd_state > 0)) {
-      forward_differenced(y, xs, x0, x1);
+      forward_differenced_row(y, xs, x0, x1);
       return;
     }
 #else
@@ -400,9 +400,9 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
                [&](uint32_t r, uint32_t g, uint32_t bl) { store(p, r, g, bl); });
     }
   }
-  // forward_differenced, called from span and first_long_row: without SSE2 in RGB565 the row
-  // loops themselves (tail calls, no call between: -0.3 % modelled Cortex-M4 cycles). Optimized
-  // for size one loop, by the offsets.
+  // A forward-differenced row, as span and first_long_row draw it: without SSE2 in RGB565 the row
+  // loops themselves (tail calls, no forward_differenced call between: -0.3 % modelled Cortex-M4
+  // cycles; optimized for size one loop, by the offsets), else forward_differenced.
   __attribute__((always_inline)) void forward_differenced_row(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
 #if !TS_USE_SSE2
     if constexpr (DirectRgb565<Writer>::value) {
