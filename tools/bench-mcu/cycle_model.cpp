@@ -54,15 +54,8 @@ const cs_arm_op* memory_operand(const cs_arm& arm) {
   return nullptr;
 }
 
-// What the next instruction's cost depends on.
-struct Context {
-  bool valid = false;
-  bool sixteen_bit = false;
-  unsigned pipelined_load_dest = ARM_REG_INVALID;  // a single LDR without writeback: its destination
-  bool load_pipelinable = false;
-  unsigned written[4] = {};  // registers a data-processing instruction wrote (address generation stall)
-  int written_count = 0;
-};
+using Context = InsnContext;
+static_assert(ARM_REG_INVALID == 0, "InsnContext's default: no register");
 
 bool uses(const cs_arm_op* mem, unsigned reg) {
   return mem && reg != ARM_REG_INVALID && (mem->mem.base == reg || mem->mem.index == reg);
@@ -184,6 +177,7 @@ bool CycleModel::decode_block(const std::uint8_t* code, std::uint32_t size, std:
   csh h = handle_of(handle_);
   cs_insn* insns = nullptr;
   const std::size_t n = cs_disasm(h, code, size, address, 0, &insns);
+  const int it_left_at_start = it_left;
   *out = DecodedBlock{};
   out->address = address;
   out->size = size;
@@ -200,8 +194,21 @@ bool CycleModel::decode_block(const std::uint8_t* code, std::uint32_t size, std:
     out->insns.push_back(d);
     covered += insns[i].size;
   }
+  out->exit = ctx;
+  out->it_left = it_left_at_start;
   if (n) cs_free(insns, n);
   return n > 0 && covered == size;
+}
+
+int CycleModel::first_cycles_after(const std::uint8_t* code, std::uint32_t size, std::uint32_t address,
+                                   const InsnContext& prev, int it_left) const {
+  csh h = handle_of(handle_);
+  cs_insn* insn = nullptr;
+  if (cs_disasm(h, code, size, address, 1, &insn) != 1) return -1;
+  Context next;
+  const int cycles = cost(h, *insn, prev, &next, it_left > 0).cycles;
+  cs_free(insn, 1);
+  return cycles;
 }
 
 std::vector<DivideSite> CycleModel::find_divides(const ElfImage& elf) const {

@@ -40,12 +40,25 @@ struct DecodedInsn {
   bool conditional = false;         // has a condition (in an IT block, or a conditional branch)
 };
 
+// What an instruction's cost depends on of the instruction before it: IT folding after a 16-bit
+// instruction, load pipelining, the address generation stall.
+struct InsnContext {
+  bool valid = false;
+  bool sixteen_bit = false;
+  unsigned pipelined_load_dest = 0;  // capstone's ARM_REG_INVALID: none
+  bool load_pipelinable = false;
+  unsigned written[4] = {};  // registers a data-processing instruction wrote (address generation stall)
+  int written_count = 0;
+};
+
 struct DecodedBlock {
   std::uint32_t address = 0;
   std::uint32_t size = 0;
-  std::uint32_t cycles = 0;  // sum of the static costs
+  std::uint32_t cycles = 0;  // sum of the static costs, the first instruction's after none
   std::uint32_t by_class[class_count] = {};
   std::vector<DecodedInsn> insns;
+  InsnContext exit;  // after the last instruction
+  int it_left = 0;   // as decoded
   bool ends_with_conditional_branch() const { return !insns.empty() && insns.back().conditional_branch; }
 };
 
@@ -69,6 +82,12 @@ class CycleModel {
   // inside one; from the processor's ITSTATE).
   bool decode_block(const std::uint8_t* code, std::uint32_t size, std::uint32_t address, DecodedBlock* out,
                     int it_left = 0) const;
+  // The static cost of the instruction at `address` (the first of `code`) after an instruction
+  // that left `prev`: a block entered by falling through from the one before it in memory (a
+  // translation block ends where the M4's pipeline does not, e.g. at a page boundary) costs its
+  // first instruction so, as if the two were one block.
+  int first_cycles_after(const std::uint8_t* code, std::uint32_t size, std::uint32_t address, const InsnContext& prev,
+                         int it_left) const;
   // Every SDIV and UDIV in the image's Thumb code ranges.
   std::vector<DivideSite> find_divides(const ElfImage& elf) const;
 

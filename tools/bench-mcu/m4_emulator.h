@@ -89,10 +89,15 @@ class M4Emulator {
     DecodedBlock decoded;
     std::uint32_t function = 0;
     bool excluded = false;
+    // Cycles to add when entered by falling through (entry_cycles), once known.
+    bool fallthrough_known = false;
+    int fallthrough_cycles = 0;
   };
   const Block& block_at(std::uint32_t address, std::uint32_t size);
   void fail(const std::string& message);
   void resolve_pending(std::uint32_t next_address);
+  int entry_cycles(std::uint32_t address);
+  void count_entry(const Block& b, std::uint32_t address);
   void skip_to(std::uint32_t address);
   void finish_block();
   void watch_stack(std::uint32_t address);
@@ -117,6 +122,9 @@ class M4Emulator {
   std::uint32_t stack_top_ = 0, lowest_sp_ = 0;
   // Pending taken-branch decision: the last block (or instruction) was a conditional branch.
   bool pending_ = false;
+  // The block that ran last: where it ended and the context its last instruction left.
+  std::uint32_t previous_end_ = 0;
+  InsnContext previous_exit_;
   std::uint32_t pending_fallthrough_ = 0;
   Counts* pending_counts_ = nullptr;
   std::uint32_t pending_function_ = 0;
