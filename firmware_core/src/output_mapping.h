@@ -31,6 +31,12 @@ struct Mapping {
   __attribute__((always_inline)) int32_t y(int32_t v) const {
     return identity ? v : int32_t((uint32_t(v) * ny + by) / dy);
   }
+  // The smallest raw v >= 0 whose mapped y is at least t >= 0: floor((v n + b) / d) >= t exactly
+  // when v n >= t d - b (also for the identity: n = d, b < d). t is below 2^18 and d below 2^12.
+  int32_t first_y_at_least(int32_t t) const {
+    const int32_t need = t * int32_t(dy) - int32_t(by);
+    return need <= 0 ? 0 : (need + int32_t(ny) - 1) / int32_t(ny);
+  }
 };
 static_assert(uint64_t(65536) * (config::max_dimension - 1) + config::max_dimension / 2 +
                       (uint64_t(config::max_dimension) << config::subpixel_bits) * (config::max_dimension - 1) <

@@ -70,7 +70,8 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
   // Every buffer is checked before the first tile goes to the sink (no partial frame): a bitmap
   // of all its triangles always holds a layer's window, else the window is measured.
   for (int l = 0; l < blob.layer_count; ++l)
-    if (sets[l].capacity < blob.layers[l].triangle_count && sets[l].capacity < detail::max_window(blob.layers[l], r))
+    if (sets[l].capacity < blob.layers[l].triangle_count &&
+        detail::max_window(blob.layers[l], r, sets[l].capacity) > sets[l].capacity)
       return Status::workspace_too_small;
   const detail::TileRenderer draw = detail::tile_renderer<detail::BlobRecords>(r.format);
   detail::TileBuffers tiles(buffers);

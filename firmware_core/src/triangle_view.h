@@ -48,6 +48,16 @@ inline void row_extent(const BlobLayer& layer, uint32_t t, const Mapping& map, i
   *bottom = position_fx::from_raw(map.y(max3(y0, y1, y2))).floor_to_int();
 }
 
+// The largest domain (unmapped) y of triangle t's vertices: its last row is at or below row y
+// exactly when this is at least map.first_y_at_least(y * 2^S).
+inline int32_t raw_max_y(const BlobLayer& layer, uint32_t t) {
+  const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
+  const int32_t y0 = load_u16(layer.positions + 4 * size_t(load_u16(p)) + 2);
+  const int32_t y1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)) + 2);
+  const int32_t y2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)) + 2);
+  return max3(y0, y1, y2);
+}
+
 // Values of vertex v for `channels` channels starting at `first` (q8_8).
 inline void vertex_values(const BlobLayer& layer, int per_vertex, int first, int channels, uint16_t v, int32_t* out) {
   const uint8_t* p = layer.values + 2 * (size_t(v) * per_vertex + first);
