@@ -89,6 +89,16 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& 
   }
 }
 
+// Bytes [have, all) of p as copies of [0, have): doubling copies, [0, n) to [n, 2n) (never
+// overlapping), then the rest. Out of line: one copy of the loop for rows and blocks of rows.
+__attribute__((noinline)) inline void repeat_prefix(uint8_t* p, size_t have, size_t all) {
+  while (have < all) {
+    const size_t n = have < all - have ? have : all - have;
+    memcpy(p + have, p, n);
+    have += n;
+  }
+}
+
 template <PixelFormat F>
 void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const RenderParams& p, bool grey) {
   // Without dithering every row is the same: write the first, copy it to the others. With it the
@@ -97,14 +107,15 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
   constexpr int bpp = bytes_per_pixel(F);
   const bool dithered = p.dither && (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be);
   const int32_t period = dithered ? 4 : 1;
-  // Rows back to back (the stride is a row) without dithering, on Cortex-M: the whole tile as one
-  // row, a few long copies instead of one a row (32x32 tiles -0.3 % to -0.9 % modelled cycles).
-  // Not on x86-64, where copies beyond 2 KiB take glibc's `rep movsb` (counted per byte by
-  // tests/core/callgrind_core.sh: full frames +1 % to +8 % instructions).
-  const bool one_row = !TS_USE_SSE2 && period == 1 && size_t(stride) == size_t(rect.width()) * bpp;
-  const size_t row_bytes = size_t(rect.width()) * bpp * (one_row ? size_t(rect.height()) : 1u);
-  const int32_t y_end = one_row ? rect.y0 + 1 : rect.y1;
-  for (int32_t y = rect.y0; y < y_end; ++y) {
+  // Rows back to back (the stride is a row), on Cortex-M: the first `period` rows, then the rest
+  // of the tile as copies of them, a few long copies instead of one a row (32x32 tiles -0.3 % to
+  // -0.9 % modelled cycles; dithered -0.1 %). Not on x86-64, where copies beyond 2 KiB take glibc's
+  // `rep movsb` (counted per byte by tests/core/callgrind_core.sh: full frames +1 % to +8 %
+  // instructions).
+  const bool contiguous = !TS_USE_SSE2 && size_t(stride) == size_t(rect.width()) * bpp;
+  const size_t row_bytes = size_t(rect.width()) * bpp;
+  const int32_t rows = contiguous && rect.height() > period ? period : rect.height();
+  for (int32_t y = rect.y0; y < rect.y0 + rows; ++y) {
     uint8_t* row = base + (y - rect.y0) * stride;
     if (y - rect.y0 >= period) {
       memcpy(row, row - period * stride, row_bytes);
@@ -121,19 +132,23 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
         store_rgb<F>(px, p.background[0], p.background[1], p.background[2], x, y, p.dither);
       }
     }
-    // Doubling copies: [0, n) to [n, 2n) (never overlapping), then the rest.
-    for (size_t done = size_t(first) * bpp; done < row_bytes;) {
-      const size_t n = done < row_bytes - done ? done : row_bytes - done;
-      memcpy(row + done, row, n);
-      done += n;
-    }
+    repeat_prefix(row, size_t(first) * bpp, row_bytes);
   }
+  // The period's rows repeat: copies of [0, n rows) to [n, 2n), n a multiple of the period.
+  if (rows < rect.height()) repeat_prefix(base, row_bytes * size_t(rows), row_bytes * size_t(rect.height()));
 }
 
-// fill_background out of line on Cortex-M (no SSE2) where zienkiewicz is compiled in: its
-// registers then are not saved in render_tile's frame, under the zienkiewicz tile function (-48
-// bytes of the deepest Cortex-M4 stack). Inlined otherwise (out of line it cost bilinear up to 2 %
-// of the modelled cycles; on x86-64 the stack is no constraint).
+// fill_background out of line where zienkiewicz is compiled in on Cortex-M (no SSE2), and in
+// builds for size: its registers then are not saved in render_tile's frame, under the tile
+// function (-48 bytes of the deepest Cortex-M4 zienkiewicz stack; -Os bilinear -16). On x86-64:
+// render_tile's code then does not change with fill_background's (inlined, a change of the fill
+// had cost zienkiewicz +0.2 % instructions in render_tile, out of line it costs +0.01 %). Inlined
+// otherwise (out of line it cost Cortex-M4 bilinear up to 2 % of the modelled cycles at -O2).
+#if defined(__OPTIMIZE_SIZE__)
+inline constexpr bool fill_apart = true;
+#else
+inline constexpr bool fill_apart = (config::methods & 2) != 0 || TS_USE_SSE2;
+#endif
 template <PixelFormat F>
 __attribute__((noinline)) void fill_background_apart(uint8_t* base, int32_t stride, const Rect& rect,
                                                      const RenderParams& p, bool grey) {
@@ -144,7 +159,7 @@ template <typename Records, PixelFormat F>
 void render_tile(const Blob& blob, const RenderParams& p, const Mapping& map, ActiveSet* sets, const Rect& rect,
                  bool cull_columns, uint8_t* base, int32_t stride, int16_t* scratch) {
   const bool grey = blob.space == ColorSpace::grey;
-  if constexpr ((config::methods & 2) != 0 && !TS_USE_SSE2) {
+  if constexpr (fill_apart) {
     fill_background_apart<F>(base, stride, rect, p, grey);
   } else {
     fill_background<F>(base, stride, rect, p, grey);
