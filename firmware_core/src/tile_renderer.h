@@ -140,10 +140,11 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
 
 // fill_background out of line where zienkiewicz is compiled in on Cortex-M (no SSE2), and in
 // builds for size: its registers then are not saved in render_tile's frame, under the tile
-// function (-48 bytes of the deepest Cortex-M4 zienkiewicz stack; -Os bilinear -16). On x86-64:
-// render_tile's code then does not change with fill_background's (inlined, a change of the fill
-// had cost zienkiewicz +0.2 % instructions in render_tile, out of line it costs +0.01 %). Inlined
-// otherwise (out of line it cost Cortex-M4 bilinear up to 2 % of the modelled cycles at -O2).
+// function (-48 bytes of the deepest Cortex-M4 zienkiewicz stack; -Os bilinear 1,132 bytes, 1,148
+// with the fill inlined). On x86-64, render_tile's code then does not change with the fill's
+// (inlined, a change of the fill had cost zienkiewicz +0.2 % instructions in render_tile; out of
+// line it costs +0.01 %). Inlined otherwise (out of line it cost Cortex-M4 bilinear up to 2 % of
+// the modelled cycles at -O2).
 #if defined(__OPTIMIZE_SIZE__)
 inline constexpr bool fill_apart = true;
 #else
