@@ -29,9 +29,11 @@ struct ActiveSet {
   // Bit positions: pos(t) = t mod capacity, stepped with next() to avoid a division per test.
   // A capacity of 0 (a workspace without room for a bitmap) is valid for a window of 0.
   uint32_t pos(uint32_t t) const { return capacity ? t % capacity : 0; }
-  uint32_t next(uint32_t p) const { return p + 1 == capacity ? 0 : p + 1; }
+  uint32_t next(uint32_t p) const { return next(p, capacity); }
   bool test_at(uint32_t p) const { return (words[p / 32] >> (p % 32)) & 1u; }
-  void set_at(uint32_t p) { words[p / 32] |= 1u << (p % 32); }
+  // next and setting a bit on a capacity and bitmap held in locals (advance's loop).
+  static uint32_t next(uint32_t p, uint32_t capacity) { return p + 1 == capacity ? 0 : p + 1; }
+  static void set_at(uint32_t* words, uint32_t p) { words[p / 32] |= 1u << (p % 32); }
 
   // Calls f(t, w, span, p) for the live triangles of the window a word at a time, in order: bit i
   // of w (nonzero) is triangle t + i, triangles t .. t + span - 1 are in the window (span <= 32),
@@ -82,7 +84,7 @@ struct ActiveSet {
     uint32_t* const bits = words;
     const uint32_t n = layer->triangle_count, cap = capacity;
     bool fits = true;
-    for (uint32_t p = c < n ? pos(c) : 0; c < n; p = p + 1 == cap ? 0 : p + 1) {
+    for (uint32_t p = c < n ? pos(c) : 0; c < n; p = next(p, cap)) {
       int32_t top, bottom;
       row_extent(*layer, c, map, &top, &bottom);
       if (top > y1) break;
@@ -91,7 +93,7 @@ struct ActiveSet {
           fits = false;
           break;
         }
-        bits[p / 32] |= 1u << (p % 32);
+        set_at(bits, p);
       } else if (b == c) {
         ++b;
       }

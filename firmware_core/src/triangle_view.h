@@ -38,24 +38,28 @@ inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map
   tv->x[3] = tv->y[3] = 0;
 }
 
-// First and last pixel row whose sample points may lie in the triangle (of a v1 blob's layer).
-inline void row_extent(const BlobLayer& layer, uint32_t t, const Mapping& map, int32_t* top, int32_t* bottom) {
+// The domain (unmapped) y of triangle t's vertices (of a v1 blob's layer).
+__attribute__((always_inline)) inline void raw_ys(const BlobLayer& layer, uint32_t t, int32_t y[3]) {
   const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
-  const int32_t y0 = load_u16(layer.positions + 4 * size_t(load_u16(p)) + 2);
-  const int32_t y1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)) + 2);
-  const int32_t y2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)) + 2);
-  *top = position_fx::from_raw(map.y(min3(y0, y1, y2))).ceil_to_int();
-  *bottom = position_fx::from_raw(map.y(max3(y0, y1, y2))).floor_to_int();
+  y[0] = load_u16(layer.positions + 4 * size_t(load_u16(p)) + 2);
+  y[1] = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)) + 2);
+  y[2] = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)) + 2);
 }
 
-// The largest domain (unmapped) y of triangle t's vertices: its last row is at or below row y
-// exactly when this is at least map.first_y_at_least(y * 2^S).
+// First and last pixel row whose sample points may lie in the triangle.
+inline void row_extent(const BlobLayer& layer, uint32_t t, const Mapping& map, int32_t* top, int32_t* bottom) {
+  int32_t y[3];
+  raw_ys(layer, t, y);
+  *top = position_fx::from_raw(map.y(min3(y[0], y[1], y[2]))).ceil_to_int();
+  *bottom = position_fx::from_raw(map.y(max3(y[0], y[1], y[2]))).floor_to_int();
+}
+
+// The largest domain y of triangle t's vertices: its last row is at or below row y exactly when
+// this is at least map.first_y_at_least(y * 2^S).
 inline int32_t raw_max_y(const BlobLayer& layer, uint32_t t) {
-  const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
-  const int32_t y0 = load_u16(layer.positions + 4 * size_t(load_u16(p)) + 2);
-  const int32_t y1 = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)) + 2);
-  const int32_t y2 = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)) + 2);
-  return max3(y0, y1, y2);
+  int32_t y[3];
+  raw_ys(layer, t, y);
+  return max3(y[0], y[1], y[2]);
 }
 
 // Values of vertex v for `channels` channels starting at `first` (q8_8).
