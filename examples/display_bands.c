@@ -33,7 +33,7 @@ static void send_band(void* context, const ts_tile* band) {
 
 int main(int argc, char** argv) {
   ts_blob blob;
-  ts_params params = {0};
+  ts_params params = TS_PARAMS_INIT;
   uint32_t error_offset = 0;
   size_t band_bytes = 0, workspace_bytes = 0;
   int next_row = 0;

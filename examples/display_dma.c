@@ -38,7 +38,7 @@ static int send_band(void* context, const ts_tile* band) {
 
 int main(int argc, char** argv) {
   ts_blob blob;
-  ts_params params = {0};
+  ts_params params = TS_PARAMS_INIT;
   ts_buffers buffers;
   struct progress progress = {0, 0};
   uint32_t error_offset = 0;

@@ -31,7 +31,7 @@ static void send_band(void* context, const ts_tile* band) {
 
 int main(int argc, char** argv) {
   ts_blob blob;
-  ts_params params = {0};
+  ts_params params = TS_PARAMS_INIT;
   long pixels = 0;
   ts_status s = ts_open(kodim23_zoom.bytes, kodim23_zoom.size, &blob, NULL);
   if (s != TS_OK) {

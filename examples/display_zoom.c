@@ -39,7 +39,7 @@ static void send_band(void* context, const ts_tile* band) {
 
 int main(int argc, char** argv) {
   ts_blob blob;
-  ts_params params = {0};
+  ts_params params = TS_PARAMS_INIT;
   struct panel_view view = {0, 0, 0};
   size_t band_bytes = 0, workspace_bytes = 0;
   ts_status s = ts_open(kodim23_zoom.bytes, kodim23_zoom.size, &blob, NULL);

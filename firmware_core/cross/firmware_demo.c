@@ -23,7 +23,7 @@ static void send_to_display(void* context, const ts_tile* tile) {
 
 int main(void) {
   ts_blob blob;
-  ts_params params = {0};
+  ts_params params = TS_PARAMS_INIT;
   uint32_t sum = 0;
   if (ts_open(golden_blob, golden_blob_size, &blob, NULL) != TS_OK) return 1;
   params.tile_width = 32;

@@ -40,7 +40,18 @@ TS_SAME_STATUS(TS_STOPPED, stopped)
 using namespace tristream_c_api;
 
 
+// TS_PARAMS_INIT names every field: a field added to ts_params and not to the macro fails here
+// (-Werror=missing-field-initializers), and its default must be what convert reads as the default.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic error "-Wmissing-field-initializers"
+static constexpr ts_params params_init = TS_PARAMS_INIT;
+#pragma GCC diagnostic pop
+
 extern "C" {
+
+void ts_params_init(ts_params* params) {
+  if (params) *params = params_init;
+}
 
 ts_status ts_open(const void* bytes, size_t size, ts_blob* blob, uint32_t* error_offset) {
   if (!blob) return ts_status(core::Status::null_argument);

@@ -2,7 +2,6 @@
 /* A C program that renders a blob compiled in by tripack (-o demo_blob.c) through the C API,
    with static buffers only. Exit 0 when every tile arrived and every pixel was written. */
 #include <stdio.h>
-#include <string.h>
 
 #include "demo_blob.h"
 
@@ -38,8 +37,8 @@ int main(void) {
     fprintf(stderr, "ts_open: %s at byte %u\n", ts_status_text(s), (unsigned)offset);
     return 1;
   }
-  memset(&params, 0, sizeof params);
-  /* A zeroed ts_params names no format (TS_FORMAT_UNSET): refused, not rendered as some default. */
+  ts_params_init(&params);
+  /* The defaults name no format (TS_FORMAT_UNSET): refused, not rendered as some default. */
   s = ts_render(&blob, &params, tile_buffer, sizeof tile_buffer, workspace, sizeof workspace, sink, &c);
   if (s != TS_BAD_PARAMS || c.tiles != 0) {
     fprintf(stderr, "zeroed ts_params: expected TS_BAD_PARAMS, got %d (%s)\n", s, ts_status_text(s));

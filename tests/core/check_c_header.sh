@@ -21,7 +21,7 @@ static void sink(void* context, const ts_tile* tile) {
 
 int use_header(const void* bytes, size_t size) {
   ts_blob blob;
-  ts_params params;
+  ts_params params = TS_PARAMS_INIT;
   static uint8_t tile[16];
   static uint8_t work[64];
   const char* version = TRISTREAM_VERSION;

@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   uint8_t* bytes;
   ts_blob v1;
   ts_compressed_blob c;
-  ts_params p;
+  ts_params p = TS_PARAMS_INIT;
   int ok = 1;
   if (argc != 2 || !(in = fopen(argv[1], "rb"))) return 64;
   fseek(in, 0, SEEK_END);
@@ -90,7 +90,6 @@ int main(int argc, char** argv) {
   if (ts_open_compressed(demo_compressed, DEMO_COMPRESSED_BYTES, &c, NULL) != TS_OK) return 2;
   if (ts_open_compressed(bytes, (size_t)size, &c, NULL) != TS_BAD_MAGIC) return 3;
   if (ts_open_compressed(demo_compressed, DEMO_COMPRESSED_BYTES, &c, NULL) != TS_OK) return 2;
-  memset(&p, 0, sizeof p);
   p.format = TS_RGB565_BE;
   p.tile_width = p.tile_height = 32;
   ok &= check(&v1, &c, &p, 768, 512);

@@ -196,6 +196,53 @@ TEST_CASE("render parameters and buffers are checked") {
   CHECK(core::workspace_size(blob, bad, &work) == core::Status::bad_params);
 }
 
+TEST_CASE("TS_PARAMS_INIT and ts_params_init give the C++ defaults, and need only a format") {
+  // Garbage first: ts_params_init must write every field, not rely on zeroed memory.
+  ts_params from_function;
+  std::memset(&from_function, 0xA5, sizeof from_function);
+  ts_params_init(&from_function);
+  ts_params from_macro = TS_PARAMS_INIT;
+  ts_params zeroed;
+  std::memset(&zeroed, 0, sizeof zeroed);
+  CHECK(std::memcmp(&from_function, &zeroed, sizeof zeroed) == 0);
+  CHECK(std::memcmp(&from_macro, &zeroed, sizeof zeroed) == 0);
+  ts_params_init(nullptr);  // no-op, no crash
+
+  const auto bytes = sample_blob();
+  ts_blob blob;
+  REQUIRE(ts_open(bytes.data(), bytes.size(), &blob, nullptr) == TS_OK);
+  std::size_t tile = 0, work = 0;
+  CHECK(ts_tile_buffer_size(&blob, &from_function, &tile) == TS_BAD_PARAMS);  // no format chosen
+  from_function.format = TS_RGB888;
+  REQUIRE(ts_tile_buffer_size(&blob, &from_function, &tile) == TS_OK);
+  REQUIRE(ts_workspace_size(&blob, &from_function, &work) == TS_OK);
+  core::RenderParams defaults;  // the C++ defaults, format rgb888
+  const auto& b = *reinterpret_cast<const core::Blob*>(&blob);
+  std::size_t cxx_tile = 0, cxx_work = 0;
+  REQUIRE(core::tile_buffer_size(b, defaults, &cxx_tile) == core::Status::ok);
+  REQUIRE(core::workspace_size(b, defaults, &cxx_work) == core::Status::ok);
+  CHECK(tile == cxx_tile);
+  CHECK(work == cxx_work);
+  std::vector<std::uint8_t> tb(tile), ws(work), c_frame, cxx_frame;
+  auto collect = [](void* ctx, const ts_tile* t) {
+    auto* f = static_cast<std::vector<std::uint8_t>*>(ctx);
+    for (int y = 0; y < t->rect.y1 - t->rect.y0; ++y)
+      f->insert(f->end(), t->pixels + std::ptrdiff_t(y) * t->stride,
+                t->pixels + std::ptrdiff_t(y) * t->stride + (t->rect.x1 - t->rect.x0) * 3);
+  };
+  REQUIRE(ts_render(&blob, &from_function, tb.data(), tb.size(), ws.data(), ws.size(), collect, &c_frame) == TS_OK);
+  CHECK(c_frame.size() == std::size_t(b.width) * b.height * 3);
+  auto collect_cxx = [](void* ctx, const core::Tile* t) {
+    auto* f = static_cast<std::vector<std::uint8_t>*>(ctx);
+    for (int y = 0; y < t->rect.y1 - t->rect.y0; ++y)
+      f->insert(f->end(), t->pixels + std::ptrdiff_t(y) * t->stride,
+                t->pixels + std::ptrdiff_t(y) * t->stride + (t->rect.x1 - t->rect.x0) * 3);
+  };
+  REQUIRE(core::render(b, defaults, tb.data(), tb.size(), ws.data(), ws.size(), collect_cxx, &cxx_frame) ==
+          core::Status::ok);
+  CHECK(c_frame == cxx_frame);
+}
+
 TEST_CASE("the C interface renders the same pixels as the C++ one") {
   const auto bytes = sample_blob();
   ts_blob blob;

@@ -30,16 +30,13 @@ static unsigned char work[SYMBOL_WORKSPACE_MAX_BYTES];
 static void sink(void* context, const ts_tile* t) { (void)context; (void)t; }
 int main(void) {
   ts_blob blob;
-  ts_params p;
+  ts_params p = TS_PARAMS_INIT;
   ts_status s = ts_open(SYMBOL.bytes, SYMBOL.size, &blob, 0);
   p.output_width = SYMBOL.output_width;
   p.output_height = SYMBOL.output_height;
-  p.viewport.x0 = p.viewport.y0 = p.viewport.x1 = p.viewport.y1 = 0;
   p.tile_width = SYMBOL.tile_width;
   p.tile_height = SYMBOL.tile_height;
   p.format = SYMBOL.format;
-  p.dither = 0;
-  p.background[0] = p.background[1] = p.background[2] = 0;
   if (s == TS_OK) s = ts_render(&blob, &p, tile, sizeof tile, work, sizeof work, sink, 0);
   if (s != TS_OK) printf("%s\n", ts_status_text(s));
   return s == TS_OK ? 0 : 1;

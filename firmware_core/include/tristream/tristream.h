@@ -118,6 +118,15 @@ typedef struct ts_params {
   int fit;          /* TS_FIT_STRETCH (0), TS_FIT_INSIDE or TS_FIT_FILL; another value is refused */
 } ts_params;
 
+/* Every field of a ts_params at its default: the blob's size, the whole output, tiles of the whole
+   viewport, no format yet (set one: TS_FORMAT_UNSET is refused), no dithering, a black background,
+   rows of the tile buffer's width, stretched. Start every ts_params from it, by
+   `ts_params p = TS_PARAMS_INIT;` or by ts_params_init(&p), then set the fields you need: a
+   ts_params left uninitialised renders or fails at random, and one filled field by field misses
+   the fields a later version adds. Both are kept in step with the struct by the core's build. */
+#define TS_PARAMS_INIT {0, 0, {0, 0, 0, 0}, 0, 0, TS_FORMAT_UNSET, 0, {0, 0, 0}, 0, TS_FIT_STRETCH}
+void ts_params_init(ts_params* params);
+
 /* Validates `size` bytes and fills `blob`. On failure *error_offset (if not null) is the byte
    offset of the offending field. Returns TS_OK or a status code. The blob is read in place by
    every later call: its bytes must stay where they are, unchanged, while `blob` is used. */

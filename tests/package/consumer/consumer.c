@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
     fprintf(stderr, "consumer: %s: %s at byte %u\n", argv[1], ts_status_text(s), (unsigned)offset);
     return 65;
   }
-  memset(&params, 0, sizeof params);
+  ts_params_init(&params);
   params.format = TS_RGB565_BE;
   params.tile_height = 16;
   if (ts_tile_buffer_size(&blob, &params, &tile_bytes) != TS_OK ||
