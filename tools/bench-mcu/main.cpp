@@ -29,6 +29,7 @@
 #include "core_bridge/pack.h"
 #include "io/atomic_file.h"
 #include "m4_emulator.h"
+#include "panel_table.h"
 #include "tile_hash.h"
 #include "tristream/render.h"
 
@@ -295,6 +296,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
     return p;
   };
   std::vector<Row> rows;
+  std::vector<PanelRow> panel_rows;  // -O2 without dithering: what a display gets
   bool all_equal = true, stacks_within = true;
   for (const std::string& mesh_name : meshes) {
     const Triangulation tri = make_mesh(mesh_name);
@@ -436,6 +438,8 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
               std::fflush(stdout);
               rows.push_back({mesh_name, out_name, t.name, method, opt, p.dither != 0, is_compressed,
                               per(c.cycles, pixels), o.stack_bytes});
+              if (opt == "O2" && !p.dither)
+                panel_rows.push_back({mesh_name, out_name, t.name, method, kind, ow, oh, c.cycles});
             }
     }
   }
@@ -443,6 +447,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
   for (const Row& r : rows)
     if (std::find(out_names.begin(), out_names.end(), r.output) == out_names.end()) out_names.push_back(r.output);
   print_summary(rows, meshes, out_names, tilings);
+  print_panel_table(panel_rows);
   for (const std::string& method : methods) {
     std::uint32_t most = 0, most_compressed = 0;
     for (const Row& r : rows)
@@ -505,7 +510,7 @@ int main(int argc, char** argv) {
   CLI::App* run_cmd = app.add_subcommand("run", "Benchmark a matrix of configurations");
   std::string elf_dir;
   std::vector<std::string> meshes = mesh_names(), methods = {"bilinear", "zienkiewicz"}, opts = {"O2", "Os"},
-                           dithers = {"off", "on"}, outputs = {"native", "320x240"},
+                           dithers = {"off", "on"}, outputs = {"native", "320x240", "240x240"},
                            tilings = {"tiles32", "bands16", "frame"}, blob_kinds = {"v1", "compressed"};
   bool check_counts = false, check_stack = false;
   int profile = 0;
