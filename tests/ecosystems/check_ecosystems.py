@@ -267,6 +267,11 @@ def check_arduino(root, work, tripack):
             rel = os.path.relpath(os.path.join(d, f), os.path.join(root, "firmware_core/include"))
             if not os.path.isfile(os.path.join(src, rel)):
                 fail(where, f"the assembled src/ lacks the public header {rel}")
+    # The builder finds the library that provides an #include by the headers at the top of src/:
+    # there only tristream.h, so that no private header (shader.h, ...) shadows another library's.
+    top = sorted(f for f in os.listdir(src) if os.path.isfile(os.path.join(src, f)))
+    if top != ["tristream.h"]:
+        fail(where, f"the top of the assembled src/ holds {top}, expected tristream.h alone")
     examples = os.path.join(lib, "examples")
     sketches = sorted(os.listdir(examples))
     for name in sketches:
@@ -274,9 +279,11 @@ def check_arduino(root, work, tripack):
             fail(where, f"examples/{name} has no {name}.ino (the builder's sketch layout)")
     if not sketches:
         fail(where, "has no example sketch")
-    # The library in a libraries folder, built by arduino-builder for each example sketch: as the
-    # platform's default C++ (gnu++11) it must fail with config.h's message; with
-    # compiler.cpp.extra_flags=-std=gnu++17 (what platform.local.txt sets) it must build.
+    # The library in a libraries folder, built by arduino-builder for each example sketch on a
+    # platform whose C++ defaults to gnu++11 (as Arduino-ESP32 2.x): as shipped, the sketch's
+    # build_opt.h gives -std=gnu++17; without it the build must stop at config.h's #error; and
+    # without it but with compiler.cpp.extra_flags=-std=gnu++17 (what platform.local.txt sets) it
+    # must build again.
     hardware = os.path.join(os.path.dirname(os.path.abspath(__file__)), "arduino_platform")
     # Debian's arduino-builder keeps its own platform.txt (the ctags recipe of sketch preprocessing)
     # in share/arduino-builder beside its bin/; the IDE passes that folder as a hardware folder.
@@ -286,34 +293,43 @@ def check_arduino(root, work, tripack):
     os.symlink(lib, os.path.join(libraries, "tristream"))
     tools = os.path.join(work, "tools")
     os.makedirs(tools)
+    expected = sorted(os.path.basename(p) for p in core_sources(root))
     for name in sketches:
-        sketch = os.path.join(examples, name, name + ".ino")
-
-        def build(extra, tag):
+        def build(sketch_dir, extra, tag):
             path = os.path.join(work, f"build-{name}-{tag}")
             os.makedirs(path)
             cmd = [builder, "-compile", "-hardware", builtin, "-hardware", hardware, "-tools", tools,
-                   "-libraries", libraries,
-                   "-fqbn", "tristream:cortexm4:m4", "-build-path", path, "-warnings", "all",
-                   f"-prefs=build.extra_flags={' '.join(USER_DEFINES)}"] + extra + [sketch]
+                   "-libraries", libraries, "-fqbn", "tristream:cortexm4:m4", "-build-path", path,
+                   "-warnings", "all", f"-prefs=build.extra_flags={' '.join(USER_DEFINES)}"] + extra + \
+                [os.path.join(sketch_dir, name + ".ino")]
             return cmd, run(cmd), path
 
-        cmd, result, _ = build([], "gnu++11")
+        def expect_built(cmd, result, path, how):
+            if result.returncode != 0:
+                fail(where, f"arduino-builder failed on examples/{name} {how}:\n{' '.join(cmd)}\n"
+                     f"{result.stdout[-6000:]}")
+            if not os.path.isfile(os.path.join(path, name + ".ino.elf")):
+                fail(where, f"arduino-builder wrote no {name}.ino.elf {how}")
+            built = sorted(f[:-2] for d, _, files in os.walk(os.path.join(path, "libraries")) for f in files
+                           if f.endswith(".o"))
+            if built != expected:
+                fail(where, f"arduino-builder compiled {built} of the library {how}, expected {expected}")
+
+        expect_built(*build(os.path.join(examples, name), [], "as shipped"), "as shipped (its build_opt.h)")
+        bare = os.path.join(work, "without-build-opt", name)
+        shutil.copytree(os.path.join(examples, name), bare)
+        if os.path.exists(os.path.join(bare, "build_opt.h")):
+            os.remove(os.path.join(bare, "build_opt.h"))
+        cmd, result, _ = build(bare, [], "gnu++11")
         error = first_error(result.stdout)
         if result.returncode == 0 or error is None or CPP17_ERROR not in error:
-            fail(where, f"as gnu++11 arduino-builder should stop at config.h's #error, got:\n{result.stdout[-3000:]}")
-        cmd, result, path = build(["-prefs=compiler.cpp.extra_flags=-std=gnu++17"], "gnu++17")
-        if result.returncode != 0:
-            fail(where, f"arduino-builder failed on {name}:\n{' '.join(cmd)}\n{result.stdout[-6000:]}")
-        if not os.path.isfile(os.path.join(path, name + ".ino.elf")):
-            fail(where, f"arduino-builder wrote no {name}.ino.elf")
-        built = sorted(f[:-2] for d, _, files in os.walk(os.path.join(path, "libraries")) for f in files
-                       if f.endswith(".o"))
-        expected = sorted(os.path.basename(p) for p in core_sources(root))
-        if built != expected:
-            fail(where, f"arduino-builder compiled {built} of the library, expected {expected}")
-        print(f"arduino: arduino-builder built examples/{name} with the library's {len(built)} sources "
-              f"(gnu++11: config.h's #error; gnu++17: linked)")
+            fail(where, f"without build_opt.h, as gnu++11, arduino-builder should stop at config.h's #error, got:\n"
+                 f"{result.stdout[-3000:]}")
+        expect_built(*build(bare, ["-prefs=compiler.cpp.extra_flags=-std=gnu++17"], "extra-flags"),
+                     "with compiler.cpp.extra_flags=-std=gnu++17")
+        print(f"arduino: arduino-builder built examples/{name} with the library's {len(expected)} sources "
+              f"(with its build_opt.h: linked; without, as gnu++11: config.h's #error; with "
+              f"compiler.cpp.extra_flags=-std=gnu++17: linked)")
 
 
 # --- ESP-IDF ----------------------------------------------------------------------------------------

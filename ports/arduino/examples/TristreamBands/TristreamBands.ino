@@ -3,7 +3,9 @@
 // a sketch hands each band to its display driver; here it folds the pixels into a checksum, printed
 // with the time the frame took.
 //
-// photo.c and photo.h come from tripack (the release folder holds them for the demo picture):
+// The library is C++17: build_opt.h passes -std=gnu++17 on Arduino-ESP32, whose default is older
+// (README.md, "Firmware ecosystems"). photo.c and photo.h come from tripack (the release folder
+// holds them for the demo picture):
 //   tripack photo.tri -o photo.c --symbol photo --width 320 --height 240 --tile-width 0 --tile-height 16
 #include <tristream.h>
 
