@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Installs the Debian packages a task needs, and only those that are missing.
-# Usage: tools/install-deps.sh [build|fuzz|cross|bench|mcu|experiments|browser|all]...   (default: build)
+# Usage: tools/install-deps.sh [build|fuzz|cross|bench|mcu|experiments|ecosystems|browser|all]...   (default: build)
 # browser: headless Chromium, for the check of the report page (make experiments-quick).
+# ecosystems: the Cortex-M4 compiler, arduino-builder and PyYAML of tests/ecosystems (make test).
 set -euo pipefail
 
 declare -A groups=(
@@ -12,6 +13,7 @@ declare -A groups=(
   [bench]="valgrind"
   [mcu]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi libunicorn-dev libcapstone-dev pkg-config"
   [experiments]="python3 python3-numpy python3-scipy python3-matplotlib python3-pil python3-tqdm"
+  [ecosystems]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi python3 python3-yaml arduino-builder"
   [browser]="chromium"
 )
 
@@ -22,7 +24,7 @@ for group in "${@:-build}"; do
   elif [ -n "${groups[$group]:-}" ]; then
     wanted+=(${groups[$group]})
   else
-    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench, mcu, experiments, browser or all)" >&2
+    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench, mcu, experiments, ecosystems, browser or all)" >&2
     exit 64
   fi
 done

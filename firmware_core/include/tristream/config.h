@@ -88,7 +88,18 @@
 /* The core reads the blob in place on every render: its bytes must not change between ts_open
    (open_blob), which validates them all, and the last render. */
 
-#if defined(__cplusplus) && __cplusplus >= 201703L
+#endif
+
+/* The typed constants, for the core's C++ headers. Their guard is their own, so that a C++ header
+   reaches them even after tristream.h took the macros alone (it defines TS_CONFIG_MACROS_ONLY
+   around its include: C and C++98 callers of the C API never see this part). Every source of the
+   core comes here before any other line that needs C++17, so in an older mode its first error is
+   the #error below, which names the fix (tests/ecosystems checks both). */
+#if defined(__cplusplus) && !defined(TS_CONFIG_MACROS_ONLY) && !defined(TRISTREAM_CONFIG_CXX)
+#define TRISTREAM_CONFIG_CXX
+#if __cplusplus < 201703L
+#error "tristream's core needs C++17: compile it with -std=gnu++17 (README.md, 'Firmware ecosystems')"
+#endif
 namespace tristream::core::config {
 
 inline constexpr int subpixel_bits = TS_SUBPIXEL_BITS;
@@ -110,6 +121,4 @@ static_assert(gradient_frac_bits >= 0 && gradient_frac_bits <= 16, "gradient fra
 static_assert(int64_t(max_gradient) << gradient_frac_bits < (int64_t(1) << 31), "gradients must fit int32");
 
 }  /* namespace tristream::core::config */
-#endif
-
 #endif

@@ -7,7 +7,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The configuration's macros alone: this header stays C89 and C++98 (config.h). */
+#define TS_CONFIG_MACROS_ONLY
 #include "tristream/config.h"
+#undef TS_CONFIG_MACROS_ONLY
 
 #ifdef __cplusplus
 extern "C" {
