@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Lists the source files (C, C++, assembly, linker scripts, CMake, shell, Python, Makefiles; scripts by their #! line) tracked by git that lack a
 # "SPDX-License-Identifier: MIT" line in their first five lines, and exits 1 if there is any.
-# Data, documentation and generated files are not checked.
+# Data, documentation and generated files are not checked, nor Arduino's build_opt.h (compiler options).
 # Usage: tools/check-spdx.sh [REPO_DIR]   (default: the repository this script is in)
 set -euo pipefail
 root=$(cd "${1:-$(dirname "$0")/..}" && pwd)
@@ -12,6 +12,7 @@ missing=0
 checked=0
 while IFS= read -r -d '' file; do
   case "$file" in
+    */build_opt.h) continue ;;  # Arduino's file of compiler options: no line may be a comment
     *.c | *.h | *.cpp | *.hpp | *.cc | *.S | *.ld | *.cmake | */CMakeLists.txt | CMakeLists.txt | *.sh | *.py | Makefile | */Makefile | *.mk) ;;
     *)  # scripts without an extension, such as .ci/run, by their #! line
       [ -f "$file" ] && head -n 1 "$file" | grep -Eq '^#!.*(sh|python)' || continue ;;
