@@ -21,6 +21,7 @@ enum ExitCode : int {
   exit_data = 65,
   exit_noinput = 66,
   exit_software = 70,
+  exit_oserr = 71,  // out of memory
   exit_cantcreate = 73,
   exit_ioerr = 74,  // results could not be written to stdout
 };

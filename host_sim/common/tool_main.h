@@ -9,8 +9,10 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <new>
 #include <string>
 
+#include "common/activity.h"
 #include "common/errors.h"
 #include "tristream/version.h"
 
@@ -53,6 +55,16 @@ int run_tool(const char* tool, CLI::App& app, int argc, char** argv, Body&& body
   } catch (const OutputError& e) {
     std::fprintf(stderr, "%s: %s\n", tool, e.what());
     return exit_cantcreate;
+  } catch (const std::bad_alloc&) {
+    // No allocation here: the activity's text is already there; fputs does not allocate.
+    std::fprintf(stderr, "%s: out of memory", tool);
+    const std::string& what = activity_at_failure.empty() ? current_activity : activity_at_failure;
+    if (!what.empty()) {
+      std::fputs(" while ", stderr);
+      std::fputs(what.c_str(), stderr);
+    }
+    std::fputs(" (README.md gives each tool's memory per vertex and per pixel)\n", stderr);
+    return exit_oserr;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: internal error: %s\n", tool, e.what());
     return exit_software;

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <string>
 
+#include "common/activity.h"
 #include "common/errors.h"
 #include "core_bridge/pack.h"
 
@@ -137,6 +138,7 @@ Image frame_to_image(const CoreFrame& f) {
 
 CoreFrame render_core_frame(const Triangulation& tri, std::string_view method, const CoreOptions& options,
                             std::string_view name) {
+  const Activity activity("rendering " + std::string(name) + " with the core");
   const std::vector<std::uint8_t> blob = pack_blob(tri, parse_core_method(method), name);
   CoreRenderer r(blob, options, name);
   CoreFrame f;

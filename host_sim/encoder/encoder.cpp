@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "common/activity.h"
 #include "common/errors.h"
 #include "encoder/greedy.h"
 #include "encoder/least_squares.h"
@@ -149,6 +150,8 @@ Image encoded_original(const Image& image, const Triangulation& tri) {
 
 EncodeResult encode(const Image& image, const EncodeOptions& o) {
   check_options(image, o);
+  const Activity activity("encoding a " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                          " image");
   const auto start = std::chrono::steady_clock::now();
   const bool grey = image.channels == 1 || o.grey;
   Triangulation tri;

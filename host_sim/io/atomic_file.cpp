@@ -36,11 +36,16 @@ extern "C" void remove_temporaries_and_die(int sig) {
   ::raise(sig);
 }
 
-// Installs the handler for each signal that still has its default action (a signal the caller
-// ignores or handles is left alone). Checked on every file: cheap, and it sees a disposition
-// the program changed meanwhile.
+// The signals whose default action ends the program while a temporary may exist.
+constexpr int ending_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+
+// Installs the handler for each ending signal that still has its default action (a signal the
+// caller ignores or handles is left alone), and ignores SIGXFSZ: past a file-size limit
+// (ulimit -f) write then fails with EFBIG, which is reported and cleaned up like a full disk
+// instead of killing the tool with its temporary left behind. Checked on every file: cheap, and
+// it sees a disposition the program changed meanwhile.
 void install_handlers() {
-  for (int sig : {SIGINT, SIGTERM}) {
+  for (int sig : ending_signals) {
     struct sigaction old {};
     if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;
     struct sigaction sa {};
@@ -48,6 +53,23 @@ void install_handlers() {
     sigemptyset(&sa.sa_mask);
     ::sigaction(sig, &sa, nullptr);
   }
+  struct sigaction old {};
+  if (::sigaction(SIGXFSZ, nullptr, &old) == 0 && old.sa_handler == SIG_DFL) {
+    struct sigaction ign {};
+    ign.sa_handler = SIG_IGN;
+    sigemptyset(&ign.sa_mask);
+    ::sigaction(SIGXFSZ, &ign, nullptr);
+  }
+}
+
+// The temporary's name beside the target: the target's name, cut so that the suffix
+// ".tmp.XXXXXX" keeps it within NAME_MAX (a valid target name of up to NAME_MAX bytes can be
+// written), and never cut inside a UTF-8 sequence.
+std::string temporary_name(const std::string& target_name) {
+  constexpr std::size_t suffix = sizeof ".tmp.XXXXXX" - 1;
+  std::size_t keep = std::min(target_name.size(), std::size_t(NAME_MAX) - suffix);
+  while (keep > 0 && keep < target_name.size() && (static_cast<unsigned char>(target_name[keep]) & 0xC0) == 0x80) --keep;
+  return target_name.substr(0, keep) + ".tmp.XXXXXX";
 }
 
 int claim_slot(const std::string& tmp) {
@@ -104,14 +126,13 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path), target_(path) {
   }
   const fs::path target(target_);
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::string tmpl = (dir / (target.filename().string() + ".tmp.XXXXXX")).string();
+  std::string tmpl = (dir / temporary_name(target.filename().string())).string();
   install_handlers();
   // Signals are blocked while the name is created and registered, so no handler runs between
   // the two and misses the file.
   sigset_t block, old;
   sigemptyset(&block);
-  sigaddset(&block, SIGINT);
-  sigaddset(&block, SIGTERM);
+  for (int sig : ending_signals) sigaddset(&block, sig);
   ::sigprocmask(SIG_BLOCK, &block, &old);
   fd_ = ::mkostemp(tmpl.data(), O_CLOEXEC);
   const int e = errno;

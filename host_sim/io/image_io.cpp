@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "common/activity.h"
 #include "common/errors.h"
 #include "io/atomic_file.h"
 #include "io/limits.h"
@@ -17,6 +18,7 @@
 namespace tristream {
 
 Image read_image(const std::string& path, std::uint64_t max_pixels) {
+  const Activity activity("reading " + path);
   const std::string bytes = read_file(path);
   int w = 0, h = 0, n = 0;
   if (!stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h, &n))

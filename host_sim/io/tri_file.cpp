@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "common/activity.h"
 #include "common/errors.h"
 #include "geometry/delaunay.h"
 #include "geometry/mesh_check.h"
@@ -315,7 +316,10 @@ Triangulation parse_tri(std::string_view text, const std::string& source_name) {
   return tri;
 }
 
-Triangulation read_tri_file(const std::string& path) { return parse_tri(read_file(path), path); }
+Triangulation read_tri_file(const std::string& path) {
+  const Activity activity("reading " + path);
+  return parse_tri(read_file(path), path);
+}
 
 std::string format_tri(const Triangulation& tri) {
   std::string out = "tri 1\n";

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "common/activity.h"
 #include "common/errors.h"
 #include "io/limits.h"
 #include "model/color.h"
@@ -51,6 +52,7 @@ Field render_fitted(const Triangulation& tri, const MethodInfo& method, const Re
 Field render_reference_field(const Triangulation& tri, const MethodInfo& method, const RenderOptions& options) {
   const int w = options.width > 0 ? options.width : tri.width;
   const int h = options.height > 0 ? options.height : tri.height;
+  const Activity activity("rendering " + std::to_string(w) + " x " + std::to_string(h) + " pixels (reference)");
   if (options.fit != Fit::stretch) {
     if (w < 2 || h < 2 || tri.width < 2 || tri.height < 2)
       throw UsageError("a fit needs an output and a triangulation of at least 2 x 2 pixels");

@@ -3,9 +3,11 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <climits>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -129,13 +131,15 @@ TEST_CASE("an abandoned file leaves the destination as it was and no temporary f
   CHECK(dir.entries() == 1);
 }
 
-TEST_CASE("SIGTERM or SIGINT during a write removes the temporary file") {
-  for (int sig : {SIGTERM, SIGINT}) {
+TEST_CASE("SIGTERM, SIGINT, SIGHUP or SIGQUIT during a write removes the temporary file") {
+  for (int sig : {SIGTERM, SIGINT, SIGHUP, SIGQUIT}) {
     TempDir dir;
     const std::string out = dir / "out.png";
     const pid_t child = ::fork();
     REQUIRE(child >= 0);
     if (child == 0) {
+      const struct rlimit no_core {0, 0};
+      ::setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT's default action dumps core
       ::signal(sig, SIG_DFL);
       AtomicFile f(out);
       f.write("partial");
@@ -148,6 +152,54 @@ TEST_CASE("SIGTERM or SIGINT during a write removes the temporary file") {
     CHECK(WTERMSIG(status) == sig);
     CHECK(dir.entries() == 0);
   }
+}
+
+TEST_CASE("a file-size limit fails the write (EFBIG) instead of killing the program") {
+  TempDir dir;
+  const std::string out = dir / "out.bin";
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    ::signal(SIGXFSZ, SIG_DFL);
+    const struct rlimit limit {4096, 4096};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      write_file_atomically(out, std::string(10000, 'x'));
+    } catch (const OutputError& e) {
+      ::_exit(std::string(e.what()).find("File too large") != std::string::npos ? 3 : 4);
+    }
+    ::_exit(5);
+  }
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  REQUIRE(WIFEXITED(status));  // not killed by SIGXFSZ
+  CHECK(WEXITSTATUS(status) == 3);
+  CHECK(dir.entries() == 0);
+}
+
+TEST_CASE("an output name of NAME_MAX bytes is written: the temporary's name is cut to fit") {
+  TempDir dir;
+  for (std::size_t n : {std::size_t(244), std::size_t(245), std::size_t(NAME_MAX)}) {
+    const std::string out = dir / std::string(n, 'n');
+    {
+      AtomicFile f(out);
+      f.write("x");
+      CHECK(fs::path(f.temporary_path()).filename().string().size() <= NAME_MAX);
+      CHECK(fs::path(f.temporary_path()).parent_path() == dir.path);
+      f.commit();
+    }
+    CHECK(slurp(out) == "x");
+    fs::remove(out);
+  }
+  // A name of multi-byte characters is cut at a character's boundary.
+  std::string utf8 = "a";  // then U+00E9 (two bytes) up to NAME_MAX: the cut falls inside one
+  while (utf8.size() + 2 <= NAME_MAX) utf8 += "\xc3\xa9";
+  AtomicFile f(dir / utf8);
+  const std::string tmp_name = fs::path(f.temporary_path()).filename().string();
+  const std::string kept = tmp_name.substr(0, tmp_name.size() - std::string(".tmp.XXXXXX").size());
+  CHECK(kept.size() % 2 == 1);
+  CHECK(kept.size() + 1 == NAME_MAX - std::string(".tmp.XXXXXX").size());
+  CHECK(utf8.compare(0, kept.size(), kept) == 0);
 }
 
 TEST_CASE("read_file refuses directories, FIFOs and files over the limit") {
