@@ -39,17 +39,16 @@ done
 no_temporaries
 
 # Memory that runs out: exit 71 and the step that needed it. A 5000 x 5000 reference render needs
-# more than 500 MB; the process gets 300 MB of address space (under AddressSanitizer, which
-# reserves far more address space, its allocator refuses blocks over 100 MB instead).
-oom() {
-  if [ -n "$sanitized" ]; then
-    ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}allocator_may_return_null=1:max_allocation_size_mb=100 "$@"
-  else
-    (ulimit -v 300000; exec "$@")
-  fi
-}
-expect 71 "out of memory while rendering 5000 x 5000 pixels" oom "$bin/trisim" render "$tri" --method bilinear \
-  --width 5000 --height 5000 -o "$tmp/big.png"
-no_temporaries
-check "no output after running out of memory" test ! -e "$tmp/big.png"
+# more than 500 MB; the process gets 300 MB of address space. Not under AddressSanitizer: it
+# reserves terabytes of address space, and its operator new reports and aborts instead of
+# throwing std::bad_alloc.
+if [ -n "$sanitized" ]; then
+  echo "skipped: out of memory under AddressSanitizer (its operator new aborts instead of throwing)"
+else
+  expect 71 "out of memory while rendering 5000 x 5000 pixels" \
+    bash -c 'ulimit -v 300000; exec "$@"' oom "$bin/trisim" render "$tri" --method bilinear \
+    --width 5000 --height 5000 -o "$tmp/big.png"
+  no_temporaries
+  check "no output after running out of memory" test ! -e "$tmp/big.png"
+fi
 finish
