@@ -37,7 +37,7 @@ std::uint32_t DelaunayBuilder::locate(const Point& p, std::uint32_t hint) const 
   if (t >= tri_.size() || !is_live(t)) t = last_;
   if (is_ghost(t)) t = tri_[t].n[0];
   std::uint32_t came_from = no_triangle;
-  for (;;) {
+  for (;; ++work_) {
     // Stochastic visibility walk (Devillers, Pion, Teillaud 2002): a pseudo-random first
     // edge guarantees termination on any triangulation; the state makes it deterministic.
     walk_state_ ^= walk_state_ << 13;
@@ -115,6 +115,7 @@ std::uint32_t DelaunayBuilder::insert(const Point& p, std::uint32_t hint) {
       const std::uint32_t u = tri_[t].n[e];
       if (mark_[u] == in) continue;
       if (mark_[u] != out) {
+        ++work_;
         if (in_conflict(u, p)) {
           mark_[u] = in;
           stack_.push_back(u);
@@ -203,16 +204,35 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y) {
   return d;
 }
 
+// The round of point i in a biased randomised insertion order (Amenta, Choi and Rote 2003):
+// round r of `rounds` holds about half of the points not in rounds before it, chosen by a hash
+// of the index (SplitMix64's finaliser), so the order is the same on every run and machine.
+int insertion_round(std::uint64_t i, int rounds) {
+  std::uint64_t z = i + 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  int zeros = 0;  // trailing zero bits: 0 with probability 1/2, 1 with 1/4, ...
+  while (zeros < rounds - 1 && (z & 1) == 0) {
+    z >>= 1;
+    ++zeros;
+  }
+  return rounds - 1 - zeros;  // the last round (about half the points) is rounds - 1
+}
+
 }  // namespace
 
-std::vector<Triangle> delaunay_triangulation(std::span<const Point> points) {
+std::vector<Triangle> delaunay_triangulation(std::span<const Point> points, std::uint64_t* work) {
   const std::size_t n = points.size();
   if (n < 3) return {};
   std::size_t third = 2;
   while (third < n && orient2d(points[0], points[1], points[third]) == 0) ++third;
   if (third == n) return {};
 
-  // Insertion in Hilbert order keeps each walk short.
+  // Rounds of growing random subsets, each in Hilbert order: the random rounds bound the
+  // expected work of every insertion (a plain Hilbert order is quadratic on points along a few
+  // lines: each row's points can meet a fan of the other row's), the Hilbert order within a
+  // round keeps each walk short.
   double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
   for (const Point& p : points) {
     x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
@@ -220,13 +240,15 @@ std::vector<Triangle> delaunay_triangulation(std::span<const Point> points) {
   }
   const double sx = x1 > x0 ? 65535.0 / (x1 - x0) : 0.0;
   const double sy = y1 > y0 ? 65535.0 / (y1 - y0) : 0.0;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> order;
+  int rounds = 1;
+  while (rounds < 40 && (std::size_t(1) << rounds) < n / 8) ++rounds;  // the first round: about 8 points
+  std::vector<std::pair<std::pair<int, std::uint64_t>, std::uint32_t>> order;
   order.reserve(n);
   for (std::size_t i = 2; i < n; ++i) {
     if (i == third) continue;
     const auto hx = std::uint32_t(std::clamp((points[i].x - x0) * sx, 0.0, 65535.0));
     const auto hy = std::uint32_t(std::clamp((points[i].y - y0) * sy, 0.0, 65535.0));
-    order.push_back({hilbert_index(hx, hy), std::uint32_t(i)});
+    order.push_back({{insertion_round(i, rounds), hilbert_index(hx, hy)}, std::uint32_t(i)});
   }
   std::sort(order.begin(), order.end());
 
@@ -237,6 +259,7 @@ std::vector<Triangle> delaunay_triangulation(std::span<const Point> points) {
     const std::uint32_t v = builder.insert(points[i]);
     if (v == input_index.size()) input_index.push_back(i);  // else a duplicate: not a vertex
   }
+  if (work) *work = builder.work();
   std::vector<Triangle> triangles = builder.triangles();
   for (Triangle& t : triangles)
     for (std::uint32_t& v : t.v) v = input_index[v];

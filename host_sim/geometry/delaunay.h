@@ -17,8 +17,10 @@ namespace tristream {
 // into `points`, every triangle with orient2d > 0 (the Mesh winding). Cocircular input
 // (lattices) gets one valid Delaunay triangulation, the same on every run. Every point is a
 // vertex; the triangles tile the convex hull. Empty when there are fewer than three points
-// or all are collinear. Expected O(n log n) time.
-std::vector<Triangle> delaunay_triangulation(std::span<const Point> points);
+// or all are collinear. Expected O(n log n) time on any input, points on a few lines included:
+// the insertion order is biased-randomised (rounds of growing random subsets, each in Hilbert
+// order), from a fixed seed. `work`, when given, receives the builder's work() at the end.
+std::vector<Triangle> delaunay_triangulation(std::span<const Point> points, std::uint64_t* work = nullptr);
 
 // An incremental Delaunay triangulation. Triangles live in slots; a slot freed by an
 // insertion is reused by a later one. Besides the solid triangles it keeps one ghost
@@ -62,6 +64,9 @@ class DelaunayBuilder {
   std::uint32_t neighbour(std::uint32_t t, int e) const { return tri_[t].n[e]; }
 
   std::size_t solid_count() const { return solid_count_; }
+  // Steps of point location plus triangles tested for conflict, over all insertions so far: a
+  // count of the work done, proportional to the time and the same on every machine.
+  std::uint64_t work() const { return work_; }
   // The live solid triangles in slot order.
   std::vector<Triangle> triangles() const;
 
@@ -81,6 +86,7 @@ class DelaunayBuilder {
   std::size_t solid_count_ = 0;
   std::uint32_t last_ = 0;  // a live slot, the default start of point location
   mutable std::uint64_t walk_state_ = 0x9E3779B97F4A7C15ull;  // deterministic walk choices
+  mutable std::uint64_t work_ = 0;
   // Scratch of insert(); destroyed_ and created_ also answer destroyed() and created().
   std::vector<std::uint32_t> destroyed_, created_, stack_;
   struct BoundaryEdge {

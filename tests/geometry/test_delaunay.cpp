@@ -196,6 +196,53 @@ TEST_CASE("Delaunay of collinear rows", "[delaunay]") {
   }
 }
 
+// Work (walk steps and conflict tests, DelaunayBuilder::work) for n points and for 4n: an
+// O(n log n) triangulation grows about 4.3 times, a quadratic one 16 times.
+template <class Make>
+double work_growth(Make make, int n) {
+  std::uint64_t small = 0, large = 0;
+  const std::vector<Point> a = make(n), b = make(4 * n);
+  const auto ta = delaunay_triangulation(a, &small);
+  const auto tb = delaunay_triangulation(b, &large);
+  CHECK(!ta.empty());
+  CHECK(!tb.empty());
+  return double(large) / double(small);
+}
+
+TEST_CASE("Delaunay of points on a few lines grows in O(n log n) work", "[delaunay]") {
+  auto rows = [](int lines) {
+    return [lines](int n) {
+      std::vector<Point> pts;
+      for (int i = 0; i < n; ++i) pts.push_back({double(i / lines), double(i % lines)});
+      return pts;
+    };
+  };
+  auto random = [](int n) {
+    std::vector<Point> pts;
+    std::uint64_t s = 12345;
+    for (int i = 0; i < n; ++i) {
+      s = s * 6364136223846793005ull + 1442695040888963407ull;
+      pts.push_back({double((s >> 33) % 65536), double((s >> 17) % 65536)});
+    }
+    return pts;
+  };
+  auto fan = [](int n) {  // one row and a point above its middle: every triangle shares it
+    std::vector<Point> pts;
+    for (int i = 0; i < n - 1; ++i) pts.push_back({double(i), 0});
+    pts.push_back({double(n / 2), 1e6});
+    return pts;
+  };
+  const int n = 4000;
+  CHECK(work_growth(rows(2), n) < 5.0);
+  CHECK(work_growth(rows(3), n) < 5.0);
+  CHECK(work_growth(rows(7), n) < 5.0);
+  CHECK(work_growth(random, n) < 5.0);
+  CHECK(work_growth(fan, n) < 5.0);
+  // The two-row lattice is still triangulated right.
+  const std::vector<Point> two = rows(2)(2000);
+  check_delaunay(two, delaunay_triangulation(two), true);
+}
+
 TEST_CASE("Delaunay of tiny sets", "[delaunay]") {
   CHECK(delaunay_triangulation(std::vector<Point>{}).empty());
   CHECK(delaunay_triangulation(std::vector<Point>{{0, 0}, {1, 1}}).empty());
