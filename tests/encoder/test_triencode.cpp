@@ -309,6 +309,19 @@ TEST_CASE("triencode --max-bytes: a blob within 0.85 to 1 times the budget, as t
   }
 }
 
+TEST_CASE("triencode --max-bytes stops at an exact encoding", "[triencode][budget]") {
+  // A flat picture is exact with its 4 corners: a larger budget buys nothing.
+  write_png(at("flat.png"), Image(40, 30, 3, 90));
+  const Run r = run(at("flat.png") + " --max-bytes 5000 --json -o " + at("flat.tri"));
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j.at("vertices").get<int>() == 4);
+  REQUIRE(j.at("trials").size() == 1);
+  REQUIRE(j.at("psnr").is_null());
+  const Run t = run(at("flat.png") + " --max-bytes 5000 -o " + at("flat.tri"));
+  REQUIRE(t.out.find("the picture needs no more") != std::string::npos);
+}
+
 TEST_CASE("triencode --max-bytes is deterministic", "[triencode][budget]") {
   const std::string args = photo() + " --max-bytes 2500 --width 64 --height 48 --fit inside -o ";
   REQUIRE(run(args + at("m1.tri")).code == 0);

@@ -323,9 +323,11 @@ int main(int argc, char** argv) {
             seconds += e.seconds;
             Triangulation placed = on_panel(e.triangulation, panel);
             const std::size_t bytes = blob_bytes(placed, pack_method, compressed, input);
-            // Exhausted: every mesh stopped short of n (no error left to remove), so more change nothing.
+            // Exhausted: the linear interpolant is exact, or every mesh stopped short of n; more
+            // vertices would only cost bytes.
             bool exhausted = true;
             for (const Mesh& m : e.triangulation.layers) exhausted = exhausted && m.vertex_count() < n;
+            exhausted = exhausted || std::isinf(e.psnr);
             // The most vertices fitting the budget so far is the one kept (the search ends on it).
             if (bytes <= b.max_bytes && (tri.layers.empty() || n > kept_vertices)) {
               kept_vertices = n;
