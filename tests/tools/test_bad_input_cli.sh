@@ -90,7 +90,7 @@ expect 64 "found 'nan'" "$bin/triencode" "$tmp/small.png" -n 8 --sigma nan -o "$
 expect 64 "expected a number above 0" "$bin/triencode" "$tmp/small.png" -e 0 -o "$tmp/x.tri"
 check "the --error message prints DBL_MAX in full" bash -c "! grep -q 17976931348623157 '$tmp/err'"
 expect 64 "--space" "$bin/triencode" "$tmp/small.png" -n 8 --space ycbcr -o "$tmp/x.tri"
-expect 64 "--relocate" "$bin/triencode" "$tmp/small.png" -n 8 --fit pixel --relocate 2 -o "$tmp/x.tri"
+expect 64 "--relocate" "$bin/triencode" "$tmp/small.png" -n 8 --values pixel --relocate 2 -o "$tmp/x.tri"
 expect 64 "--tile" "$bin/trisim" render "$tmp/small.tri" --tile 8 -o "$tmp/x.png"
 expect 64 "--format" "$bin/trisim" render "$tmp/small.tri" --format rgb565be -o "$tmp/x.png"
 expect 64 "--raw" "$bin/trisim" render "$tmp/small.tri" --raw -o "$tmp/x.raw"
