@@ -4,7 +4,8 @@
 # configuration (RGB565 big-endian, zienkiewicz, RGB, one mesh), built, installed alone into a
 # prefix, then checked:
 #   - a CMAKE_CXX_FLAGS given on the command line, which replaces the toolchain's CPU flags, stops
-#     the configure (it had built an ARMv4T core that linked without a warning and faulted)
+#     the configure (it had built an ARMv4T core that linked without a warning and faulted), and
+#     so does a TS_ knob in it (the install would not record it)
 #   - the install has no tools, and every object of libtristream.a is Armv7E-M, hard-float ABI
 #   - the package records the configuration: tristream/config_build.h, tristreamConfig.cmake, tristream.pc
 #   - a firmware (tests/package/firmware, find_package with the preset's toolchain file) with a v1
@@ -33,6 +34,13 @@ if cmake --preset cortex-m4 -B "$work/replaced" -DCMAKE_CXX_FLAGS=-DTS_PIXEL_FOR
   fail "configure with -DCMAKE_CXX_FLAGS=-DTS_PIXEL_FORMATS=0x08 succeeded"
 elif ! tr -s ' \n' '  ' <"$work/replaced.log" | grep -qF "lacks -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16"; then
   fail "configure with a replacing CMAKE_CXX_FLAGS: $(tail -c 600 "$work/replaced.log")"
+else pass; fi
+
+# A knob in CMAKE_CXX_FLAGS (with the CPU flags) would build a core the install does not describe.
+if cmake --preset cortex-m4 -B "$work/knob" -DCMAKE_CXX_FLAGS="${flags[*]} -DTS_PIXEL_FORMATS=0x08" >"$work/knob.log" 2>&1; then
+  fail "configure with -DTS_PIXEL_FORMATS=0x08 in CMAKE_CXX_FLAGS succeeded"
+elif ! tr -s ' \n' '  ' <"$work/knob.log" | grep -qF "defines TS_PIXEL_FORMATS: set the cache variable TRISTREAM_PIXEL_FORMATS"; then
+  fail "configure with a knob in CMAKE_CXX_FLAGS: $(tail -c 600 "$work/knob.log")"
 else pass; fi
 
 # Configure, build, install (no --component): the preset's own commands, with a build directory
