@@ -27,47 +27,24 @@ constexpr std::string_view taken[] = {
     "reinterpret_cast", "requires", "static_cast", "template", "this", "throw", "try", "typeid", "typename",
     "using", "virtual", "wchar_t", "xor", "xor_eq", "main"};
 
-std::string upper(std::string s) {
+}  // namespace
+
+std::string c_upper(std::string s) {
   for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
   return s;
 }
 
 // Text for a C comment: no "*/" and only printable ASCII.
-std::string comment_safe(std::string s) {
+std::string c_comment_safe(std::string s) {
   for (char& c : s)
     if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7E) c = '?';
   for (std::size_t at; (at = s.find("*/")) != std::string::npos;) s[at + 1] = '?';
   return s;
 }
 
-std::size_t round_up(std::size_t n, std::size_t to) { return (n + to - 1) / to * to; }
+namespace {
 
-// The compile-time refusals: a core of another precision, without the blob's method, colour space
-// or layering, or without the descriptor's format.
-std::string guard(const core::Blob& blob, const CBlobSpec& spec) {
-  const int method_bit = blob.method == core::Method::zienkiewicz ? 2 : 1;
-  const std::string method = blob.method == core::Method::zienkiewicz ? "zienkiewicz" : "bilinear";
-  const std::string space = blob.space == core::ColorSpace::grey  ? "grey"
-                            : blob.space == core::ColorSpace::rgb ? "RGB"
-                                                                  : "YCbCr";
-  const std::string layers =
-      blob.layer_count > 1 ? "#if !TS_LAYERED\n#error \"" + spec.symbol +
-                                 ": the blob has a mesh per channel, which this core leaves out (TS_LAYERED)\"\n#endif\n"
-                           : std::string();
-  const std::string format(format_name(spec.format));
-  char format_bit[16];
-  std::snprintf(format_bit, sizeof format_bit, "0x%02X", 1u << unsigned(spec.format));
-  return "#if TS_SUBPIXEL_BITS != " + std::to_string(core::config::subpixel_bits) +
-         " || TS_GRADIENT_FRAC_BITS != " + std::to_string(core::config::gradient_frac_bits) +
-         "\n#error \"" + spec.symbol +
-         ": blob packed for another tristream core configuration (TS_SUBPIXEL_BITS, TS_GRADIENT_FRAC_BITS)\"\n"
-         "#endif\n#if !(TS_METHODS & " + std::to_string(method_bit) + ")\n#error \"" + spec.symbol +
-         ": the blob is " + method + ", which this core leaves out (TS_METHODS)\"\n#endif\n"
-         "#if !(TS_PIXEL_FORMATS & " + format_bit + ")\n#error \"" + spec.symbol + ": the descriptor is for " +
-         format + ", which this core leaves out (TS_PIXEL_FORMATS)\"\n#endif\n"
-         "#if !(TS_COLOR_SPACES & " + std::to_string(1 << int(blob.space)) + ")\n#error \"" + spec.symbol +
-         ": the blob is " + space + ", which this core leaves out (TS_COLOR_SPACES)\"\n#endif\n" + layers;
-}
+std::size_t round_up(std::size_t n, std::size_t to) { return (n + to - 1) / to * to; }
 
 }  // namespace
 
@@ -98,19 +75,61 @@ std::string blob_symbol_of(std::string_view path) {
   return id;
 }
 
-BufferBounds buffer_upper_bounds(const core::Blob& blob, core::PixelFormat format, int width, int height,
-                                 int tile_width, int tile_height) {
+namespace {
+
+constexpr std::size_t workspace_alignment = 8;  // firmware_core/src/workspace_layout.h
+
+// The tile's largest size and the channel scratch of a layered blob in such a tile (6 bytes a pixel).
+struct TileBound {
+  std::size_t width, height, scratch;
+};
+TileBound tile_bound(const core::Blob& blob, core::PixelFormat format, int width, int height, int tile_width,
+                     int tile_height) {
   const std::size_t tw = std::size_t(tile_width > 0 ? std::min(tile_width, width) : width);
   const std::size_t th = std::size_t(tile_height > 0 ? std::min(tile_height, height) : height);
-  constexpr std::size_t alignment = 8;  // firmware_core/src/workspace_layout.h workspace_alignment
   std::size_t scratch = 0;
   if (blob.layer_count > 1 && format != core::PixelFormat::coverage8)
-    scratch = round_up(tw * th * 3 * sizeof(std::int16_t), alignment);
+    scratch = round_up(tw * th * 3 * sizeof(std::int16_t), workspace_alignment);
+  return {tw, th, scratch};
+}
+
+// render.h's need(V, C, F) of a band store holding V vertices and C triangles of which F have flags.
+std::size_t band_store_need(std::size_t v, std::size_t c, std::size_t f, int values_per_vertex, bool gradients) {
+  const std::size_t n = std::size_t(values_per_vertex);
+  const std::size_t records = c == 0 ? 0 : (v <= 1024 ? 4 * (c + f) + 4 : round_up(6 * (c + f) + 2, 4));
+  return 4 * v + round_up(2 * n * v, 4) + (gradients ? 8 * n * v : 0) + records +
+         std::max(round_up(6 * ((v + 31) / 32), 4), 4 * ((c + f + 31) / 32));
+}
+
+}  // namespace
+
+BufferBounds buffer_upper_bounds(const core::Blob& blob, core::PixelFormat format, int width, int height,
+                                 int tile_width, int tile_height) {
+  const TileBound t = tile_bound(blob, format, width, height, tile_width, tile_height);
   std::uint32_t triangles = 0;
   for (int l = 0; l < blob.layer_count; ++l) triangles = std::max(triangles, blob.layers[l].triangle_count);
   const std::size_t bitmap = round_up(triangles, 32) / 8;
-  return {tw * th * std::size_t(core::bytes_per_pixel(format)),
-          alignment + scratch + std::size_t(blob.layer_count) * bitmap};
+  return {t.width * t.height * std::size_t(core::bytes_per_pixel(format)),
+          workspace_alignment + t.scratch + std::size_t(blob.layer_count) * bitmap};
+}
+
+BufferBounds compressed_buffer_upper_bounds(const core::Blob& blob, std::size_t decoder_bytes,
+                                            core::PixelFormat format, int width, int height, int tile_width,
+                                            int tile_height) {
+  const TileBound t = tile_bound(blob, format, width, height, tile_width, tile_height);
+  std::size_t store = 0;
+  for (int l = 0; l < blob.layer_count; ++l) {
+    const core::BlobLayer& layer = blob.layers[l];
+    std::size_t flagged = 0;
+    for (std::uint32_t k = 0; k < layer.triangle_count; ++k) {
+      const std::uint8_t* record = layer.triangles + std::size_t(k) * core::blob_triangle_size;
+      flagged += (record[6] | record[7]) != 0;  // the u16 flags after the three u16 corners
+    }
+    store = std::max(store, band_store_need(layer.vertex_count, layer.triangle_count, flagged,
+                                            blob.values_per_vertex, blob.method == core::Method::zienkiewicz));
+  }
+  return {t.width * t.height * std::size_t(core::bytes_per_pixel(format)),
+          workspace_alignment + t.scratch + decoder_bytes + std::size_t(blob.layer_count) * store};
 }
 
 int c_format(core::PixelFormat format) {
@@ -137,13 +156,33 @@ std::string_view format_name(core::PixelFormat format) {
   return "?";
 }
 
-std::string blob_c_source(const std::vector<std::uint8_t>& bytes, const core::Blob& blob, const CBlobSpec& spec) {
-  const std::string& id = spec.symbol;
-  // The file includes only the core's header (not its own, whose name may not be spellable in an
-  // #include), and repeats the header's guard.
-  std::string s = "/* Generated by tripack from " + comment_safe(spec.source_name) +
-                  ". Do not edit. */\n#include \"tristream/tristream.h\"\n\n" + guard(blob, spec) +
-                  "\n/* Placement of the bytes: define TS_BLOB_SECTION (a string, such as \".rodata.blobs\" or an\n"
+std::string blob_c_guard(core::Method method_of, core::ColorSpace space_of, int layer_count, const CBlobSpec& spec) {
+  const int method_bit = method_of == core::Method::zienkiewicz ? 2 : 1;
+  const std::string method = method_of == core::Method::zienkiewicz ? "zienkiewicz" : "bilinear";
+  const std::string space = space_of == core::ColorSpace::grey  ? "grey"
+                            : space_of == core::ColorSpace::rgb ? "RGB"
+                                                                : "YCbCr";
+  const std::string layers =
+      layer_count > 1 ? "#if !TS_LAYERED\n#error \"" + spec.symbol +
+                            ": the blob has a mesh per channel, which this core leaves out (TS_LAYERED)\"\n#endif\n"
+                      : std::string();
+  const std::string format(format_name(spec.format));
+  char format_bit[16];
+  std::snprintf(format_bit, sizeof format_bit, "0x%02X", 1u << unsigned(spec.format));
+  return "#if TS_SUBPIXEL_BITS != " + std::to_string(core::config::subpixel_bits) +
+         " || TS_GRADIENT_FRAC_BITS != " + std::to_string(core::config::gradient_frac_bits) +
+         "\n#error \"" + spec.symbol +
+         ": blob packed for another tristream core configuration (TS_SUBPIXEL_BITS, TS_GRADIENT_FRAC_BITS)\"\n"
+         "#endif\n#if !(TS_METHODS & " + std::to_string(method_bit) + ")\n#error \"" + spec.symbol +
+         ": the blob is " + method + ", which this core leaves out (TS_METHODS)\"\n#endif\n"
+         "#if !(TS_PIXEL_FORMATS & " + format_bit + ")\n#error \"" + spec.symbol + ": the descriptor is for " +
+         format + ", which this core leaves out (TS_PIXEL_FORMATS)\"\n#endif\n"
+         "#if !(TS_COLOR_SPACES & " + std::to_string(1 << int(space_of)) + ")\n#error \"" + spec.symbol +
+         ": the blob is " + space + ", which this core leaves out (TS_COLOR_SPACES)\"\n#endif\n" + layers;
+}
+
+std::string blob_c_bytes(const std::vector<std::uint8_t>& bytes, const std::string& name) {
+  std::string s = "/* Placement of the bytes: define TS_BLOB_SECTION (a string, such as \".rodata.blobs\" or an\n"
                   "   external flash section of the linker script) and TS_BLOB_ALIGN (bytes, a power of two; the\n"
                   "   core needs 4) before this point, on the command line or before including this file. GCC and\n"
                   "   Clang syntax; with another compiler define TS_BLOB_ATTRIBUTES itself. */\n"
@@ -152,36 +191,54 @@ std::string blob_c_source(const std::vector<std::uint8_t>& bytes, const core::Bl
                   "#define TS_BLOB_ATTRIBUTES __attribute__((section(TS_BLOB_SECTION), aligned(TS_BLOB_ALIGN)))\n"
                   "#elif defined(__GNUC__)\n#define TS_BLOB_ATTRIBUTES __attribute__((aligned(TS_BLOB_ALIGN)))\n"
                   "#else\n#define TS_BLOB_ATTRIBUTES\n#endif\n#endif\n\n"
-                  "static const uint8_t " + id + "_bytes[" + std::to_string(bytes.size()) + "] TS_BLOB_ATTRIBUTES = {";
+                  "static const uint8_t " + name + "[" + std::to_string(bytes.size()) + "] TS_BLOB_ATTRIBUTES = {";
   for (std::size_t i = 0; i < bytes.size(); ++i) {
     if (i % 16 == 0) s += "\n ";
     char hex[8];
     std::snprintf(hex, sizeof hex, " 0x%02x,", bytes[i]);
     s += hex;
   }
-  s += "\n};\n\nextern const ts_blob_descriptor " + id + ";\nconst ts_blob_descriptor " + id + " = {\n  " + id +
-       "_bytes, sizeof " + id + "_bytes,\n  " + std::to_string(blob.width) + ", " + std::to_string(blob.height) +
-       ", " + std::to_string(spec.output_width) + ", " + std::to_string(spec.output_height) + ",\n  " +
-       std::to_string(spec.tile_width) + ", " + std::to_string(spec.tile_height) + ", " +
-       std::to_string(c_format(spec.format)) + ",\n  " + std::to_string(spec.tile_buffer_bytes) + ", " +
-       std::to_string(spec.workspace_bytes) + "\n};\n";
-  return s;
+  return s + "\n};\n";
+}
+
+std::string blob_c_descriptor(const core::Blob& blob, const CBlobSpec& spec) {
+  const std::string& id = spec.symbol;
+  return "\nextern const ts_blob_descriptor " + id + ";\nconst ts_blob_descriptor " + id + " = {\n  " + id +
+         "_bytes, sizeof " + id + "_bytes,\n  " + std::to_string(blob.width) + ", " + std::to_string(blob.height) +
+         ", " + std::to_string(spec.output_width) + ", " + std::to_string(spec.output_height) + ",\n  " +
+         std::to_string(spec.tile_width) + ", " + std::to_string(spec.tile_height) + ", " +
+         std::to_string(c_format(spec.format)) + ",\n  " + std::to_string(spec.tile_buffer_bytes) + ", " +
+         std::to_string(spec.workspace_bytes) + "\n};\n";
+}
+
+std::string blob_c_tiles(const CBlobSpec& spec) {
+  return (spec.tile_width ? std::to_string(spec.tile_width) : std::string("viewport-wide")) + " x " +
+         (spec.tile_height ? std::to_string(spec.tile_height) : std::string("viewport-high"));
+}
+
+std::string blob_c_source(const std::vector<std::uint8_t>& bytes, const core::Blob& blob, const CBlobSpec& spec) {
+  // The file includes only the core's header (not its own, whose name may not be spellable in an
+  // #include), and repeats the header's guard.
+  return "/* Generated by tripack from " + c_comment_safe(spec.source_name) +
+         ". Do not edit. */\n#include \"tristream/tristream.h\"\n\n" +
+         blob_c_guard(blob.method, blob.space, blob.layer_count, spec) + "\n" + blob_c_bytes(bytes, spec.symbol + "_bytes") +
+         blob_c_descriptor(blob, spec);
 }
 
 std::string blob_c_header(const core::Blob& blob, const CBlobSpec& spec) {
   const std::string& id = spec.symbol;
-  const std::string macro = upper(id);
+  const std::string macro = c_upper(id);
   const std::string guard_macro = "TRISTREAM_BLOB_" + macro + "_H";
   const BufferBounds bounds = buffer_upper_bounds(blob, spec.format, spec.output_width, spec.output_height,
                                                   spec.tile_width, spec.tile_height);
-  const std::string tiles = (spec.tile_width ? std::to_string(spec.tile_width) : std::string("viewport-wide")) +
-                            " x " +
-                            (spec.tile_height ? std::to_string(spec.tile_height) : std::string("viewport-high"));
-  return "/* Generated by tripack from " + comment_safe(spec.source_name) + ". Do not edit. */\n#ifndef " +
-         guard_macro + "\n#define " + guard_macro + "\n\n#include \"tristream/tristream.h\"\n\n" + guard(blob, spec) +
-         "\n/* Buffer sizes that suffice for every render of this blob in " + std::string(format_name(spec.format)) +
+  return "/* Generated by tripack from " + c_comment_safe(spec.source_name) + ". Do not edit. */\n#ifndef " +
+         guard_macro + "\n#define " + guard_macro + "\n\n#include \"tristream/tristream.h\"\n\n" +
+         blob_c_guard(blob.method, blob.space, blob.layer_count, spec) +
+         "\n/* The blob's bytes (" + id + ".size): to size a copy of it, e.g. into RAM. */\n#define " + macro +
+         "_BYTES " + std::to_string(blob.size) +
+         "u\n\n/* Buffer sizes that suffice for every render of this blob in " + std::string(format_name(spec.format)) +
          "\n   with an output of at most " + std::to_string(spec.output_width) + " x " +
-         std::to_string(spec.output_height) + ", any fit and viewport of it and tiles of at most " + tiles +
+         std::to_string(spec.output_height) + ", any fit and viewport of it and tiles of at most " + blob_c_tiles(spec) +
          " pixels:\n   static buffers of these sizes are always big enough. The descriptor holds the exact figures\n"
          "   for the whole output in these tiles. */\n#define " + macro + "_TILE_BUFFER_MAX_BYTES " +
          std::to_string(bounds.tile_buffer_bytes) + "u\n#define " + macro + "_WORKSPACE_MAX_BYTES " +

@@ -35,6 +35,13 @@ struct BufferBounds {
 };
 BufferBounds buffer_upper_bounds(const core::Blob& blob, core::PixelFormat format, int width, int height,
                                  int tile_width, int tile_height);
+// The same for the compressed blob of `blob` rendered from its streams (render.h): alignment
+// padding, the channel scratch, `decoder_bytes` (CompressedWorkspace::decoders, which no output
+// changes) and per layer a band store (render.h's need(V, C, F)) for all of the largest layer's
+// vertices, triangles and flagged triangles (no band holds more).
+BufferBounds compressed_buffer_upper_bounds(const core::Blob& blob, std::size_t decoder_bytes,
+                                            core::PixelFormat format, int width, int height, int tile_width,
+                                            int tile_height);
 
 // The C value of a format (tristream.h: TS_L8 = 1 ... TS_XRGB8888 = 5); coverage8 has none
 // (throws UsageError).
@@ -52,5 +59,19 @@ struct CBlobSpec {
 
 std::string blob_c_source(const std::vector<std::uint8_t>& bytes, const core::Blob& blob, const CBlobSpec& spec);
 std::string blob_c_header(const core::Blob& blob, const CBlobSpec& spec);
+
+// Pieces both C forms (v1 and compressed) share.
+// The compile-time refusals: a core of another precision, without the blob's method, colour space
+// or layering, or without the descriptor's format.
+std::string blob_c_guard(core::Method method, core::ColorSpace space, int layer_count, const CBlobSpec& spec);
+// `static const uint8_t <name>[N] TS_BLOB_ATTRIBUTES = {...};` with the placement macros before it.
+std::string blob_c_bytes(const std::vector<std::uint8_t>& bytes, const std::string& name);
+// The definition of the ts_blob_descriptor spec.symbol over <symbol>_bytes (`blob`: width, height).
+std::string blob_c_descriptor(const core::Blob& blob, const CBlobSpec& spec);
+// "W x H" of the tiles, "viewport-wide" / "viewport-high" for 0.
+std::string blob_c_tiles(const CBlobSpec& spec);
+// Upper case; text for a C comment (no "*/", printable ASCII only).
+std::string c_upper(std::string s);
+std::string c_comment_safe(std::string s);
 
 }  // namespace tristream

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The C array tripack --compress writes, linked into a program: its bytes open, expand into the
+// The C form tripack --compress writes, linked into a program: its descriptor's bytes open, expand into the
 // v1 blob tripack writes for the same mesh (up to the vertex numbering: same size, same header),
 // and the header's figures are the core's.
 #include <cstdio>
@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
   std::ifstream in(argv[1], std::ios::binary);
   const std::vector<unsigned char> v1((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   core::CompressedBlob blob;
-  if (core::open_compressed_blob(demo_compressed, DEMO_COMPRESSED_BYTES, &blob) != core::Status::ok) return 1;
+  if (core::open_compressed_blob(demo_compressed.bytes, demo_compressed.size, &blob) != core::Status::ok) return 1;
+  if (demo_compressed.size != DEMO_COMPRESSED_BYTES) return 6;
   if (core::expanded_blob_size(blob) != DEMO_COMPRESSED_EXPANDED_BYTES || core::expanded_blob_size(blob) != v1.size())
     return 2;
   if (core::expand_workspace_size(blob) != DEMO_COMPRESSED_DECODER_RING_BYTES) return 3;

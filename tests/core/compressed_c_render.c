@@ -2,7 +2,9 @@
 /* The C API's render of a compressed blob (tripack --compress -o x.c) from its streams: the frame
    equals the C API's render of the v1 blob of the same mesh (the file argv[1]), byte for byte, in
    RGB565 32x32 tiles and in 16-row bands; the workspace ts_compressed_workspace_size gives
-   suffices and one byte less is TS_WORKSPACE_TOO_SMALL. Exit 0 when all hold. */
+   suffices and one byte less is TS_WORKSPACE_TOO_SMALL; for the descriptor's own parameters (the
+   whole 768x512 output in RGB565 big-endian 32x32 tiles) the sizes are the descriptor's. Exit 0
+   when all hold. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,7 +28,8 @@ static int collect(void* context, const ts_tile* tile) {
 }
 
 /* Buffers from malloc: 16-aligned on the test hosts, so the workspace size is exact. */
-static int check(const ts_blob* v1, const ts_compressed_blob* c, const ts_params* p, int w, int h) {
+static int check(const ts_blob* v1, const ts_compressed_blob* c, const ts_params* p, int w, int h,
+                 const ts_blob_descriptor* expected) {
   size_t tile = 0, work = 0, scratch_size = 0, cwork = 0, ctile = 0;
   uint32_t offset = 0;
   ts_buffers b;
@@ -42,6 +45,12 @@ static int check(const ts_blob* v1, const ts_compressed_blob* c, const ts_params
   free(scratch);
   if (s != TS_OK) {
     fprintf(stderr, "ts_compressed_workspace_size: %s at byte %u\n", ts_status_text(s), (unsigned)offset);
+    return 0;
+  }
+  if (expected && (cwork != expected->workspace_bytes || ctile != expected->tile_buffer_bytes)) {
+    fprintf(stderr, "descriptor: tile buffer %lu, workspace %lu; measured %lu, %lu\n",
+            (unsigned long)expected->tile_buffer_bytes, (unsigned long)expected->workspace_bytes, (unsigned long)ctile,
+            (unsigned long)cwork);
     return 0;
   }
   a.pixels = calloc((size_t)w * h, 2);
@@ -87,15 +96,19 @@ int main(int argc, char** argv) {
   if (fread(bytes, 1, (size_t)size, in) != (size_t)size) return 74;
   fclose(in);
   if (ts_open(bytes, (size_t)size, &v1, NULL) != TS_OK) return 1;
-  if (ts_open_compressed(demo_compressed, DEMO_COMPRESSED_BYTES, &c, NULL) != TS_OK) return 2;
+  if (ts_open_compressed(demo_compressed.bytes, demo_compressed.size, &c, NULL) != TS_OK) return 2;
   if (ts_open_compressed(bytes, (size_t)size, &c, NULL) != TS_BAD_MAGIC) return 3;
-  if (ts_open_compressed(demo_compressed, DEMO_COMPRESSED_BYTES, &c, NULL) != TS_OK) return 2;
+  if (ts_open_compressed(demo_compressed.bytes, demo_compressed.size, &c, NULL) != TS_OK) return 2;
+  if (demo_compressed.size != DEMO_COMPRESSED_BYTES || demo_compressed.format != TS_RGB565_BE ||
+      demo_compressed.tile_width != 32 || demo_compressed.tile_height != 32 || demo_compressed.output_width != 768 ||
+      demo_compressed.output_height != 512)
+    return 4;
   p.format = TS_RGB565_BE;
   p.tile_width = p.tile_height = 32;
-  ok &= check(&v1, &c, &p, 768, 512);
+  ok &= check(&v1, &c, &p, 768, 512, &demo_compressed);
   p.tile_width = 0;
   p.tile_height = 16;
-  ok &= check(&v1, &c, &p, 768, 512);
+  ok &= check(&v1, &c, &p, 768, 512, NULL);
   free(bytes);
   return ok ? 0 : 1;
 }

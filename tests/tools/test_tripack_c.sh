@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# tripack -o x.c: the generated C compiles (C89 and C99, -Wall -Wextra -pedantic -Werror) and
-# links with the core for awkward output names (a keyword, a quote, a leading digit, the C API's
-# prefix) and with --symbol; the header refuses, at compile time, a core without the blob's
-# method or the descriptor's format or of another precision; TS_BLOB_SECTION and TS_BLOB_ALIGN
+# tripack -o x.c, v1 and --compress: the generated C compiles (C89 and C99, -Wall -Wextra
+# -pedantic -Werror) and links with the core for awkward output names (a keyword, a quote, a
+# leading digit, the C API's prefix) and with --symbol, and a program renders its descriptor with
+# static buffers of the header's <SYMBOL>_TILE_BUFFER_MAX_BYTES and <SYMBOL>_WORKSPACE_MAX_BYTES
+# (ts_render, or ts_render_compressed from the streams), at the descriptor's size and at a smaller
+# output with a viewport; <SYMBOL>_BYTES is the blob's size (a compile-time check against the
+# .bin's); the header refuses, at compile time, a core without the blob's method, colour space or
+# layering or the descriptor's format or of another precision; TS_BLOB_SECTION and TS_BLOB_ALIGN
 # place the bytes. Usage: test_tripack_c.sh TRIPACK CC INCLUDE_DIR CORE_LIBRARY SOURCE_DIR [LINK_FLAGS]
 # (LINK_FLAGS: what the core library was built with that its users must link, e.g. sanitizers)
 set -uo pipefail
@@ -24,46 +28,98 @@ cflags=(-Wall -Wextra -pedantic -Werror -I"$include")
 
 cat >"$tmp/main.c" <<'SRC'
 #include <stdio.h>
-/* The generated header comes in with -include (its name may not be spellable in an #include). */
+/* The generated header comes in with -include (its name may not be spellable in an #include).
+   COMPRESSED: the blob is "TSTC", rendered from its streams by ts_render_compressed. */
 static unsigned char tile[SYMBOL_TILE_BUFFER_MAX_BYTES];
 static unsigned char work[SYMBOL_WORKSPACE_MAX_BYTES];
-static void sink(void* context, const ts_tile* t) { (void)context; (void)t; }
-int main(void) {
+static long tiles;
+static void sink(void* context, const ts_tile* t) { (void)context; (void)t; ++tiles; }
+static int frame_sink(void* context, const ts_tile* t) { sink(context, t); return 1; }
+static ts_status render(const ts_params* p) {
+#if COMPRESSED
+  ts_compressed_blob blob;
+  ts_buffers b;
+  ts_status s = ts_open_compressed(SYMBOL.bytes, SYMBOL.size, &blob, 0);
+  b.tile[0] = tile;
+  b.tile[1] = 0;
+  b.tile_size = sizeof tile;
+  b.workspace = work;
+  b.workspace_size = sizeof work;
+  if (s == TS_OK) s = ts_render_compressed(&blob, p, &b, frame_sink, 0, 0);
+#else
   ts_blob blob;
-  ts_params p = TS_PARAMS_INIT;
   ts_status s = ts_open(SYMBOL.bytes, SYMBOL.size, &blob, 0);
+  (void)frame_sink;
+  if (s == TS_OK) s = ts_render(&blob, p, tile, sizeof tile, work, sizeof work, sink, 0);
+#endif
+  return s;
+}
+int main(void) {
+  ts_params p = TS_PARAMS_INIT;
+  ts_status s;
+  if (SYMBOL.size != SYMBOL_BYTES) {
+    printf("descriptor size %lu, header %lu\n", (unsigned long)SYMBOL.size, (unsigned long)SYMBOL_BYTES);
+    return 1;
+  }
   p.output_width = SYMBOL.output_width;
   p.output_height = SYMBOL.output_height;
   p.tile_width = SYMBOL.tile_width;
   p.tile_height = SYMBOL.tile_height;
   p.format = SYMBOL.format;
-  if (s == TS_OK) s = ts_render(&blob, &p, tile, sizeof tile, work, sizeof work, sink, 0);
-  if (s != TS_OK) printf("%s\n", ts_status_text(s));
-  return s == TS_OK ? 0 : 1;
+  s = render(&p);
+  if (s == TS_OK && tiles > 0) {
+    /* A smaller output, fitted inside, and a viewport of it. */
+    p.output_width = (uint16_t)(SYMBOL.output_width / 2 + 1);
+    p.output_height = (uint16_t)(SYMBOL.output_height / 3 + 2);
+    p.fit = TS_FIT_INSIDE;
+    p.viewport.x0 = 1;
+    p.viewport.y0 = 2;
+    p.viewport.x1 = p.output_width - 1;
+    p.viewport.y1 = p.output_height;
+    tiles = 0;
+    s = render(&p);
+  }
+  if (s != TS_OK || tiles == 0) printf("%s, %ld tiles\n", ts_status_text(s), tiles);
+  return s == TS_OK && tiles > 0 ? 0 : 1;
 }
 SRC
 
-# builds <output name> <expected symbol> [tripack options...]: generate, compile both files, link, run.
+# builds <output name> <expected symbol> [tripack options...]: generate, compile both files, link,
+# run; then <SYMBOL>_BYTES against the size of the .bin of the same options, at compile time.
 builds() {
   local name=$1 symbol=$2
   shift 2
   local dir=$tmp/$RANDOM
   mkdir -p "$dir"
   if ! "$tripack" "$tri" -o "$dir/$name" "$@" >"$dir/log" 2>&1; then fail "tripack -o '$name' $*: $(cat "$dir/log")"; return; fi
-  local header=${name%.c}.h
+  local header=${name%.c}.h macro compressed=0
+  macro=$(echo "$symbol" | tr a-z A-Z)
+  case " $* " in *" --compress "*) compressed=1 ;; esac
   for std in c89 c99; do
     if ! "$cc" -std=$std "${cflags[@]}" -c "$dir/$name" -o "$dir/blob.$std.o" 2>"$dir/err"; then
-      fail "-o '$name': the generated C does not compile as $std: $(head -c 400 "$dir/err")"; return
+      fail "-o '$name' $*: the generated C does not compile as $std: $(head -c 400 "$dir/err")"; return
     fi
-    if ! "$cc" -std=$std "${cflags[@]}" -DSYMBOL="$symbol" -DSYMBOL_TILE_BUFFER_MAX_BYTES="$(echo "$symbol" | tr a-z A-Z)_TILE_BUFFER_MAX_BYTES" \
-         -DSYMBOL_WORKSPACE_MAX_BYTES="$(echo "$symbol" | tr a-z A-Z)_WORKSPACE_MAX_BYTES" -include "$dir/$header" \
-         -c "$tmp/main.c" -o "$dir/main.$std.o" 2>"$dir/err"; then
-      fail "-o '$name': a user of the header ($symbol) does not compile as $std: $(head -c 400 "$dir/err")"; return
+    if ! "$cc" -std=$std "${cflags[@]}" -DSYMBOL="$symbol" -DSYMBOL_TILE_BUFFER_MAX_BYTES="${macro}_TILE_BUFFER_MAX_BYTES" \
+         -DSYMBOL_WORKSPACE_MAX_BYTES="${macro}_WORKSPACE_MAX_BYTES" -DSYMBOL_BYTES="${macro}_BYTES" \
+         -DCOMPRESSED=$compressed -include "$dir/$header" -c "$tmp/main.c" -o "$dir/main.$std.o" 2>"$dir/err"; then
+      fail "-o '$name' $*: a user of the header ($symbol) does not compile as $std: $(head -c 400 "$dir/err")"; return
     fi
   done
   if ! "$cc" $link_flags "$dir/main.c99.o" "$dir/blob.c99.o" "$core" -o "$dir/run" 2>"$dir/err" || ! "$dir/run" >"$dir/out"; then
-    fail "-o '$name': does not link or render: $(cat "$dir/err" "$dir/out" | head -c 400)"; return
+    fail "-o '$name' $*: does not link or render: $(cat "$dir/err" "$dir/out" | head -c 400)"; return
   fi
+  # <SYMBOL>_BYTES is the size of the blob tripack writes as .bin with the same options.
+  if ! "$tripack" "$tri" -o "$dir/same.bin" "$@" >/dev/null 2>&1; then fail "tripack -o same.bin $*"; return; fi
+  local size
+  size=$(wc -c <"$dir/same.bin")
+  for n in "$size" $((size + 1)); do
+    printf 'typedef char size_is_the_blobs[%s_BYTES == %su ? 1 : -1];\n' "$macro" "$n" >"$dir/size.c"
+    if "$cc" -std=c89 "${cflags[@]}" -include "$dir/$header" -c "$dir/size.c" -o "$dir/size.o" 2>"$dir/err"; then
+      [ "$n" = "$size" ] || { fail "-o '$name' $*: ${macro}_BYTES equals $n, the .bin has $size bytes"; return; }
+    else
+      [ "$n" != "$size" ] || { fail "-o '$name' $*: ${macro}_BYTES is not the .bin's $size bytes: $(head -c 300 "$dir/err")"; return; }
+    fi
+  done
   pass
 }
 builds demo.c demo
@@ -75,6 +131,14 @@ builds main.c blob_main
 builds 'x__y.c' x_y
 builds int.c my_blob --symbol my_blob
 builds bands.c bands --tile-width 0 --tile-height 16 -f rgb888 --width 100 --height 60
+builds demo.c demo --compress
+builds int.c blob_int --compress -m zienkiewicz
+builds int.c my_blob --symbol my_blob --compress -f xrgb8888 --tile 8
+builds bands.c bands --tile-width 0 --tile-height 16 -f rgb888 --width 100 --height 60 --compress
+tri=$src/tests/golden/ycbcr-layers.tri
+builds layers.c layers --compress -m zienkiewicz -f rgb565le --width 90 --height 70 --tile 12
+builds layers.c layers -f l8 --tile-width 20 --tile-height 0
+tri=$src/tests/golden/rgb.tri
 
 # --symbol that cannot be a C name: usage error (64) naming the option.
 for bad in int 7x a-b __x _X ts_open main; do
@@ -83,29 +147,34 @@ for bad in int 7x a-b __x _X ts_open main; do
   if [ $code -ne 64 ] || ! grep -q -- "--symbol" "$tmp/err"; then fail "--symbol '$bad' -> exit $code: $(cat "$tmp/err")"; else pass; fi
 done
 
-# The guard: each mismatch stops the compilation with its own message; the matching core compiles.
-"$tripack" "$tri" -o "$tmp/z.c" -m zienkiewicz -f rgb565be >/dev/null || fail "tripack zienkiewicz"
+# The guard, of the v1 and of the compressed form: each mismatch stops the compilation with its
+# own message; the matching core compiles.
+for form in "" --compress; do
+"$tripack" "$tri" -o "$tmp/z.c" -m zienkiewicz -f rgb565be $form >/dev/null || fail "tripack zienkiewicz $form"
 refuses() {
   local needle=$1
   shift
-  if "$cc" -std=c99 "${cflags[@]}" "$@" -c "$tmp/z.c" -o "$tmp/z.o" 2>"$tmp/err"; then fail "compiled with $* (expected: $needle)"
-  elif ! grep -qF "$needle" "$tmp/err"; then fail "$*: expected '$needle', got: $(head -c 300 "$tmp/err")"
+  if "$cc" -std=c99 "${cflags[@]}" "$@" -c "$tmp/z.c" -o "$tmp/z.o" 2>"$tmp/err"; then fail "$form: compiled with $* (expected: $needle)"
+  elif ! grep -qF "$needle" "$tmp/err"; then fail "$form: $*: expected '$needle', got: $(head -c 300 "$tmp/err")"
   else pass; fi
   echo '#include "z.h"' >"$tmp/use_z.c"
-  if "$cc" -std=c99 "${cflags[@]}" "$@" -c "$tmp/use_z.c" -o "$tmp/use_z.o" 2>/dev/null; then fail "z.h compiled with $*"; else pass; fi
+  if "$cc" -std=c99 "${cflags[@]}" "$@" -c "$tmp/use_z.c" -o "$tmp/use_z.o" 2>"$tmp/err"; then fail "$form: z.h compiled with $*"
+  elif ! grep -qF "$needle" "$tmp/err"; then fail "$form: z.h with $*: expected '$needle', got: $(head -c 300 "$tmp/err")"
+  else pass; fi
 }
 refuses "the blob is zienkiewicz, which this core leaves out (TS_METHODS)" -DTS_METHODS=1
 refuses "the descriptor is for rgb565be, which this core leaves out (TS_PIXEL_FORMATS)" -DTS_PIXEL_FORMATS=0x04
 refuses "another tristream core configuration" -DTS_SUBPIXEL_BITS=3
 refuses "the blob is RGB, which this core leaves out (TS_COLOR_SPACES)" -DTS_COLOR_SPACES=0x5
-"$tripack" "$src/tests/golden/ycbcr-layers.tri" -o "$tmp/z.c" -m zienkiewicz -f rgb565be >/dev/null || fail "tripack layers"
+"$tripack" "$src/tests/golden/ycbcr-layers.tri" -o "$tmp/z.c" -m zienkiewicz -f rgb565be $form >/dev/null || fail "tripack layers $form"
 refuses "the blob has a mesh per channel, which this core leaves out (TS_LAYERED)" -DTS_LAYERED=0
 refuses "the blob is YCbCr, which this core leaves out (TS_COLOR_SPACES)" -DTS_COLOR_SPACES=0x3
 if "$cc" -std=c99 "${cflags[@]}" -DTS_METHODS=2 -DTS_PIXEL_FORMATS=0x08 -DTS_COLOR_SPACES=0x4 -c "$tmp/z.c" -o "$tmp/z.o" 2>"$tmp/err"; then pass
-else fail "the layered z.c does not compile against a core with exactly its method, format and colour space: $(cat "$tmp/err")"; fi
-"$tripack" "$tri" -o "$tmp/z.c" -m zienkiewicz -f rgb565be >/dev/null || fail "tripack zienkiewicz"
+else fail "$form: the layered z.c does not compile against a core with exactly its method, format and colour space: $(cat "$tmp/err")"; fi
+"$tripack" "$tri" -o "$tmp/z.c" -m zienkiewicz -f rgb565be $form >/dev/null || fail "tripack zienkiewicz $form"
 if "$cc" -std=c99 "${cflags[@]}" -DTS_METHODS=2 -DTS_PIXEL_FORMATS=0x08 -DTS_COLOR_SPACES=0x2 -DTS_LAYERED=0 -c "$tmp/z.c" -o "$tmp/z.o" 2>"$tmp/err"; then pass
-else fail "z.c does not compile against a core with exactly its method, format and colour space: $(cat "$tmp/err")"; fi
+else fail "$form: z.c does not compile against a core with exactly its method, format and colour space: $(cat "$tmp/err")"; fi
+done
 
 # Placement: the bytes in the named section with the asked alignment (objdump: 2**6 = 64).
 if "$cc" -std=c99 "${cflags[@]}" -DTS_BLOB_SECTION='".tsblob"' -DTS_BLOB_ALIGN=64 -c "$tmp/z.c" -o "$tmp/placed.o" 2>"$tmp/err"; then

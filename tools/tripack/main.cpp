@@ -45,8 +45,8 @@ int main(int argc, char** argv) {
   CLI::App app{"Pack a triangulation (.tri) into a blob for the fixed-point core and report the RAM it needs.\n"
                "-o x.bin writes the blob; -o x.c writes x.c (the bytes and a ts_blob_descriptor) and x.h, which\n"
                "refuses to compile against a core without the blob's method or the format, and defines\n"
-               "<SYMBOL>_TILE_BUFFER_MAX_BYTES and <SYMBOL>_WORKSPACE_MAX_BYTES: enough for any output up to\n"
-               "--width x --height, any viewport of it and any tile up to the tile size given."};
+               "<SYMBOL>_BYTES (the blob's size), <SYMBOL>_TILE_BUFFER_MAX_BYTES and <SYMBOL>_WORKSPACE_MAX_BYTES:\n"
+               "enough for any output up to --width x --height, any viewport of it and any tile up to the tile size."};
   Request req;
   app.add_option("input", req.input, "Triangulation file (.tri)")->required();
   app.add_option("-o,--output", req.output, "Output: .bin (raw blob) or .c (C source plus header)")->required();
@@ -72,9 +72,10 @@ int main(int argc, char** argv) {
   app.add_option("--height", req.height, "Output height (default: the triangulation's)")
       ->check(CLI::Range(2, core::config::max_dimension));
   app.add_flag("--compress", req.compress,
-               "Write the compressed blob (\"TSTC\", docs/COMPRESSED_BLOB.md) instead of v1: x.bin, or x.c with the\n"
-               "bytes as const uint8_t SYMBOL[] and x.h with SYMBOL_BYTES, SYMBOL_EXPANDED_BYTES and\n"
-               "SYMBOL_DECODER_RING_BYTES; the report adds its bytes against v1 and its bits per vertex");
+               "Write the compressed blob (\"TSTC\", docs/COMPRESSED_BLOB.md) instead of v1: x.bin, or x.c and x.h\n"
+               "as for v1 (a ts_blob_descriptor for ts_open_compressed and ts_render_compressed, guards, the\n"
+               "bounds of the render from the streams) and SYMBOL_EXPANDED_BYTES, SYMBOL_DECODER_RING_BYTES for\n"
+               "C++'s expand_compressed_blob; the report adds its bytes against v1 and its bits per vertex");
   app.add_flag("--json", req.json, "Print the figures as JSON");
   return run_tool("tripack", app, argc, argv, [&]() -> int {
     const std::string ext = std::filesystem::path(req.output).extension().string();
@@ -108,28 +109,30 @@ int main(int argc, char** argv) {
     std::optional<CoreRenderer> stream;
     if (req.compress) stream.emplace(compressed, o, req.input);
     const std::string symbol = req.symbol.empty() ? blob_symbol_of(req.output) : req.symbol;
+    // The descriptor of -o x.c: the figures of a render of the whole output in these tiles.
+    CBlobSpec spec;
+    spec.symbol = symbol;
+    spec.source_name = std::filesystem::path(req.input).filename().string();
+    spec.format = o.format;
+    spec.output_width = req.width ? req.width : sizes.blob().width;
+    spec.output_height = req.height ? req.height : sizes.blob().height;
+    spec.tile_width = o.tile_width;
+    spec.tile_height = o.tile_height;
+    const std::filesystem::path header = std::filesystem::path(req.output).replace_extension(".h");
     if (req.compress && ext == ".bin") {
       write_file_atomically(req.output,
                             std::string_view(reinterpret_cast<const char*>(compressed.data()), compressed.size()));
     } else if (req.compress) {
-      const CCompressedSpec spec{symbol, std::filesystem::path(req.input).filename().string()};
-      const std::filesystem::path header = std::filesystem::path(req.output).replace_extension(".h");
-      write_file_atomically(header.string(), compressed_c_header(cblob, spec));
-      write_file_atomically(req.output, compressed_c_source(compressed, spec));
+      spec.tile_buffer_bytes = stream->tile_buffer_bytes();
+      spec.workspace_bytes = stream->workspace_bytes();
+      write_file_atomically(header.string(),
+                            compressed_c_header(cblob, sizes.blob(), stream->stream_workspace().decoders, spec));
+      write_file_atomically(req.output, compressed_c_source(compressed, sizes.blob(), spec));
     } else if (ext == ".bin") {
       write_file_atomically(req.output, std::string_view(reinterpret_cast<const char*>(blob.data()), blob.size()));
     } else {
-      CBlobSpec spec;
-      spec.symbol = symbol;
-      spec.source_name = std::filesystem::path(req.input).filename().string();
-      spec.format = o.format;
-      spec.output_width = req.width ? req.width : sizes.blob().width;
-      spec.output_height = req.height ? req.height : sizes.blob().height;
-      spec.tile_width = o.tile_width;
-      spec.tile_height = o.tile_height;
       spec.tile_buffer_bytes = sizes.tile_buffer_bytes();
       spec.workspace_bytes = sizes.workspace_bytes();
-      const std::filesystem::path header = std::filesystem::path(req.output).replace_extension(".h");
       write_file_atomically(header.string(), blob_c_header(sizes.blob(), spec));
       write_file_atomically(req.output, blob_c_source(blob, sizes.blob(), spec));
     }

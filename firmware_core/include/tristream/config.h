@@ -10,6 +10,15 @@
 
 #include <stdint.h>
 
+/* An installed core (cmake --install) records the configuration and the CPU it was built with in
+   tristream/config_build.h, which its copy of this header includes (TRISTREAM_INSTALLED_CONFIG 1):
+   the knobs below then take the library's values, a file that defines one otherwise is refused,
+   and so is a file compiled for another CPU or float ABI. The source tree has no such file. */
+#define TRISTREAM_INSTALLED_CONFIG 0
+#if TRISTREAM_INSTALLED_CONFIG
+#include "tristream/config_build.h"
+#endif
+
 /* Sub-pixel bits of vertex positions (format fx28_4 by default). Positions, edge functions and
    their bit budget are in docs/FIXED_POINT.md. With 4 bits and TS_MAX_DIMENSION 2048 every
    coordinate difference fits 16 bits (signed) and every edge function value at a sample point is

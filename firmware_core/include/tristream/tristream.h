@@ -98,7 +98,8 @@ typedef struct ts_buffers {
 } ts_buffers;
 
 /* What tripack -o x.c emits besides the bytes: the blob and the buffer sizes it measured for
-   the tile size, pixel format and output size it was given. */
+   the tile size, pixel format and output size it was given (with --compress the bytes are a
+   compressed blob, for ts_open_compressed, and the sizes those of ts_render_compressed). */
 typedef struct ts_blob_descriptor {
   const uint8_t* bytes;
   size_t size;
