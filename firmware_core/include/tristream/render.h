@@ -63,7 +63,8 @@ struct RenderParams {
 };
 
 // Caller memory of a render: one tile buffer, or two that the tiles alternate between (double
-// buffering: the sink may hand a tile to a DMA transfer and return at once), and the workspace.
+// buffering: the sink may hand a tile to a DMA transfer and return at once), none with a target
+// (RenderParams::target), and the workspace.
 struct RenderBuffers {
   void* tile[2] = {nullptr, nullptr};  // tile[1] null: every tile in tile[0]
   size_t tile_bytes = 0;               // bytes of each tile buffer (tile_buffer_size)
