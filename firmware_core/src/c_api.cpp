@@ -80,21 +80,21 @@ ts_status ts_workspace_size(const ts_blob* blob, const ts_params* params, size_t
 ts_status ts_render(const ts_blob* blob, const ts_params* params, void* tile_buffer, size_t tile_buffer_size,
                     void* workspace, size_t workspace_size, ts_sink sink, void* context) {
   core::RenderParams p;
-  if (!blob || !sink) return ts_status(core::Status::null_argument);
+  if (!blob) return ts_status(core::Status::null_argument);
   if (!convert(params, &p)) return ts_status(core::Status::bad_params);
   SinkAdapter adapter{sink, context};
-  return ts_status(
-      core::render(*view(blob), p, tile_buffer, tile_buffer_size, workspace, workspace_size, forward, &adapter));
+  return ts_status(core::render(*view(blob), p, tile_buffer, tile_buffer_size, workspace, workspace_size,
+                                sink ? forward : nullptr, &adapter));
 }
 
 ts_status ts_render_frame(const ts_blob* blob, const ts_params* params, const ts_buffers* buffers, ts_frame_sink sink,
                           void* context) {
   core::RenderParams p;
-  if (!blob || !buffers || !sink) return ts_status(core::Status::null_argument);
+  if (!blob || !buffers) return ts_status(core::Status::null_argument);
   if (!convert(params, &p)) return ts_status(core::Status::bad_params);
   const core::RenderBuffers b = render_buffers(*buffers);
   FrameSinkAdapter adapter{sink, context};
-  return ts_status(core::render(*view(blob), p, b, forward_frame, &adapter));
+  return ts_status(core::render(*view(blob), p, b, sink ? forward_frame : nullptr, &adapter));
 }
 
 const char* ts_status_text(ts_status status) { return core::status_text(core::Status(status)); }

@@ -44,6 +44,8 @@ inline bool convert(const ts_params* p, core::RenderParams* out) {
   for (int c = 0; c < 3; ++c) out->background[c] = p->background[c];
   out->packed_tiles = p->packed_tiles != 0;
   out->fit = core::Fit(p->fit);
+  out->target_stride = p->target_stride;
+  out->target = p->target;
   return true;
 }
 

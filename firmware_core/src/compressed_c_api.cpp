@@ -48,12 +48,12 @@ ts_status ts_compressed_workspace_size(const ts_compressed_blob* blob, const ts_
 ts_status ts_render_compressed(const ts_compressed_blob* blob, const ts_params* params, const ts_buffers* buffers,
                                ts_frame_sink sink, void* context, uint32_t* error_offset) {
   core::RenderParams p;
-  if (!blob || !buffers || !sink) return ts_status(core::Status::null_argument);
+  if (!blob || !buffers) return ts_status(core::Status::null_argument);
   if (!convert(params, &p)) return ts_status(core::Status::bad_params);
   const core::RenderBuffers b = render_buffers(*buffers);
   FrameSinkAdapter adapter{sink, context};
   core::BlobError error;
-  const core::Status s = core::render(*view(blob), p, b, forward_frame, &adapter, &error);
+  const core::Status s = core::render(*view(blob), p, b, sink ? forward_frame : nullptr, &adapter, &error);
   if (error_offset) *error_offset = error.offset;
   return ts_status(s);
 }

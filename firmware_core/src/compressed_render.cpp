@@ -206,14 +206,12 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
 
 Status render(const CompressedBlob& blob, const RenderParams& params, const RenderBuffers& buffers, FrameSink sink,
               void* context, BlobError* error) {
-  void* const tile_buffer = buffers.tile[0];
-  if (!tile_buffer || !sink || (!buffers.workspace && buffers.workspace_bytes)) return Status::null_argument;
+  if (!detail::buffers_given(params, buffers, sink)) return Status::null_argument;
   Blob view = header_view(blob);
   detail::FramePlan r;
   Status s = detail::plan_frame(view, params, &r);
   if (s != Status::ok) return s;
-  const int bpp = bytes_per_pixel(r.format);
-  if (buffers.tile_bytes < size_t(r.tile_w) * r.tile_h * bpp) return Status::tile_buffer_too_small;
+  if (!detail::tile_buffers_hold(params, r, buffers)) return Status::tile_buffer_too_small;
 
   // Workspace: [1..8 bytes to 8-align][channel scratch][per layer: stream state, ring, tags][band
   // stores, one equal share per layer].
@@ -271,13 +269,11 @@ Status render(const CompressedBlob& blob, const RenderParams& params, const Rend
   return Status::ok;
 }
 
-
 Status render(const CompressedBlob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,
               void* workspace, size_t workspace_bytes, TileSink sink, void* context) {
-  if (!sink) return Status::null_argument;
   detail::TileSinkAdapter adapter{sink, context};
   return render(blob, params, detail::single_buffers(tile_buffer, tile_buffer_bytes, workspace, workspace_bytes),
-                detail::forward_tile, &adapter);
+                sink ? detail::forward_tile : nullptr, &adapter);
 }
 
 }  // namespace tristream::core

@@ -23,7 +23,13 @@ struct FramePlan {
   PixelFormat format = PixelFormat::rgb888;
   Mapping map;
   int32_t shift_x = 0, shift_y = 0;
+  int32_t target_stride = 0;  // a target's stride (RenderParams::target; 0 resolved), 0 without one
 };
+
+// The largest |RenderParams::target_stride|: rows - 1 of it and a row stay below 2^31 bytes.
+inline constexpr int32_t max_target_stride = 1 << 19;
+static_assert(int64_t(config::max_dimension - 1) * max_target_stride + 4 * config::max_dimension <= INT32_MAX,
+              "a target's byte offsets fit an int32_t");
 
 // The smallest multiple of 4 at least -o (0 for o >= 0).
 constexpr int32_t crop_shift(int32_t o) { return o < 0 ? (3 - o) / 4 * 4 : 0; }
@@ -51,6 +57,19 @@ inline Status plan_frame(const Blob& blob, const RenderParams& p, FramePlan* r) 
       !(config::color_spaces >> int(blob.space) & 1) || (blob.layer_count > 1 && !config::layered))
     return Status::not_compiled;
   r->format = p.format;
+  // A target: its stride (0: the viewport's rows back to back) holds a row, and at most
+  // max_target_stride bytes keep every byte offset in the int32_t of the pixel writers; no packed
+  // tiles (the target's rows are its own).
+  int32_t stride = p.target_stride;
+  if (p.target) {
+    const int32_t row = r->view.width() * bytes_per_pixel(p.format);
+    if (!stride) stride = row;
+    const uint32_t step = stride < 0 ? 0u - uint32_t(stride) : uint32_t(stride);
+    if (p.packed_tiles || step < uint32_t(row) || step > uint32_t(max_target_stride)) return Status::bad_params;
+  } else if (stride) {
+    return Status::bad_params;
+  }
+  r->target_stride = stride;
   if (p.fit != Fit::stretch && p.fit != Fit::inside && p.fit != Fit::fill) return Status::bad_params;
   const FitLayout f = fit_layout(blob.width, blob.height, r->out_w, r->out_h, p.fit);
   r->shift_x = crop_shift(f.ox);

@@ -21,7 +21,7 @@ Status tile_buffer_size(const Blob& blob, const RenderParams& params, size_t* by
   detail::FramePlan r;
   Status s = detail::plan_frame(blob, params, &r);
   if (s != Status::ok) return s;
-  *bytes = size_t(r.tile_w) * r.tile_h * bytes_per_pixel(r.format);
+  *bytes = params.target ? 0 : size_t(r.tile_w) * r.tile_h * bytes_per_pixel(r.format);
   return Status::ok;
 }
 
@@ -42,13 +42,11 @@ Status workspace_size(const Blob& blob, const RenderParams& params, size_t* byte
 
 Status render(const Blob& blob, const RenderParams& params, const RenderBuffers& buffers, FrameSink sink,
               void* context) {
-  void* const tile_buffer = buffers.tile[0];
-  if (!tile_buffer || !sink || (!buffers.workspace && buffers.workspace_bytes)) return Status::null_argument;
+  if (!detail::buffers_given(params, buffers, sink)) return Status::null_argument;
   detail::FramePlan r;
   Status s = detail::plan_frame(blob, params, &r);
   if (s != Status::ok) return s;
-  const int bpp = bytes_per_pixel(r.format);
-  if (buffers.tile_bytes < size_t(r.tile_w) * r.tile_h * bpp) return Status::tile_buffer_too_small;
+  if (!detail::tile_buffers_hold(params, r, buffers)) return Status::tile_buffer_too_small;
 
   // Workspace: [alignment padding][channel scratch][active-set bitmaps, one equal share per layer].
   const size_t workspace_bytes = buffers.workspace_bytes;
@@ -88,10 +86,9 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
 
 Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,
               void* workspace, size_t workspace_bytes, TileSink sink, void* context) {
-  if (!sink) return Status::null_argument;
   detail::TileSinkAdapter adapter{sink, context};
   return render(blob, params, detail::single_buffers(tile_buffer, tile_buffer_bytes, workspace, workspace_bytes),
-                detail::forward_tile, &adapter);
+                sink ? detail::forward_tile : nullptr, &adapter);
 }
 
 }  // namespace tristream::core

@@ -28,6 +28,8 @@ int use_header(const void* bytes, size_t size) {
   ts_status s = ts_open(bytes, size, &blob, (uint32_t*)0);
   (void)version;
   params.format = TS_RGB565_BE;
+  params.target_stride = 8;
+  params.target = tile;
   if (s == TS_OK) s = ts_render(&blob, &params, tile, sizeof tile, work, sizeof work, sink, (void*)0);
   return s == TS_BAD_PARAMS || s == TS_NOT_COMPILED || params.format == TS_FORMAT_UNSET ? 1 : (int)s;
 }

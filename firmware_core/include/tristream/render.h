@@ -45,10 +45,26 @@ struct RenderParams {
   // from its crop rounded up to a multiple of 4 pixels before the output, would reach
   // TS_MAX_DIMENSION pixels (the coordinate budget).
   Fit fit = Fit::stretch;
+  // Rendering in place into the caller's framebuffer (an LVGL canvas, a partial framebuffer): with
+  // a target, pixel (x, y) of the viewport goes to
+  //   target + (y - viewport.y0) * target_stride + (x - viewport.x0) * bytes_per_pixel(format)
+  // (viewport in output pixels; the default viewport is the whole output). Tiles are drawn where
+  // they belong, no tile buffer is used (it may be null and 0 bytes; tile_buffer_size says 0), and
+  // the sink, which may then be null, gets each finished tile pointing into the target (stride
+  // target_stride) and may still stop the frame. target_stride 0 means rows back to back (the
+  // viewport's width in bytes); a negative one is a bottom-up buffer (target still the viewport's
+  // top row). Only the viewport's pixels are read or written: bytes [target + (rows - 1) *
+  // target_stride, target + width x bpp) for a negative stride, [target, target + (rows - 1) *
+  // target_stride + width x bpp) otherwise, and of those only each row's first width x bpp.
+  // bad_params: |target_stride| below the viewport's width in bytes or above 2^19 (524,288)
+  // bytes, packed_tiles with a target, a target_stride without a target.
+  int32_t target_stride = 0;
+  void* target = nullptr;
 };
 
 // Caller memory of a render: one tile buffer, or two that the tiles alternate between (double
-// buffering: the sink may hand a tile to a DMA transfer and return at once), and the workspace.
+// buffering: the sink may hand a tile to a DMA transfer and return at once), none with a target
+// (RenderParams::target), and the workspace.
 struct RenderBuffers {
   void* tile[2] = {nullptr, nullptr};  // tile[1] null: every tile in tile[0]
   size_t tile_bytes = 0;               // bytes of each tile buffer (tile_buffer_size)
@@ -63,7 +79,8 @@ struct RenderBuffers {
 // returns the last tile's transfer may still be running.
 using FrameSink = bool (*)(void* context, const Tile* tile);
 
-// Bytes of the tile buffer: tile width * tile height * bytes per pixel (tile size after defaults).
+// Bytes of the tile buffer: tile width * tile height * bytes per pixel (tile size after defaults);
+// 0 with a target (RenderParams::target).
 Status tile_buffer_size(const Blob& blob, const RenderParams& params, size_t* bytes);
 
 // Bytes of workspace `render` needs with these parameters: per layer, a bitmap of its active
@@ -72,7 +89,8 @@ Status tile_buffer_size(const Blob& blob, const RenderParams& params, size_t* by
 // tile pixel. One pass over the triangles.
 Status workspace_size(const Blob& blob, const RenderParams& params, size_t* bytes);
 
-// Renders the viewport tile by tile into `tile_buffer` and passes each tile to `sink`.
+// Renders the viewport tile by tile into `tile_buffer` (or in place into params.target) and passes
+// each tile to `sink` (null_argument if null, unless there is a target).
 // Every pixel whose sample point lies in the domain is written by exactly one triangle; the
 // output does not depend on the tile size. Never allocates.
 Status render(const Blob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,

@@ -29,7 +29,8 @@ struct Tile {
 };
 
 // Receives each finished tile, in band order (top to bottom), left to right within a band.
-// The tile's memory is reused for the next tile once the sink returns.
+// A tile buffer is reused for the next tile once the sink returns (a target's tiles stay where
+// they were drawn: RenderParams::target).
 using TileSink = void (*)(void* context, const Tile* tile);
 
 }  // namespace tristream::core

@@ -120,15 +120,26 @@ typedef struct ts_params {
   uint8_t background[3];
   int packed_tiles; /* nonzero: stride = each tile's own width (a tile is one contiguous transfer) */
   int fit;          /* TS_FIT_STRETCH (0), TS_FIT_INSIDE or TS_FIT_FILL; another value is refused */
+  /* Render in place into a framebuffer (target NULL: into the tile buffers). Pixel (x, y) of the
+     viewport goes to target + (y - viewport.y0) * target_stride + (x - viewport.x0) * bytes per
+     pixel: a canvas or partial framebuffer covering the viewport (with the default viewport, the
+     whole output). target_stride is bytes per row, 0 for the viewport's width; negative for a
+     bottom-up buffer (target at the viewport's top row). No tile buffer is needed (NULL, 0 bytes;
+     the size calls say 0); the sink, which may then be NULL, gets each finished tile pointing into
+     the target, to flush that rectangle. Only the viewport's pixels are read or written. Refused
+     (TS_BAD_PARAMS): |target_stride| less than the viewport's width in bytes or more than 2^19
+     (524,288), packed_tiles with a target, a target_stride without one. */
+  int32_t target_stride;
+  void* target;
 } ts_params;
 
 /* Every field of a ts_params at its default: the blob's size, the whole output, tiles of the whole
    viewport, no format yet (set one: TS_FORMAT_UNSET is refused), no dithering, a black background,
-   rows of the tile buffer's width, stretched. Start every ts_params from it, by
+   rows of the tile buffer's width, stretched, into the tile buffers (no target). Start every ts_params from it, by
    `ts_params p = TS_PARAMS_INIT;` or by ts_params_init(&p), then set the fields you need: a
    ts_params left uninitialised renders or fails at random, and one filled field by field misses
    the fields a later version adds. Both are kept in step with the struct by the core's build. */
-#define TS_PARAMS_INIT {0, 0, {0, 0, 0, 0}, 0, 0, TS_FORMAT_UNSET, 0, {0, 0, 0}, 0, TS_FIT_STRETCH}
+#define TS_PARAMS_INIT {0, 0, {0, 0, 0, 0}, 0, 0, TS_FORMAT_UNSET, 0, {0, 0, 0}, 0, TS_FIT_STRETCH, 0, NULL}
 void ts_params_init(ts_params* params);
 
 /* Validates `size` bytes and fills `blob`. On failure *error_offset (if not null) is the byte
@@ -138,7 +149,8 @@ ts_status ts_open(const void* bytes, size_t size, ts_blob* blob, uint32_t* error
 /* Bytes of tile buffer and of workspace needed for these parameters. */
 ts_status ts_tile_buffer_size(const ts_blob* blob, const ts_params* params, size_t* bytes);
 ts_status ts_workspace_size(const ts_blob* blob, const ts_params* params, size_t* bytes);
-/* Renders the viewport; each finished tile goes to sink(context, tile). */
+/* Renders the viewport; each finished tile goes to sink(context, tile). The sink may be NULL
+   only with a target (ts_params.target); so may the tile buffer, in both calls. */
 ts_status ts_render(const ts_blob* blob, const ts_params* params, void* tile_buffer, size_t tile_buffer_size,
                     void* workspace, size_t workspace_size, ts_sink sink, void* context);
 /* The same with one or two tile buffers and a sink that may stop the frame. */
