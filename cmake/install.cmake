@@ -32,3 +32,4 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/tristream.pc.in ${PROJECT_BINARY_DIR}/t
 install(FILES ${PROJECT_BINARY_DIR}/tristream.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT core)
 
 install(TARGETS trisim tripack triencode RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
+include(${CMAKE_CURRENT_LIST_DIR}/install_golden.cmake)
