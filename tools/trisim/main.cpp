@@ -10,7 +10,6 @@
 #include <ctime>
 #include <functional>
 #include <optional>
-#include <span>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -19,14 +18,10 @@
 #include "common/tool_main.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/render_core.h"
-#include "core_bridge/unpack.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
-#include "io/limits.h"
-#include "io/tri_file.h"
 #include "metrics/metrics.h"
 #include "reference/render.h"
-#include "tristream/compressed_blob.h"
 
 #include "golden.h"
 #include "picture.h"
