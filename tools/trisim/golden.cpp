@@ -249,15 +249,17 @@ Image diff_image(const Image& render, const std::string& golden_path) {
   return out;
 }
 
-// SIGINT and SIGTERM held back while alive: the destructor restores the mask, and a signal that
-// came meanwhile is delivered then.
+// The signals that end a tool and that an update holds back: SIGINT, SIGTERM, SIGHUP, SIGQUIT.
+constexpr int held_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+
+// Those signals held back while alive: the destructor restores the mask, and a signal that came
+// meanwhile is delivered then.
 class HeldSignals {
  public:
   HeldSignals() {
     sigset_t block;
     sigemptyset(&block);
-    sigaddset(&block, SIGINT);
-    sigaddset(&block, SIGTERM);
+    for (int sig : held_signals) sigaddset(&block, sig);
     ::sigprocmask(SIG_BLOCK, &block, &old_);
   }
   ~HeldSignals() { ::sigprocmask(SIG_SETMASK, &old_, nullptr); }
@@ -266,7 +268,9 @@ class HeldSignals {
   bool pending() const {
     sigset_t p;
     sigpending(&p);
-    return sigismember(&p, SIGINT) == 1 || sigismember(&p, SIGTERM) == 1;
+    for (int sig : held_signals)
+      if (sigismember(&p, sig) == 1) return true;
+    return false;
   }
 
  private:
@@ -274,9 +278,9 @@ class HeldSignals {
 };
 
 // Writes every file (path, bytes) or none: each to a temporary file in its directory, synced,
-// and only when all are written are they renamed over the goldens. A failure or a SIGINT/SIGTERM
-// before the renames removes the temporary files and leaves every golden as it was; the signals
-// are held back during the renames, which then all happen.
+// and only when all are written are they renamed over the goldens. A failure or a signal of
+// held_signals before the renames removes the temporary files and leaves every golden as it was;
+// the signals are held back during the renames, which then all happen.
 void write_all_or_none(const std::vector<std::pair<std::string, std::string>>& files) {
   HeldSignals held;  // declared first, destroyed last: after the temporary files are gone or renamed
   std::vector<std::unique_ptr<AtomicFile>> written;
