@@ -120,8 +120,9 @@ expect 0 "" "$trisim" golden "$d"
 # mix, and no temporary file. The kill comes as soon as the second golden's temporary file exists.
 k=$tmp/kill
 mkdir -p "$k" "$tmp/old" "$tmp/new"
-for n in a b c; do cp "$golden/rgb-zienkiewicz.bin" "$k/$n.bin"; done
-manifest() { printf '{"defaults": {"width": 1024, "height": 1024, "fit": "inside", "background": %d}}' "$1" >"$k/golden.json"; }
+names="a b c d e f g h"  # the writes of c to h and the renames are the window for the kill
+for n in $names; do cp "$golden/rgb-zienkiewicz.bin" "$k/$n.bin"; done
+manifest() { printf '{"defaults": {"width": 640, "height": 640, "fit": "inside", "background": %d}}' "$1" >"$k/golden.json"; }
 manifest 2
 expect 0 "" "$trisim" golden "$k" --update
 cp "$k"/*.png "$tmp/new/"
@@ -133,17 +134,17 @@ caught=0
 for attempt in 1 2 3 4 5; do
   "$trisim" golden "$k" --update >/dev/null 2>&1 &
   pid=$!
-  while kill -0 "$pid" 2>/dev/null && ! compgen -G "$k/b.png.tmp.*" >/dev/null; do sleep 0.001; done
+  while kill -0 "$pid" 2>/dev/null && ! compgen -G "$k/b.png.tmp.*" >/dev/null; do :; done  # builtins only: a tight poll
   kill -TERM "$pid" 2>/dev/null
   wait "$pid"
   code=$?
   old=0 new=0
-  for n in a b c; do
+  for n in $names; do
     cmp -s "$k/$n.png" "$tmp/old/$n.png" && old=$((old + 1))
     cmp -s "$k/$n.png" "$tmp/new/$n.png" && new=$((new + 1))
   done
-  check "killed update (attempt $attempt, exit $code): all old ($old of 3) or all new ($new of 3)" \
-    test "$old" -eq 3 -o "$new" -eq 3
+  check "killed update (attempt $attempt, exit $code): all old ($old of 8) or all new ($new of 8)" \
+    test "$old" -eq 8 -o "$new" -eq 8
   check "killed update (attempt $attempt): no temporary file left" bash -c "! ls -a '$k' | grep -q '\\.tmp\\.'"
   cp "$tmp/old"/*.png "$k/"
   [ "$code" -eq 143 ] && { caught=1; echo "killed during the update: $old old, $new new"; break; }
