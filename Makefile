@@ -74,11 +74,12 @@ cross:
 clean:
 	rm -rf build build-sanitize build-fuzz build-cross out
 
-experiments: build
+# The experiments need trisim and triencode alone (make tools), not the tests.
+experiments: tools
 	@bash tools/install-deps.sh experiments
 	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set full --jobs 2
 
-experiments-quick: build
+experiments-quick: tools
 	@bash tools/install-deps.sh experiments browser
 	/usr/bin/python3 tools/experiments/run_experiments.py $(BUILD)/bin out/report --set quick --jobs 2
 	/usr/bin/python3 tools/experiments/check_page.py out/report/index.html \

@@ -42,6 +42,8 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/tristreamConfigVersion.cm
                                  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/tristreamConfig.cmake ${PROJECT_BINARY_DIR}/tristreamConfigVersion.cmake
         DESTINATION ${tristream_cmake_dir} COMPONENT core)
+# tristream_add_golden_test, which the config file includes.
+include(${CMAKE_CURRENT_LIST_DIR}/install_golden.cmake)
 
 # Relocatable: the prefix is found from the .pc file's own place (pkg-config's pcfiledir), so the
 # tree works wherever --prefix put it.

@@ -17,6 +17,7 @@ struct OutputError : std::runtime_error { using std::runtime_error::runtime_erro
 
 enum ExitCode : int {
   exit_ok = 0,
+  exit_check_failed = 1,  // a check the command was asked to make failed (thresholds, golden images)
   exit_usage = 64,
   exit_data = 65,
   exit_noinput = 66,

@@ -66,7 +66,7 @@ CoreRenderer::CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions
   params_.tile_height = dimension(o.tile_height, "tile height");
   params_.format = o.format;
   params_.dither = o.dither;
-  for (auto& c : params_.background) c = o.background;
+  for (int c = 0; c < 3; ++c) params_.background[c] = o.background.rgb[c];
   std::size_t tile_bytes = 0, work_bytes = 0;
   core::Status st = core::tile_buffer_size(blob_, params_, &tile_bytes);
   if (st == core::Status::ok && !compressed_) st = core::workspace_size(blob_, params_, &work_bytes);

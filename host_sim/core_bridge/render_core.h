@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "model/color.h"
 #include "model/image.h"
 #include "model/triangulation.h"
 #include "tristream/compressed_blob.h"
@@ -23,7 +24,7 @@ struct CoreOptions {
   int tile_height = 32; // 0 = the viewport height (one band: full frame when both are 0)
   core::PixelFormat format = core::PixelFormat::rgb888;
   bool dither = false;
-  std::uint8_t background = 0;
+  Background background;  // R, G, B; a grey blob takes the first
 };
 
 // The viewport's pixels in `format`, rows packed (stride = width * bytes per pixel).

@@ -177,6 +177,11 @@ void AtomicFile::write(std::string_view bytes) {
   if (!write_all(fd_, bytes, e)) fail("write failed", e);
 }
 
+void AtomicFile::sync() {
+  if (fd_ < 0) fail("write failed", EBADF);
+  if (!through_ && ::fsync(fd_) != 0) fail("write failed (fsync)", errno);
+}
+
 void AtomicFile::commit() {
   if (fd_ < 0) fail("write failed", EBADF);
   if (through_) {
@@ -209,6 +214,14 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
   AtomicFile f(path);
   f.write(bytes);
   f.commit();
+}
+
+void make_directories(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  std::filesystem::create_directories(path, ec);
+  if (ec) throw OutputError(what + ": " + path + ": cannot create the directory (" + ec.message() + ")");
+  if (!std::filesystem::is_directory(path, ec))
+    throw OutputError(what + ": " + path + ": cannot write into it: not a directory");
 }
 
 std::string read_file(const std::string& path, std::uint64_t max_bytes) {

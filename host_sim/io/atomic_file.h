@@ -27,6 +27,8 @@ class AtomicFile {
   ~AtomicFile();
 
   void write(std::string_view bytes);
+  // Flushes what was written to the disk (fsync) before commit(), which then has less to do.
+  void sync();
   void commit();
 
   // The temporary file's name ("" when writing through to a non-regular destination).
@@ -47,6 +49,10 @@ class AtomicFile {
 
 // AtomicFile(path), write(bytes), commit().
 void write_file_atomically(const std::string& path, std::string_view bytes);
+
+// Creates the directory `path` and its missing parents (nothing when it exists). Throws
+// OutputError naming `what` and `path` when it cannot, or when `path` is not a directory.
+void make_directories(const std::string& path, const std::string& what);
 
 // Reads a whole regular file of at most `max_bytes` bytes. Throws InputError naming the path
 // when it cannot be opened or read, is a directory, a device, a FIFO or a socket (which could

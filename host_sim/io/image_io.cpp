@@ -37,7 +37,9 @@ Image read_image(const std::string& path, std::uint64_t max_pixels) {
   return img;
 }
 
-void write_png(const std::string& path, const Image& image) {
+void write_png(const std::string& path, const Image& image) { write_file_atomically(path, encode_png(image, path)); }
+
+std::string encode_png(const Image& image, const std::string& path) {
   std::string out;
   auto sink = [](void* ctx, void* data, int size) {
     static_cast<std::string*>(ctx)->append(static_cast<const char*>(data), std::size_t(size));
@@ -45,7 +47,7 @@ void write_png(const std::string& path, const Image& image) {
   if (!stbi_write_png_to_func(sink, &out, image.width, image.height, image.channels, image.pixels.data(),
                               image.width * image.channels))
     throw OutputError(path + ": PNG encoding failed");
-  write_file_atomically(path, out);
+  return out;
 }
 
 }  // namespace tristream

@@ -18,5 +18,7 @@ Image read_image(const std::string& path, std::uint64_t max_pixels = limits::max
 
 // Writes a PNG through a temporary file and a rename. Throws OutputError.
 void write_png(const std::string& path, const Image& image);
+// The bytes of the PNG that write_png writes. Throws OutputError naming `path` when encoding fails.
+std::string encode_png(const Image& image, const std::string& path);
 
 }  // namespace tristream

@@ -2,8 +2,18 @@
 #pragma once
 // JPEG YCbCr (ITU-R BT.601, full range, chroma offset 128), in double precision.
 #include <array>
+#include <cstdint>
 
 namespace tristream {
+
+// The colour of pixels outside a triangulation's domain: R, G, B, or one value for every channel.
+// A grey output takes the first value (as the core's RenderParams::background does).
+struct Background {
+  std::uint8_t rgb[3] = {0, 0, 0};
+  constexpr Background() = default;
+  constexpr Background(std::uint8_t all) : rgb{all, all, all} {}  // NOLINT: one value is every channel
+  constexpr Background(std::uint8_t r, std::uint8_t g, std::uint8_t b) : rgb{r, g, b} {}
+};
 
 inline std::array<double, 3> rgb_to_ycbcr(double r, double g, double b) {
   return {0.299 * r + 0.587 * g + 0.114 * b,

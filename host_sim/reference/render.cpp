@@ -76,7 +76,8 @@ Field render_reference_field(const Triangulation& tri, const MethodInfo& method,
 Image render_reference(const Triangulation& tri, const MethodInfo& method, const RenderOptions& options) {
   const Field field = render_reference_field(tri, method, options);
   const int nc = field.channels;
-  Image img(field.width, field.height, nc, options.background);
+  Image img(field.width, field.height, nc);
+  for (std::size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = options.background.rgb[i % nc];
   // Clamp, then round half away from zero (x >= 0 here, so x - floor(x) is exact).
   auto to_byte = [](double x) {
     x = x < 0 ? 0 : x > 255 ? 255 : x;  // not NaN here

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "model/color.h"
 #include "model/image.h"
 #include "model/triangulation.h"
 #include "reference/fit.h"
@@ -18,7 +19,7 @@ struct RenderOptions {
   int height = 0;  // corner to corner: pixel (i, j) samples the domain at (i*(W-1)/(W'-1), j*(H-1)/(H'-1)).
   Fit fit = Fit::stretch;  // inside, fill: one scale for both axes (reference/fit.h)
   std::string variant;  // method-specific variant ("" = default; e.g. "thesis" for patches)
-  std::uint8_t background = 0;  // value of pixels outside the domain, every channel
+  Background background;  // pixels outside the domain (R, G, B; a grey render takes the first)
   // What a ChannelRenderer maps with: 0, corner to corner; else fit_d / fit_n domain units per output
   // pixel on both axes from pixel (0, 0) (render_reference_field sets it for the picture's box).
   std::int64_t fit_n = 0, fit_d = 0;

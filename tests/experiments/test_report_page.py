@@ -77,5 +77,26 @@ class ReportPageTest(unittest.TestCase):
         self.assertTrue(shot.read_bytes().startswith(b"\x89PNG"))
 
 
+class BrowserCommandTest(unittest.TestCase):
+    """Chromium refuses to start as root without --no-sandbox ("Running as root without
+    --no-sandbox is not supported"), and CI runs as root: every browser run of the check passes
+    it. Runs without chromium (the command is recorded, not run)."""
+
+    def test_every_run_is_headless_without_the_sandbox(self):
+        from unittest import mock
+        calls = []
+
+        def fake_run(cmd, **kwargs):
+            calls.append(cmd)
+            return mock.Mock(returncode=0, stdout="<html></html>", stderr="")
+        with mock.patch.object(check_page.subprocess, "run", fake_run):
+            check_page.run_browser("/usr/bin/chromium", ["--dump-dom", "file:///x.html"], env={})
+        self.assertEqual(len(calls), 1)
+        self.assertIn("--headless", calls[0])
+        self.assertIn("--no-sandbox", calls[0])
+        self.assertEqual(calls[0][0], "/usr/bin/chromium")
+        self.assertEqual(calls[0][-2:], ["--dump-dom", "file:///x.html"])
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -92,7 +92,7 @@ class Tools:
         self.triencode = self.bin_dir / "triencode"
         for tool in (self.trisim, self.triencode):
             if not (tool.is_file() and os.access(tool, os.X_OK)):
-                raise ToolError(f"{tool}: expected an executable (build it with 'make build'), found none")
+                raise ToolError(f"{tool}: expected an executable (build it with 'make tools'), found none")
         self.trisim_sha = file_sha256(self.trisim)
         self.triencode_sha = file_sha256(self.triencode)
         help_text = self._help(["compare", "--help"])

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// trisim: render triangulation files and blobs, compare renders with originals, measure images.
+// trisim: render triangulation files and blobs, compare renders with originals, measure images,
+// check golden images (golden.cpp).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -9,7 +10,6 @@
 #include <ctime>
 #include <functional>
 #include <optional>
-#include <span>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -18,42 +18,30 @@
 #include "common/tool_main.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/render_core.h"
-#include "core_bridge/unpack.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
-#include "io/limits.h"
-#include "io/tri_file.h"
 #include "metrics/metrics.h"
 #include "reference/render.h"
-#include "tristream/compressed_blob.h"
+
+#include "golden.h"
+#include "picture.h"
 
 using namespace tristream;
+using namespace tristream::trisim;
 
 namespace {
 
-struct RenderRequest {
-  std::string input;
-  std::string method = "bilinear";
-  std::string engine = "reference";
-  std::string variant;
-  int width = 0;
-  int height = 0;
-  std::string fit = "stretch";  // --fit: stretch, inside or fill
-  int background = 0;
-  int tile = 32;       // --engine core: square tile side, 0 = full frame
-  std::string format;  // --engine core: pixel format ("" = l8 for grey, rgb888 for colour)
-  bool dither = false;
+// A command's render settings as the command line gives them: the request, and the texts of the
+// options that are parsed after CLI11 (parse_request).
+struct CliRequest {
+  RenderRequest req;
   const CLI::App* command = nullptr;  // the subcommand, to see which options were given
+  std::string background = "0", viewport;
 };
 
-std::vector<std::string> method_names() {
-  std::vector<std::string> names;
-  for (const MethodInfo& m : reference_methods()) names.emplace_back(m.name);
-  return names;
-}
-
-void add_render_options(CLI::App* cmd, RenderRequest& req) {
-  req.command = cmd;
+void add_render_options(CLI::App* cmd, CliRequest& c) {
+  RenderRequest& req = c.req;
+  c.command = cmd;
   cmd->add_option("input", req.input,
                   "Triangulation file (.tri) or blob (tripack -o x.bin, v1 or --compress; told apart by its first "
                   "bytes): a blob is rendered by the core with its own method unless --engine reference is given "
@@ -69,6 +57,15 @@ void add_render_options(CLI::App* cmd, RenderRequest& req) {
   cmd->add_option("--tile", req.tile, "Core: square tile side in pixels, 0 = full frame")
       ->check(CLI::Range(0, 2048))
       ->capture_default_str();
+  cmd->add_option("--tile-width", req.tile_width,
+                  "Core: tile width (default --tile), 0 = the viewport's width (bands), as RenderParams::tile_width")
+      ->check(CLI::Range(0, 2048));
+  cmd->add_option("--tile-height", req.tile_height,
+                  "Core: tile height (default --tile), 0 = the viewport's height, as RenderParams::tile_height")
+      ->check(CLI::Range(0, 2048));
+  cmd->add_option("--viewport", c.viewport,
+                  "Core: the output pixels to render, X0,Y0,X1,Y1 (half-open, as RenderParams::viewport); the "
+                  "output is the viewport's size");
   cmd->add_option("--format", req.format, "Core: pixel format (default l8 for grey, rgb888 for colour)")
       ->check(CLI::IsMember({"l8", "rgb888", "rgb565le", "rgb565be", "xrgb8888"}));
   cmd->add_flag("--dither", req.dither, "Core: Bayer dithering of RGB565");
@@ -81,150 +78,20 @@ void add_render_options(CLI::App* cmd, RenderRequest& req) {
                   "scale, centred, a --background border) or fill (one scale, centred, the excess cropped)")
       ->check(CLI::IsMember({"stretch", "inside", "fill"}))
       ->capture_default_str();
-  cmd->add_option("--background", req.background, "Value of pixels outside the triangulation")
-      ->check(CLI::Range(0, 255))
+  cmd->add_option("--background", c.background,
+                  "Pixels outside the triangulation: one value for every channel, or R,G,B (a grey render takes "
+                  "the first)")
       ->capture_default_str();
 }
 
-// Refuses a render of more than limits::max_image_pixels before anything is allocated: a usage
-// error when --width/--height ask for it, a data error when the file's size does.
-void check_render_size(const Triangulation& tri, const RenderRequest& req) {
-  const std::uint64_t w = req.width ? req.width : tri.width, h = req.height ? req.height : tri.height;
-  if (w * h <= limits::max_image_pixels) return;
-  const std::string what = "a render of at most " + std::to_string(limits::max_image_pixels) +
-                           " pixels (the limit for a render), found " + std::to_string(w) + "x" + std::to_string(h);
-  if (req.width || req.height) throw UsageError("--width/--height: expected " + what);
-  throw DataError(req.input + ": expected " + what + " (the file's size; --width and --height render smaller)");
-}
-
-// Options that would be ignored are usage errors: the core's options with the reference engine,
-// a method variant with the core, dithering of a format that is not RGB565.
-void check_engine_options(const RenderRequest& req) {
-  const CLI::App& cmd = *req.command;
-  if (req.engine == "reference") {
-    for (const char* core_only : {"--tile", "--format", "--dither", "--raw"})
-      if (cmd.get_option_no_throw(core_only) && cmd.count(core_only))
-        throw UsageError(std::string(core_only) + ": applies to --engine core only");
-    return;
-  }
-  if (!req.variant.empty()) throw UsageError("--variant: applies to --engine reference only");
-  if (req.dither && req.format != "rgb565le" && req.format != "rgb565be")
-    throw UsageError("--dither: applies to --format rgb565le and rgb565be only");
-}
-
-// What the input file holds: a .tri, or a blob whose bytes the core renders as they are (a
-// compressed blob from its streams, band by band; its v1 expansion, made by the core's
-// expand_compressed_blob, serves the mesh, the checks and bench's side-by-side v1 timing).
-struct Input {
-  Triangulation tri;  // for a blob: its size and colour space, and with the mesh read back (unpack_blob) when needed
-  std::vector<std::uint8_t> blob;  // the v1 blob's bytes when the file is a blob, else empty
-  core::Method blob_method = core::Method::bilinear;
-  bool compressed = false;           // the file is a compressed blob (TSTC) and `blob` its expansion
-  std::size_t expand_workspace = 0;  // compressed: the ring the expansion needed (expand_workspace_size)
-  std::vector<std::uint8_t> compressed_bytes;  // compressed: the file's bytes, which the core renders
-  bool is_blob() const { return !blob.empty(); }
-};
-
-// Reads a .tri or a blob (by its content). A blob's mesh is read back only when `need_mesh`
-// (the reference engine, compare): the core draws blobs whose mesh the reference could not.
-Input read_input(const std::string& path, bool need_mesh) {
-  const std::string text = read_file(path);
-  const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
-  Input in;
-  if (!tristream::is_blob(bytes)) {
-    in.tri = parse_tri(text, path);
-    return in;
-  }
-  in.compressed = core::is_compressed_blob(bytes.data(), bytes.size());
-  if (in.compressed) {
-    in.blob = expand_compressed_or_throw(bytes, path, &in.expand_workspace);
-    in.compressed_bytes.assign(bytes.begin(), bytes.end());
-  }
-  else
-    in.blob.assign(bytes.begin(), bytes.end());
-  // Offsets of the checks below are in the file, or for a compressed blob in its expansion.
-  const std::string name = in.compressed ? path + " (expanded to v1)" : path;
-  const core::Blob blob = open_blob_or_throw(in.blob, name);
-  in.blob_method = blob.method;
-  if (need_mesh) {
-    in.tri = unpack_blob(blob, name).tri;
-  } else {
-    in.tri.width = blob.width;
-    in.tri.height = blob.height;
-    in.tri.space = blob.space == core::ColorSpace::grey  ? ColorSpace::grey
-                   : blob.space == core::ColorSpace::rgb ? ColorSpace::rgb
-                                                         : ColorSpace::ycbcr;
-  }
-  return in;
-}
-
-// A blob goes to the core unless --engine says otherwise, with its own method unless --method
-// says otherwise: another method with the core is a usage error (the blob holds what its method
-// needs, gradients or not).
-void resolve_blob_request(const Input& in, RenderRequest& req, bool method_given) {
-  if (!in.is_blob()) return;
-  if (!req.command->count("--engine")) req.engine = "core";
-  const std::string packed(to_string(in.blob_method));
-  if (!method_given) req.method = packed;
-  if (req.engine == "core" && req.method != packed)
-    throw UsageError("--method " + req.method + ": " + req.input + " is a blob packed for " + packed +
-                     ", which the core renders with that method only (--engine reference renders its mesh with any)");
-}
-
-// Whether render or bench needs a blob's mesh: with --engine reference (a blob's default engine is
-// the core, which draws the blob from its bytes).
-bool needs_mesh(const RenderRequest& req) { return req.command->count("--engine") && req.engine == "reference"; }
-
-struct Rendered {
-  Image image;
-  double ms = 0;
-};
-
-CoreOptions core_options(const Triangulation& tri, const RenderRequest& req) {
-  CoreOptions o;
-  o.width = req.width;
-  o.height = req.height;
-  o.fit = req.fit == "inside" ? core::Fit::inside : req.fit == "fill" ? core::Fit::fill : core::Fit::stretch;
-  o.tile_width = o.tile_height = req.tile;
-  o.format = parse_pixel_format(req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : req.format);
-  o.dither = req.dither;
-  o.background = static_cast<std::uint8_t>(req.background);
-  return o;
-}
-
-// The core's frame of the input: a blob's own bytes, a .tri packed for the method.
-CoreFrame core_frame(const Input& in, const RenderRequest& req) {
-  if (!in.is_blob()) return render_core_frame(in.tri, req.method, core_options(in.tri, req), req.input);
-  CoreRenderer renderer(in.compressed ? in.compressed_bytes : in.blob, core_options(in.tri, req), req.input);
-  CoreFrame frame;
-  renderer.render(frame);
-  return frame;
-}
-
-// The picture a render is measured by: for a grey triangulation rendered by the core in a colour
-// format, the luma of the decoded frame (what an original grey image is compared with).
-Rendered render(const Input& in, const RenderRequest& req) {
-  const Triangulation& tri = in.tri;
-  if (req.engine == "core") {
-    const auto t0 = std::chrono::steady_clock::now();
-    Image image = frame_to_image(core_frame(in, req));
-    if (tri.channels() == 1 && image.channels == 3) image = to_grey(image);
-    Rendered out{std::move(image), 0};
-    out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    return out;
-  }
-  const MethodInfo* method = find_reference_method(req.method);
-  if (!method) throw UsageError("unknown method '" + req.method + "'");
-  RenderOptions options;
-  options.width = req.width;
-  options.height = req.height;
-  options.fit = req.fit == "inside" ? Fit::inside : req.fit == "fill" ? Fit::fill : Fit::stretch;
-  options.variant = req.variant;
-  options.background = static_cast<std::uint8_t>(req.background);
-  const auto t0 = std::chrono::steady_clock::now();
-  Rendered out{render_reference(tri, *method, options), 0};
-  out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  return out;
+// The request once CLI11 has parsed the command line: the options given, background and viewport.
+RenderRequest& parse_request(CliRequest& c) {
+  RenderRequest& req = c.req;
+  for (const CLI::Option* o : c.command->get_options())
+    if (o->count() > 0 && !o->get_lnames().empty()) req.given.insert("--" + o->get_lnames().front());
+  req.background = parse_background(c.background, "--background");
+  if (!c.viewport.empty()) req.viewport = parse_viewport(c.viewport, "--viewport");
+  return req;
 }
 
 // The original as the render sees it: luma when the triangulation is grey.
@@ -265,20 +132,20 @@ SsimOptions ssim_options(const std::string& window) {
 }
 
 struct RenderCommand {
-  RenderRequest req;
+  CliRequest cli;
   std::string output;
   bool raw = false;  // --engine core: the frame's bytes instead of a PNG
 };
 
 struct CompareCommand {
-  RenderRequest req;
+  CliRequest cli;
   std::vector<std::string> methods;
   std::string original, window = "gaussian", save;
   bool json = false;
 };
 
 struct BenchCommand {
-  RenderRequest req;
+  CliRequest cli;
   bool json = false;
   int runs = 0;  // 0: as many as fit in about 2 s
 };
@@ -286,11 +153,12 @@ struct BenchCommand {
 struct MetricsCommand {
   std::string a, b, window = "gaussian";
   bool json = false;
+  std::optional<double> max_mse, min_psnr;  // thresholds: exit 1 when one is not met
 };
 
 CLI::App* add_render_command(CLI::App& app, RenderCommand& c) {
   auto* cmd = app.add_subcommand("render", "Render a triangulation to a PNG image");
-  add_render_options(cmd, c.req);
+  add_render_options(cmd, c.cli);
   cmd->add_option("-o,--output", c.output, "Output PNG (with --raw: the frame's bytes)")->required();
   cmd->add_flag("--raw", c.raw,
                 "Core: write the frame's bytes as they would go to the display (rows packed, in --format) "
@@ -301,13 +169,13 @@ CLI::App* add_render_command(CLI::App& app, RenderCommand& c) {
 CLI::App* add_compare_command(CLI::App& app, CompareCommand& c) {
   auto* cmd = app.add_subcommand(
       "compare", "Render a triangulation with one or more methods and compare each render with the original");
-  add_render_options(cmd, c.req);
+  add_render_options(cmd, c.cli);
   cmd->remove_option(cmd->get_option("--method"));
   std::vector<std::string> method_choices = method_names();
   method_choices.push_back("all");
   cmd->add_option("-m,--method", c.methods, "Interpolation methods, or 'all' (default: bilinear)")
       ->check(CLI::IsMember(method_choices));
-  cmd->add_option("--save", c.save, "Also write each render as <dir>/<method>.png")->check(CLI::ExistingDirectory);
+  cmd->add_option("--save", c.save, "Also write each render as <dir>/<method>.png (the directory is created)");
   cmd->add_option("--original", c.original,
                   "Original image (optional with --engine core: the core's render is then measured against the "
                   "reference's alone)");
@@ -322,7 +190,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchCommand& c) {
   auto* cmd = app.add_subcommand(
       "bench",
       "Render repeatedly after a warm-up; print the median ms per frame (wall and CPU), the fastest, and Mpixel/s");
-  add_render_options(cmd, c.req);
+  add_render_options(cmd, c.cli);
   cmd->add_option("--runs", c.runs, "Timed renders (default: as many as fit in about 2 s, 5 to 200)")
       ->check(CLI::Range(1, 100000));
   cmd->add_flag("--json", c.json, "Print one JSON object");
@@ -337,21 +205,24 @@ CLI::App* add_metrics_command(CLI::App& app, MetricsCommand& c) {
       ->check(CLI::IsMember({"gaussian", "8x8"}))
       ->capture_default_str();
   cmd->add_flag("--json", c.json, "Print one JSON object");
+  cmd->add_option("--max-mse", c.max_mse, "Exit 1 unless the MSE is at most this")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--min-psnr", c.min_psnr, "Exit 1 unless the PSNR (dB; identical images: infinite) is at least this");
   return cmd;
 }
 
 // Writes what the render produces: with the core, the frame in its pixel format (a PNG of the
 // decoded values, RGB for every format but l8, or with --raw the bytes themselves).
 int run_render(RenderCommand& c) {
-  const Input in = read_input(c.req.input, needs_mesh(c.req));
-  resolve_blob_request(in, c.req, c.req.command->count("--method") > 0);
-  check_engine_options(c.req);
-  check_render_size(in.tri, c.req);
+  RenderRequest& req = parse_request(c.cli);
+  const Input in = read_input(req.input, needs_mesh(req));
+  resolve_blob_request(in, req, req.was_given("--method"));
+  check_engine_options(req);
+  check_render_size(in.tri, req);
   int width = 0, height = 0;
   double ms = 0;
-  if (c.req.engine == "core") {
+  if (req.engine == "core") {
     const auto t0 = std::chrono::steady_clock::now();
-    const CoreFrame frame = core_frame(in, c.req);
+    const CoreFrame frame = core_frame(in, req);
     ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (c.raw)
       write_file_atomically(c.output,
@@ -360,12 +231,12 @@ int run_render(RenderCommand& c) {
       write_png(c.output, frame_to_image(frame));
     width = frame.width, height = frame.height;
   } else {
-    const Rendered r = render(in, c.req);
+    const Rendered r = render(in, req);
     write_png(c.output, r.image);
     width = r.image.width, height = r.image.height, ms = r.ms;
   }
   std::fprintf(stderr, "trisim: %s %dx%d with %s (%s) in %.1f ms\n", c.output.c_str(), width, height,
-               c.req.method.c_str(), c.req.engine.c_str(), ms);
+               req.method.c_str(), req.engine.c_str(), ms);
   return exit_ok;
 }
 
@@ -435,27 +306,49 @@ void print_comparison(const Comparison& cmp, const RenderRequest& req, const Ssi
   std::fflush(stdout);
 }
 
+// `--method all` with the core: the methods the core renders for this input (a blob's own, or
+// bilinear and zienkiewicz), and a note on stderr naming the ones skipped.
+std::vector<std::string> core_methods_of_all(const Input& in) {
+  const std::vector<std::string> all = method_names();
+  std::vector<std::string> kept = core_method_names(), skipped;
+  if (in.is_blob()) kept = {std::string(to_string(in.blob_method))};
+  for (const std::string& m : all)
+    if (std::find(kept.begin(), kept.end(), m) == kept.end()) skipped.push_back(m);
+  std::string text;
+  for (const std::string& m : skipped) text += (text.empty() ? "" : ", ") + m;
+  std::fprintf(stderr, "trisim: --method all with --engine core: %s %s; skipped: %s\n",
+               in.is_blob() ? "the blob is packed for" : "the core renders", kept.size() == 1 ? kept[0].c_str()
+                                                                                               : "bilinear and zienkiewicz",
+               text.c_str());
+  return kept;
+}
+
 int run_compare(CompareCommand& c) {
-  const Input in = read_input(c.req.input, true);
+  RenderRequest& base = parse_request(c.cli);
+  const Input in = read_input(base.input, true);
   const bool methods_given = !c.methods.empty();
+  if (in.is_blob() && !base.was_given("--engine")) base.engine = "core";
   if (c.methods.empty()) c.methods = {in.is_blob() ? std::string(to_string(in.blob_method)) : "bilinear"};
-  if (std::find(c.methods.begin(), c.methods.end(), "all") != c.methods.end()) c.methods = method_names();
-  for (const std::string& method : c.methods) {
-    c.req.method = method;
-    resolve_blob_request(in, c.req, methods_given);
+  if (std::find(c.methods.begin(), c.methods.end(), "all") != c.methods.end())
+    c.methods = base.engine == "core" ? core_methods_of_all(in) : method_names();
+  for (const std::string& method : c.methods) {  // every method checked before anything is printed
+    RenderRequest one = base;
+    one.method = method;
+    resolve_blob_request(in, one, methods_given);
+    check_engine_options(one);
   }
-  check_engine_options(c.req);
-  if (c.original.empty() && c.req.engine != "core")
+  if (c.original.empty() && base.engine != "core")
     throw UsageError("--original: required unless --engine core (which is measured against the reference)");
   const Triangulation& tri = in.tri;
-  check_render_size(tri, c.req);
+  check_render_size(tri, base);
+  if (!c.save.empty()) make_directories(c.save, "--save");
   const SsimOptions so = ssim_options(c.window);
   std::size_t vertices = 0, triangles = 0;
   for (const Mesh& mesh : tri.layers) vertices += mesh.vertex_count(), triangles += mesh.triangles.size();
   if (!c.json) std::printf("%-14s %-10s %10s %10s %9s %10s\n", "method", "engine", "mse", "psnr_db", "ssim", "ms");
   Image original;
   for (const std::string& method : c.methods) {
-    RenderRequest req = c.req;
+    RenderRequest req = base;
     req.method = method;
     const Comparison cmp = compare_method(in, req, c, so, original);
     if (!c.save.empty()) write_png(c.save + "/" + method + ".png", cmp.render.image);
@@ -505,24 +398,25 @@ Timings time_frames(const std::function<int()>& once, int runs) {
 }
 
 int run_bench(BenchCommand& c) {
-  const Input in = read_input(c.req.input, needs_mesh(c.req));
-  resolve_blob_request(in, c.req, c.req.command->count("--method") > 0);
-  check_engine_options(c.req);
+  RenderRequest& req = parse_request(c.cli);
+  const Input in = read_input(req.input, needs_mesh(req));
+  resolve_blob_request(in, req, req.was_given("--method"));
+  check_engine_options(req);
   const Triangulation& tri = in.tri;
-  check_render_size(tri, c.req);
+  check_render_size(tri, req);
   std::function<int()> once;  // renders one frame, returns its pixel count
   std::optional<CoreRenderer> core_renderer;
   CoreFrame frame;
   std::vector<std::uint8_t> blob;  // read in place by the core: outlives core_renderer
   std::optional<Timings> v1;       // a compressed blob: the same frames from its v1 expansion
   std::size_t v1_ram = 0;
-  if (c.req.engine == "core") {
+  if (req.engine == "core") {
     blob = in.compressed ? in.compressed_bytes
            : in.is_blob() ? in.blob
-                          : pack_blob(tri, parse_core_method(c.req.method), c.req.input);
-    core_renderer.emplace(blob, core_options(tri, c.req), c.req.input);
+                          : pack_blob(tri, parse_core_method(req.method), req.input);
+    core_renderer.emplace(blob, core_options(tri, req), req.input);
     if (in.compressed) {
-      CoreRenderer expanded(in.blob, core_options(tri, c.req), c.req.input);
+      CoreRenderer expanded(in.blob, core_options(tri, req), req.input);
       CoreFrame v1_frame;
       v1 = time_frames(
           [&] {
@@ -538,7 +432,7 @@ int run_bench(BenchCommand& c) {
     };
   } else {
     once = [&] {
-      const Image image = render(in, c.req).image;
+      const Image image = render(in, req).image;
       return image.width * image.height;
     };
   }
@@ -548,8 +442,8 @@ int run_bench(BenchCommand& c) {
   const double mpix = t.pixels / (median * 1e-3) * 1e-6;
   if (c.json) {
     nlohmann::json j;
-    j["method"] = c.req.method;
-    j["engine"] = c.req.engine;
+    j["method"] = req.method;
+    j["engine"] = req.engine;
     j["runs"] = t.ms.size();
     j["pixels"] = t.pixels;
     j["ms_median"] = median;
@@ -557,8 +451,8 @@ int run_bench(BenchCommand& c) {
     j["cpu_ms_median"] = cpu_median;
     j["mpix_per_s"] = mpix;
     if (core_renderer) {
-      j["tile"] = c.req.tile;
-      j["format"] = c.req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : c.req.format;
+      j["tile"] = req.tile;
+      j["format"] = req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : req.format;
       j["ram_bytes"] = core_renderer->tile_buffer_bytes() + core_renderer->workspace_bytes();
       // A compressed blob renders from its streams; its v1 expansion's frames are timed beside.
       if (v1) {
@@ -572,7 +466,7 @@ int run_bench(BenchCommand& c) {
     std::printf("%s\n", j.dump().c_str());
   } else {
     std::printf("%s %s: median %.3f ms per frame over %zu runs (CPU %.3f ms, fastest %.3f ms), %.1f Mpixel/s\n",
-                c.req.method.c_str(), c.req.engine.c_str(), median, t.ms.size(), cpu_median, fastest, mpix);
+                req.method.c_str(), req.engine.c_str(), median, t.ms.size(), cpu_median, fastest, mpix);
     if (v1)
       std::printf("from the stream: RAM %zu bytes; its v1 blob: median %.3f ms (CPU %.3f ms), RAM %zu bytes + blob %zu "
                   "bytes; CPU ratio %.3f\n",
@@ -594,7 +488,16 @@ int run_metrics(const MetricsCommand& c) {
   const Metrics m = compare_images(a2, b, so);
   if (c.json) std::printf("%s\n", metrics_json(m, so).dump().c_str());
   else print_metrics(m, so);
-  return exit_ok;
+  bool met = true;
+  if (c.max_mse && !(m.mse <= *c.max_mse)) {
+    std::fprintf(stderr, "trisim: MSE %.6f is above --max-mse %g\n", m.mse, *c.max_mse);
+    met = false;
+  }
+  if (c.min_psnr && !(m.psnr >= *c.min_psnr)) {
+    std::fprintf(stderr, "trisim: PSNR %.4f dB is below --min-psnr %g\n", m.psnr, *c.min_psnr);
+    met = false;
+  }
+  return met ? exit_ok : exit_check_failed;
 }
 
 }  // namespace
@@ -606,14 +509,17 @@ int main(int argc, char** argv) {
   CompareCommand compare_c;
   BenchCommand bench_c;
   MetricsCommand metrics_c;
+  GoldenCommand golden_c;
   const CLI::App* render_cmd = add_render_command(app, render_c);
   const CLI::App* compare_cmd = add_compare_command(app, compare_c);
   const CLI::App* bench_cmd = add_bench_command(app, bench_c);
   add_metrics_command(app, metrics_c);
+  const CLI::App* golden_cmd = add_golden_command(app, golden_c);
   return run_tool("trisim", app, argc, argv, [&]() -> int {
     if (*render_cmd) return run_render(render_c);
     if (*bench_cmd) return run_bench(bench_c);
     if (*compare_cmd) return run_compare(compare_c);
+    if (*golden_cmd) return run_golden(golden_c);
     return run_metrics(metrics_c);
   });
 }
