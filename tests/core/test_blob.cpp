@@ -208,7 +208,7 @@ TEST_CASE("TS_PARAMS_INIT and ts_params_init give the C++ defaults, and need onl
     return p.output_width == 0 && p.output_height == 0 && p.viewport.x0 == 0 && p.viewport.y0 == 0 &&
            p.viewport.x1 == 0 && p.viewport.y1 == 0 && p.tile_width == 0 && p.tile_height == 0 &&
            p.format == TS_FORMAT_UNSET && p.dither == 0 && p.background[0] == 0 && p.background[1] == 0 &&
-           p.background[2] == 0 && p.packed_tiles == 0 && p.fit == TS_FIT_STRETCH;
+           p.background[2] == 0 && p.packed_tiles == 0 && p.fit == TS_FIT_STRETCH && p.target_stride == 0 && p.target == nullptr;
   };
   CHECK(all_default(from_function));
   CHECK(all_default(from_macro));

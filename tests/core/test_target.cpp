@@ -31,7 +31,7 @@ core::RenderParams params_of(const CoreOptions& o, Tiling t) {
   p.tile_height = std::uint16_t(t.h);
   p.format = o.format;
   p.dither = o.dither;
-  for (auto& c : p.background) c = o.background;
+  for (int c = 0; c < 3; ++c) p.background[c] = o.background.rgb[c];
   return p;
 }
 
