@@ -27,7 +27,7 @@
 //     bit 6+k: this triangle owns the pixel of corner k (meaningful only with bit 3+k).
 //
 // Version 1 was this layout without the checksum (bytes 36..39 zero); open_blob refuses it with
-// Status::bad_version (docs/FORMAT.md, "The blob").
+// Status::bad_version (docs/FORMAT.md, "The blob": the checksum, the versions, the cost).
 #include <stddef.h>
 #include <stdint.h>
 
@@ -98,7 +98,7 @@ struct BlobError {
 // the version (bad_version, 4), the header size (bad_header, 6) and the total size (truncated, 8),
 // which locate the checksum; then the checksum over [0, total size) (bad_checksum, offset
 // blob_checksum_offset); then every other field. So a damaged blob is reported as damaged, and the
-// field checks see only the bytes the packer wrote (or a blob sealed with a wrong content).
+// field checks see only bytes whose checksum matches (a packer's, or damage sealed again).
 Status open_blob(const void* bytes, size_t size, Blob* out, BlobError* error = nullptr);
 
 }  // namespace tristream::core
