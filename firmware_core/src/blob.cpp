@@ -2,6 +2,7 @@
 #include "tristream/blob.h"
 
 #include "blob_header.h"
+#include "crc32.h"
 #include "tristream/detail/bytes.h"
 #include "tristream/fixed_point.h"
 
@@ -31,9 +32,16 @@ const char* status_text(Status s) {
     case Status::tile_buffer_too_small: return "tile buffer too small (see tile_buffer_size)";
     case Status::workspace_too_small: return "workspace too small (see workspace_size)";
     case Status::stopped: return "stopped by the sink";
+    case Status::bad_checksum: return "checksum mismatch: the blob is damaged";
     case Status::not_compiled: return "pixel format, method, colour space or layering not compiled into this core (config.h)";
   }
   return "unknown status";
+}
+
+uint32_t blob_checksum(const void* bytes, uint32_t total) {
+  const uint8_t* b = static_cast<const uint8_t*>(bytes);
+  const uint32_t after = blob_checksum_offset + 4;
+  return detail::crc32(detail::crc32(0, b, blob_checksum_offset), b + after, total - after);
 }
 
 namespace {
@@ -133,8 +141,12 @@ Status open_blob(const void* bytes, size_t size, Blob* out, BlobError* error) {
   if (b[0] != 'T' || b[1] != 'S' || b[2] != 'T' || b[3] != 'B') return c.fail(Status::bad_magic, 0);
   detail::SharedHeader h;
   uint32_t at = 0;
-  const Status shared = detail::check_shared_header(b, size, blob_version, blob_header_size, &h, &at);
-  if (shared != Status::ok) return c.fail(shared, at);
+  Status s = detail::check_frame(b, size, blob_version, blob_header_size, &h.total, &at);
+  if (s != Status::ok) return c.fail(s, at);
+  if (load_u32(b + blob_checksum_offset) != blob_checksum(b, h.total))
+    return c.fail(Status::bad_checksum, blob_checksum_offset);
+  s = detail::check_fields(b, &h, &at);
+  if (s != Status::ok) return c.fail(s, at);
   c.size = h.total;
 
   Blob blob;
@@ -146,12 +158,12 @@ Status open_blob(const void* bytes, size_t size, Blob* out, BlobError* error) {
   blob.method = h.method;
   blob.layer_count = h.layer_count;
   blob.values_per_vertex = h.values_per_vertex;
-  for (uint32_t k = 36; k < blob_header_size; ++k)
+  for (uint32_t k = blob_checksum_offset + 4; k < blob_header_size; ++k)
     if (b[k] != 0) return c.fail(Status::bad_header, k);
   const uint32_t table = load_u32(b + 28);
   if (!c.section_ok(table, blob.layer_count, blob_layer_entry_size)) return c.fail(Status::bad_section, 28);
   for (uint32_t l = 0; l < blob.layer_count; ++l) {
-    Status s = check_layer(c, blob, table + l * blob_layer_entry_size, &blob.layers[l]);
+    s = check_layer(c, blob, table + l * blob_layer_entry_size, &blob.layers[l]);
     if (s != Status::ok) return s;
   }
   *out = blob;

@@ -35,6 +35,7 @@ TS_SAME_STATUS(TS_TILE_BUFFER_TOO_SMALL, tile_buffer_too_small)
 TS_SAME_STATUS(TS_NOT_COMPILED, not_compiled)
 TS_SAME_STATUS(TS_WORKSPACE_TOO_SMALL, workspace_too_small)
 TS_SAME_STATUS(TS_STOPPED, stopped)
+TS_SAME_STATUS(TS_BAD_CHECKSUM, bad_checksum)
 #undef TS_SAME_STATUS
 
 using namespace tristream_c_api;

@@ -896,6 +896,7 @@ Status expand_compressed_blob(const CompressedBlob& blob, void* out, size_t out_
       return s;
     }
   }
+  store_u32(b + blob_checksum_offset, blob_checksum(b, uint32_t(size)));
   // The decoder's checks are those of open_blob; it confirms them on the result.
   Blob check;
   BlobError where;

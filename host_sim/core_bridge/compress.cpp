@@ -12,6 +12,7 @@
 #include <string>
 
 #include "common/errors.h"
+#include "core_bridge/blob_error.h"
 #include "tristream/blob.h"
 #include "tristream/compressed_blob.h"
 
@@ -523,8 +524,7 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
   core::Blob blob;
   core::BlobError error;
   const core::Status s = core::open_blob(v1.data(), v1.size(), &blob, &error);
-  if (s != core::Status::ok)
-    throw DataError(std::string(name) + ": byte " + std::to_string(error.offset) + ": " + core::status_text(s));
+  if (s != core::Status::ok) throw DataError(blob_error_message(name, v1, s, error.offset));
   const std::size_t table = core::compressed_header_size;
   std::vector<std::uint8_t> out(table + core::compressed_layer_entry_size * blob.layer_count, 0);
   std::copy(v1.begin() + 12, v1.begin() + 36, out.begin() + 12);  // the fields both forms share

@@ -296,6 +296,7 @@ std::vector<std::uint8_t> pack_blob(const Triangulation& tri, core::Method metho
     }
   }
   put32(b, 32, std::uint32_t(tallest));
+  put32(b, core::blob_checksum_offset, core::blob_checksum(b.data(), std::uint32_t(b.size())));
   return b;
 }
 

@@ -6,6 +6,7 @@
 
 #include "common/activity.h"
 #include "common/errors.h"
+#include "core_bridge/blob_error.h"
 #include "core_bridge/pack.h"
 
 namespace tristream {
@@ -39,7 +40,7 @@ CoreRenderer::CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions
   const core::Status s = compressed_ ? core::open_compressed_blob(blob.data(), blob.size(), &compressed_blob_, &error)
                                      : core::open_blob(blob.data(), blob.size(), &blob_, &error);
   auto data_error = [&](core::Status st) {
-    return DataError(std::string(name) + ": byte " + std::to_string(error.offset) + ": " + core::status_text(st));
+    return DataError(blob_error_message(name, blob, st, error.offset));
   };
   if (s != core::Status::ok) throw data_error(s);
   if (compressed_) {

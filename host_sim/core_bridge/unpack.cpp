@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "core_bridge/blob_error.h"
 #include "geometry/mesh_check.h"
 #include "tristream/compressed_blob.h"
 #include "tristream/detail/bytes.h"
@@ -77,8 +78,7 @@ core::Blob open_blob_or_throw(std::span<const std::uint8_t> bytes, std::string_v
   core::Blob blob;
   core::BlobError error;
   const core::Status s = core::open_blob(bytes.data(), bytes.size(), &blob, &error);
-  if (s != core::Status::ok)
-    throw DataError(std::string(name) + ": byte " + std::to_string(error.offset) + ": " + core::status_text(s));
+  if (s != core::Status::ok) throw DataError(blob_error_message(name, bytes, s, error.offset));
   return blob;
 }
 
@@ -133,8 +133,7 @@ std::vector<std::uint8_t> expand_compressed_or_throw(std::span<const std::uint8_
     workspace.assign(std::max<std::size_t>(core::expand_workspace_size(blob), 1), 0);
     s = core::expand_compressed_blob(blob, out.data(), out.size(), workspace.data(), workspace.size(), &error);
   }
-  if (s != core::Status::ok)
-    throw DataError(std::string(name) + ": byte " + std::to_string(error.offset) + ": " + core::status_text(s));
+  if (s != core::Status::ok) throw DataError(blob_error_message(name, bytes, s, error.offset));
   if (workspace_bytes) *workspace_bytes = core::expand_workspace_size(blob);
   return out;
 }

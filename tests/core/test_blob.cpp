@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Blob validation: every kind of damage is reported with its status and byte offset, and the
 // core never reads outside the bytes it is given (run under ASan: the blob is copied into a
-// buffer of exactly its size).
+// buffer of exactly its size). The damage is sealed with a new checksum (seal_blob) to reach the
+// checks behind it; test_blob_checksum.cpp has the damage the checksum refuses.
 #include <catch2/catch.hpp>
 
 #include <cstring>
 
+#include "../support/blob_seal.h"
 #include "core_support.h"
 #include "tristream/tristream.h"
 
@@ -18,8 +20,10 @@ std::vector<std::uint8_t> sample_blob(core::Method method = core::Method::zienki
   return pack_blob(single_mesh(random_lattice_mesh(40, 30, 60, 5, 10, 3), 40, 30, ColorSpace::rgb), method);
 }
 
+// Opens `bytes` sealed with their checksum (when their total size allows).
 core::Status open(const std::vector<std::uint8_t>& bytes, std::uint32_t* offset = nullptr) {
   std::vector<std::uint8_t> exact(bytes);  // heap block of exactly this size
+  seal_blob(exact.data(), exact.size());
   core::Blob blob;
   core::BlobError error;
   const core::Status s = core::open_blob(exact.data(), exact.size(), &blob, &error);
@@ -51,7 +55,7 @@ TEST_CASE("damaged headers are named with their offset") {
   };
   CHECK(damaged(0, 'X') == core::Status::bad_magic);
   CHECK(at == 0);
-  CHECK(damaged(4, 2) == core::Status::bad_version);
+  CHECK(damaged(4, 3) == core::Status::bad_version);
   CHECK(at == 4);
   CHECK(damaged(20, 5) == core::Status::config_mismatch);
   CHECK(at == 20);
@@ -61,6 +65,8 @@ TEST_CASE("damaged headers are named with their offset") {
   CHECK(damaged(18, 2) == core::Status::bad_header);
   CHECK(damaged(40, 1) == core::Status::bad_header);
   CHECK(at == 40);
+  CHECK(damaged(63, 1) == core::Status::bad_header);
+  CHECK(at == 63);
   CHECK(damaged(13, 0x10) == core::Status::too_large);  // width 4096 + 40
   CHECK(at == 12);
   {
@@ -154,6 +160,7 @@ TEST_CASE("random damage never crashes open or render") {
     for (int k = 0; k < flips; ++k) b[rng() % b.size()] = std::uint8_t(rng());
     if (trial % 7 == 0) b.resize(rng() % b.size());
     std::vector<std::uint8_t> exact(b);
+    seal_blob(exact.data(), exact.size());
     core::Blob blob;
     if (core::open_blob(exact.data(), exact.size(), &blob) != core::Status::ok) continue;
     ++opened;

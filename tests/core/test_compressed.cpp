@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "../support/blob_seal.h"
 #include "core_bridge/compress.h"
 #include "core_support.h"
 #include "io/tri_file.h"
@@ -167,6 +168,7 @@ TEST_CASE("any valid v1 blob round-trips: rotated triangles, value fractions, su
     // Interior vertices move by a sub-pixel step where the triangles stay positive.
     std::vector<std::uint8_t> moved = v1;
     moved[pos + 4 * v] = std::uint8_t(moved[pos + 4 * v] ^ 5);
+    seal_blob(moved.data(), moved.size());
     core::Blob blob;
     if (core::open_blob(moved.data(), moved.size(), &blob) == core::Status::ok) v1 = moved;
   }
@@ -178,6 +180,7 @@ TEST_CASE("any valid v1 blob round-trips: rotated triangles, value fractions, su
     p[6] = std::uint8_t(p[6] ^ (t % 7 == 0 ? 0x55 : 0));
     p[7] = std::uint8_t(p[7] ^ (t % 11 == 0 ? 1 : 0));
   }
+  seal_blob(v1.data(), v1.size());
   core::Blob blob;
   REQUIRE(core::open_blob(v1.data(), v1.size(), &blob) == core::Status::ok);
   round_trip(v1, {{8, 8}, {0, 0}});
@@ -355,6 +358,7 @@ TEST_CASE("triangles no triangulation has (repeated, overlapping, far corners) r
     } else {
       continue;
     }
+    seal_blob(trial.data(), trial.size());
     core::Blob blob;
     if (core::open_blob(trial.data(), trial.size(), &blob) == core::Status::ok) {
       v1 = trial;

@@ -2,10 +2,15 @@
 // Fuzz target of the core: blob validation, then (for blobs that pass) sizing and rendering
 // with parameters taken from the first 4 bytes. Validation must reject or accept without
 // reading outside the input; rendering a validated blob must stay inside its buffers.
+// The bytes are opened twice: as they are (the checksum refuses nearly every mutation), then
+// sealed with their checksum (tests/support/blob_seal.h), so that mutations reach the field
+// checks behind it and the renderer.
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
+#include "../support/blob_seal.h"
 #include "tristream/render.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -14,7 +19,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint8_t* p = data;
   std::vector<std::uint8_t> bytes(data + 4, data + size);  // exactly sized: ASan sees overreads
   core::Blob blob;
-  if (core::open_blob(bytes.data(), bytes.size(), &blob) != core::Status::ok) return 0;
+  const bool raw_ok = core::open_blob(bytes.data(), bytes.size(), &blob) == core::Status::ok;
+  tristream::testing::seal_blob(bytes.data(), bytes.size());
+  if (core::open_blob(bytes.data(), bytes.size(), &blob) != core::Status::ok) {
+    if (raw_ok) std::abort();  // sealing a blob that opened changes nothing
+    return 0;
+  }
   core::RenderParams params;
   params.tile_width = std::uint16_t(p[0] % 70);
   params.tile_height = std::uint16_t(p[1] % 70);

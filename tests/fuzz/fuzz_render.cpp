@@ -9,11 +9,16 @@
 // (bit 0 output size from bytes 4, 5; bit 1 viewport from bytes 6..9; bit 2 tile buffer size
 // changed by the signed byte 10; bit 3 workspace size changed by the signed byte 11; bits 4, 5 the
 // fit, 3 being no fit, which must be refused); 12 background.
+//
+// The blob is sealed with its checksum before it is opened (tests/support/blob_seal.h): a mutated
+// blob would otherwise end at the checksum and never reach the renderer (fuzz_blob opens the bytes
+// as they are too).
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
 
+#include "../support/blob_seal.h"
 #include "tristream/render.h"
 
 namespace {
@@ -94,6 +99,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size < header) return 0;
   const std::uint8_t* p = data;
   std::vector<std::uint8_t> bytes(data + header, data + size);  // exactly sized: ASan sees overreads
+  tristream::testing::seal_blob(bytes.data(), bytes.size());
   core::Blob blob;
   if (core::open_blob(bytes.data(), bytes.size(), &blob) != core::Status::ok) return 0;
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Remakes tests/fuzz/corpus/render: each .tri of tests/fuzz/corpus/tri packed by tripack for both
-# core methods, behind a few 16-byte parameter headers (the layout is in fuzz_render.cpp).
+# core methods, behind a few 16-byte parameter headers (the layout is in fuzz_render.cpp). The
+# regression inputs found by fuzzing (render_*.bin) stay.
 # Usage: tests/fuzz/make_render_corpus.sh BIN_DIR
 set -euo pipefail
 bin=${1:?usage: make_render_corpus.sh BIN_DIR}
@@ -9,8 +10,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 out=$here/corpus/render
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-rm -rf "$out"
 mkdir -p "$out"
+rm -f "$out"/*-bilinear-*.bin "$out"/*-zienkiewicz-*.bin  # what this script makes; render_*.bin are kept
 # format|dither, tile w, tile h, flags, out w, out h, viewport x0 y0 x1 y1, tile delta, work delta, background, 3 spare
 headers=(
   '\x01\x10\x10\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00\x00'

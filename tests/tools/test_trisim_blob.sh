@@ -3,7 +3,8 @@
 # trisim render|compare|bench of a blob (tripack's output) as well as a .tri: the core draws the
 # blob's own bytes (the same pixels as the .tri packed for that method), compare measures it
 # against the reference of the mesh read back and against an original, bad blobs exit 65 naming
-# the byte. A compressed blob (tripack --compress) is expanded by the core and then draws the v1
+# the byte (a damaged v1 blob: its checksum at byte 36; one of version 1, from before the checksum:
+# what to do). A compressed blob (tripack --compress) is expanded by the core and then draws the v1
 # blob's pixels; a damaged one exits 65 with the byte offset the decoder reports.
 # Usage: test_trisim_blob.sh BIN_DIR SOURCE_DIR
 set -uo pipefail
@@ -129,6 +130,24 @@ for cmd in render compare bench; do
   expect 65 "version.bin: byte 4: unsupported blob version" "$bin/trisim" $cmd "$tmp/version.bin" "${out[@]}"
   expect 65 "short.bin: byte 8: blob truncated" "$bin/trisim" $cmd "$tmp/short.bin" "${out[@]}"
   expect 65 "magic-only.bin: byte 4: blob truncated" "$bin/trisim" $cmd "$tmp/magic-only.bin" "${out[@]}"
+  expect 65 "version1-grey-bilinear.bin: byte 4: version 1 blob without checksum: pack it again with tripack" \
+    "$bin/trisim" $cmd "$src/tests/core/version1-grey-bilinear.bin" "${out[@]}"
+done
+# One bit flipped anywhere past the header's size fields: the checksum at byte 36, with the CRC-32 the
+# header records and the one the bytes have, as zlib computes it over bytes 0..35 and 40..end.
+size=$(wc -c <"$tmp/grey.bin")
+for at in 12 35 40 63 64 1000 $((size - 1)); do
+  cp "$tmp/grey.bin" "$tmp/flip.bin"
+  python3 -c 'import sys; p, at = sys.argv[1], int(sys.argv[2]); b = bytearray(open(p, "rb").read()); b[at] ^= 0x10; open(p, "wb").write(b)' \
+    "$tmp/flip.bin" $at
+  crcs=$(python3 -c 'import sys, zlib; b = open(sys.argv[1], "rb").read()
+print("the header records CRC-32 0x%08X, bytes 0..%d have 0x%08X" % (int.from_bytes(b[36:40], "little"), len(b) - 1, zlib.crc32(b[:36] + b[40:])))' \
+    "$tmp/flip.bin")
+  for cmd in render compare bench; do
+    out=(-o "$tmp/x.png")
+    [ $cmd = render ] || out=()
+    expect 65 "flip.bin: byte 36: checksum mismatch: the blob is damaged ($crcs)" "$bin/trisim" $cmd "$tmp/flip.bin" "${out[@]}"
+  done
 done
 # Damaged compressed blobs: the header's offset, or the offset where the decoder stood when a
 # check failed: never before the damaged byte (it has to be read first), never past the end.
@@ -153,9 +172,13 @@ for at in 100 1000 5000 $(($(wc -c <"$tmp/grey-c.bin") - 100)); do
 done
 
 # A vertex pushed outside the domain (the first x of the positions, which follow the 64-byte
-# header and the 32-byte layer entry).
+# header and the 32-byte layer entry): a checksum mismatch, and with the checksum written again
+# (zlib's CRC-32), the vertex.
 cp "$tmp/bilinear.bin" "$tmp/outside.bin"
 poke "$tmp/outside.bin" 97 377
+expect 65 "outside.bin: byte 36: checksum mismatch" "$bin/trisim" compare "$tmp/outside.bin"
+python3 -c 'import sys, zlib; p = sys.argv[1]; b = bytearray(open(p, "rb").read()); b[36:40] = zlib.crc32(b[:36] + b[40:]).to_bytes(4, "little"); open(p, "wb").write(b)' \
+  "$tmp/outside.bin"
 expect 65 "outside.bin: byte 96: vertex outside the domain" "$bin/trisim" compare "$tmp/outside.bin"
 [ -e "$tmp/x.png" ] && { echo "FAIL: a bad blob left an output"; failures=$((failures + 1)); }
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The memory interface between the bench-mcu harness (host) and the benchmark program it runs on
    the emulated Cortex-M4 (m4/bench_main.cpp). The harness writes a bench_params into the
-   program's bench_params_in, calls bench_prepare() and then bench_render(), and reads the
+   program's bench_params_in, calls bench_open(), bench_prepare() and bench_render(), and reads the
    bench_result in bench_result_out. Both sides are little-endian
    with 4-byte alignment of uint32_t, so the layouts are the same (checked by the asserts). */
 #ifndef TRISTREAM_BENCH_MCU_PROTOCOL_H
@@ -23,7 +23,7 @@ typedef struct bench_params {
 } bench_params;
 
 /* Stages the program reached; a failing call leaves the stage of the last success. */
-enum { BENCH_STAGE_NONE = 0, BENCH_STAGE_PREPARED = 1, BENCH_STAGE_RENDERED = 2 };
+enum { BENCH_STAGE_NONE = 0, BENCH_STAGE_OPENED = 1, BENCH_STAGE_PREPARED = 2, BENCH_STAGE_RENDERED = 3 };
 
 /* Why prepare failed besides a core status: the buffers do not fit the RAM left for them. */
 #define BENCH_STATUS_NO_ROOM 0x100u

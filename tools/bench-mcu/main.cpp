@@ -130,12 +130,14 @@ Digest host_digest(const std::vector<std::uint8_t>& blob, const bench_params& p)
 struct Outcome {
   bool ran = false;
   std::string skipped;
+  RunCounts open_counts;  // bench_open: open_blob or open_compressed_blob, as ts_open
   RunCounts counts;
   bench_result result{};
   std::uint32_t stack_bytes = 0;
 };
 
-// Prepares and renders one configuration on `emu`; the stack is painted between the two calls.
+// Opens, prepares and renders one configuration on `emu`; the open and the render are counted, the
+// stack is painted before the render.
 Outcome run_on(M4Emulator& emu, const ElfImage& elf, const std::vector<std::uint8_t>& blob, const bench_params& p) {
   const std::uint32_t top = elf.symbol("__stack_top").address, limit = elf.symbol("__stack_limit").address;
   const std::uint32_t params_at = elf.symbol("bench_params_in").address,
@@ -146,6 +148,10 @@ Outcome run_on(M4Emulator& emu, const ElfImage& elf, const std::vector<std::uint
   const ElfSymbol& sink = elf.symbol("bench_sink");
   emu.exclude(sink.address, sink.address + sink.size);
   Outcome o;
+  o.open_counts = emu.call(elf.symbol("bench_open").address, top);
+  emu.read(result_at, &o.result, sizeof o.result);
+  if (o.result.stage != BENCH_STAGE_OPENED)
+    throw std::runtime_error("M4: open failed: " + std::string(core::status_text(core::Status(o.result.status))));
   emu.call(elf.symbol("bench_prepare").address, top);
   emu.read(result_at, &o.result, sizeof o.result);
   if (o.result.stage != BENCH_STAGE_PREPARED) {
@@ -197,6 +203,8 @@ struct Row {
   bool compressed;
   double cycles_per_pixel;
   std::uint32_t stack;
+  std::size_t blob_bytes;
+  std::uint64_t open_cycles;
 };
 
 std::string fmt(double v, const char* f = "%.0f") {
@@ -246,6 +254,22 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
                     cell(zs).c_str(), ratio(z2, b2).c_str(), ratio(bs, b2).c_str(), ratio(zs, z2).c_str(),
                     ratio(b2d, b2).c_str(), ratio(z2d, z2).c_str(), bytes(s2).c_str(), bytes(ss).c_str());
       }
+  // What opening each blob costs (open_blob checks every byte of a v1 blob and its CRC-32;
+  // open_compressed_blob the header and the layer table), once per mesh, method, level and kind.
+  std::printf("\nModelled Cortex-M4 cycles of ts_open (open_blob, open_compressed_blob)\n");
+  std::printf("%-9s %-12s %-3s %-10s | %9s %11s %15s\n", "mesh", "method", "opt", "blob", "bytes", "cycles",
+              "cycles per byte");
+  std::vector<const Row*> opened;
+  for (const Row& r : rows) {
+    bool seen = false;
+    for (const Row* o : opened)
+      seen |= o->mesh == r.mesh && o->method == r.method && o->opt == r.opt && o->compressed == r.compressed;
+    if (seen) continue;
+    opened.push_back(&r);
+    std::printf("%-9s %-12s %-3s %-10s | %9zu %11llu %15s\n", r.mesh.c_str(), r.method.c_str(), r.opt.c_str(),
+                r.compressed ? "compressed" : "v1", r.blob_bytes, static_cast<unsigned long long>(r.open_cycles),
+                fmt(per(r.open_cycles, double(r.blob_bytes)), "%.2f").c_str());
+  }
   // The compressed blobs against the v1 blobs of the same meshes (rendered from the streams).
   bool any = false;
   for (const Row& r : rows) any |= r.compressed;
@@ -354,6 +378,10 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
               const Digest m4{o.result.hash_a, o.result.hash_b, o.result.tiles};
               const Digest host = host_digest(blob, p);
               const double pixels = double(ow) * oh;
+              const Counts& oc = o.open_counts.counted;
+              j["open_instructions"] = oc.instructions;
+              j["open_cycles"] = oc.cycles;
+              j["open_cycles_per_byte"] = round2(per(oc.cycles, double(run_blob.size())));
               const Counts& c = o.counts.counted;
               j["instructions"] = c.instructions;
               j["cycles"] = c.cycles;
@@ -388,7 +416,9 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
               if (check_counts) {
                 const Outcome slow = run_on(*prog.checker, prog.elf, run_blob, p);
                 const Counts& s = slow.counts.counted;
+                const Counts& so = slow.open_counts.counted;
                 const bool same = s.instructions == c.instructions && s.cycles == c.cycles &&
+                                  so.instructions == oc.instructions && so.cycles == oc.cycles &&
                                   slow.counts.excluded.instructions == o.counts.excluded.instructions &&
                                   slow.counts.excluded.cycles == o.counts.excluded.cycles;
                 j["per_instruction_counts_equal"] = same;
@@ -437,7 +467,7 @@ int run(const std::string& elf_dir, const std::vector<std::string>& meshes, cons
               std::printf("%s\n", j.dump().c_str());
               std::fflush(stdout);
               rows.push_back({mesh_name, out_name, t.name, method, opt, p.dither != 0, is_compressed,
-                              per(c.cycles, pixels), o.stack_bytes});
+                              per(c.cycles, pixels), o.stack_bytes, run_blob.size(), oc.cycles});
               if (opt == "O2" && !p.dither)
                 panel_rows.push_back({mesh_name, out_name, t.name, method, kind, ow, oh, c.cycles});
             }

@@ -12,7 +12,7 @@ enum class [[nodiscard]] Status : uint8_t {
   null_argument,        // a required pointer was null
   truncated,            // the blob is shorter than its header or a section says
   bad_magic,            // the first four bytes are not "TSTB"
-  bad_version,          // format version not supported by this core
+  bad_version,          // format version not supported by this core (a v1 blob of version 1: no checksum)
   config_mismatch,      // packed for another sub-pixel or gradient precision
   bad_header,           // sizes, colour space, method, layer layout or reserved fields invalid
   bad_section,          // a section offset is misaligned, overlaps the header or runs past the end
@@ -27,6 +27,7 @@ enum class [[nodiscard]] Status : uint8_t {
   not_compiled,         // pixel format, method, colour space or layering left out of this build (config.h)
   workspace_too_small,  // workspace smaller than workspace_size() says (checked before the first tile)
   stopped,              // the sink stopped the frame (FrameSink returned false)
+  bad_checksum,         // the blob's bytes do not match the CRC-32 in its header: damaged
 };
 
 // A short English description, for logs.

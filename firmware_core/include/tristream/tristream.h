@@ -38,7 +38,8 @@ enum {
   TS_TILE_BUFFER_TOO_SMALL = 15,
   TS_NOT_COMPILED = 16,
   TS_WORKSPACE_TOO_SMALL = 17, /* checked before the first tile: no partial frame */
-  TS_STOPPED = 18              /* a ts_frame_sink returned 0 */
+  TS_STOPPED = 18,             /* a ts_frame_sink returned 0 */
+  TS_BAD_CHECKSUM = 19         /* the blob's bytes do not match its CRC-32: damaged; offset 36 */
 };
 
 /* Pixel formats (tristream/pixel_format.h has their bytes). 0 is no format: a zeroed ts_params
@@ -143,8 +144,12 @@ typedef struct ts_params {
 void ts_params_init(ts_params* params);
 
 /* Validates `size` bytes and fills `blob`. On failure *error_offset (if not null) is the byte
-   offset of the offending field. Returns TS_OK or a status code. The blob is read in place by
-   every later call: its bytes must stay where they are, unchanged, while `blob` is used. */
+   offset of the offending field. Returns TS_OK or a status code: TS_BAD_CHECKSUM for bytes that
+   do not match the blob's CRC-32, TS_BAD_VERSION for a blob of version 1 (no checksum: pack it
+   again with tripack). It reads every byte of the blob, twice (its CRC-32, then its fields;
+   docs/FORMAT.md has the cost): call it once, not once a frame, and keep `blob` for every frame.
+   The blob is read in place by every later call: its bytes must stay where they are, unchanged,
+   while `blob` is used. */
 ts_status ts_open(const void* bytes, size_t size, ts_blob* blob, uint32_t* error_offset);
 /* Bytes of tile buffer and of workspace needed for these parameters. */
 ts_status ts_tile_buffer_size(const ts_blob* blob, const ts_params* params, size_t* bytes);
