@@ -5,6 +5,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "tristream/config.h"  // first: in a C++ mode before C++17 its #error says so
+
 namespace tristream::core::detail {
 
 // The CRC of `n` bytes continued from `crc`, the CRC of the bytes before them (0 for none):
