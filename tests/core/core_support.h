@@ -50,6 +50,21 @@ inline Mesh random_subpixel_mesh(int w, int h, int n, std::uint32_t seed, bool c
 struct Tiling {
   int w, h;
 };
+// The core's parameters of a host render's options with the tiling t.
+inline core::RenderParams params_of(const CoreOptions& o, Tiling t) {
+  core::RenderParams p;
+  p.output_width = std::uint16_t(o.width);
+  p.output_height = std::uint16_t(o.height);
+  p.fit = o.fit;
+  p.viewport = o.viewport;
+  p.tile_width = std::uint16_t(t.w);
+  p.tile_height = std::uint16_t(t.h);
+  p.format = o.format;
+  p.dither = o.dither;
+  for (int c = 0; c < 3; ++c) p.background[c] = o.background.rgb[c];
+  return p;
+}
+
 inline const std::vector<Tiling>& all_tilings() {
   static const std::vector<Tiling> t = {{0, 0}, {1, 0}, {0, 1}, {8, 8}, {13, 7}, {32, 32}, {64, 64}, {0, 16}, {5, 1}};
   return t;

@@ -22,19 +22,6 @@ using namespace tristream::testing;
 
 namespace {
 
-core::RenderParams params_of(const CoreOptions& o, Tiling t) {
-  core::RenderParams p;
-  p.output_width = std::uint16_t(o.width);
-  p.output_height = std::uint16_t(o.height);
-  p.fit = o.fit;
-  p.viewport = o.viewport;
-  p.tile_width = std::uint16_t(t.w);
-  p.tile_height = std::uint16_t(t.h);
-  p.format = o.format;
-  p.dither = o.dither;
-  return p;
-}
-
 struct Sizes {
   core::Status status = core::Status::ok;
   std::uint32_t offset = 0;

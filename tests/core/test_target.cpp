@@ -21,20 +21,6 @@ using namespace tristream::testing;
 
 namespace {
 
-core::RenderParams params_of(const CoreOptions& o, Tiling t) {
-  core::RenderParams p;
-  p.output_width = std::uint16_t(o.width);
-  p.output_height = std::uint16_t(o.height);
-  p.fit = o.fit;
-  p.viewport = o.viewport;
-  p.tile_width = std::uint16_t(t.w);
-  p.tile_height = std::uint16_t(t.h);
-  p.format = o.format;
-  p.dither = o.dither;
-  for (int c = 0; c < 3; ++c) p.background[c] = o.background.rgb[c];
-  return p;
-}
-
 // A v1 or a compressed blob, opened, with the workspace its render needs.
 struct Opened {
   bool compressed = false;
