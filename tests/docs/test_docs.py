@@ -38,6 +38,24 @@ class ReadmeCiList(unittest.TestCase):
         self.assertEqual(listed, steps, "README.md's CI list differs from .ci/run's steps")
 
 
+class NoMergeMarkers(unittest.TestCase):
+    def test_no_conflict_markers_in_tracked_files(self):
+        files = subprocess.run(["git", "-C", str(ROOT), "ls-files", "-z"], capture_output=True,
+                               check=True).stdout.decode().split("\0")
+        marked = []
+        for name in filter(None, files):
+            path = ROOT / name
+            if not path.is_file():
+                continue
+            try:
+                text = path.read_text(encoding="utf-8")
+            except UnicodeDecodeError:
+                continue  # binary data
+            if re.search(r"^(<{7}|>{7}) ", text, re.M):
+                marked.append(name)
+        self.assertEqual(marked, [], "merge conflict markers left in these files")
+
+
 class PathsExist(unittest.TestCase):
     def test_every_quoted_repository_path_exists(self):
         missing = []
