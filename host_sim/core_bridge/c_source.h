@@ -64,6 +64,10 @@ std::string blob_c_header(const core::Blob& blob, const CBlobSpec& spec);
 // The compile-time refusals: a core of another precision, without the blob's method, colour space
 // or layering, or without the descriptor's format.
 std::string blob_c_guard(core::Method method, core::ColorSpace space, int layer_count, const CBlobSpec& spec);
+// A header's opening: its include guard (the symbol's own case, `prefix` + symbol + "_H"), the C
+// API's include, and an #error when <SYMBOL>_BYTES is defined already (a header of another blob
+// whose symbol differs only in case: the macros, in capitals, would clash).
+std::string blob_c_header_opening(const std::string& prefix, const std::string& symbol);
 // `static const uint8_t <name>[N] TS_BLOB_ATTRIBUTES = {...};` with the placement macros before it.
 std::string blob_c_bytes(const std::vector<std::uint8_t>& bytes, const std::string& name);
 // The definition of the ts_blob_descriptor spec.symbol over <symbol>_bytes (`blob`: width, height).

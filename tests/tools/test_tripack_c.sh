@@ -138,10 +138,35 @@ builds bands.c bands --tile-width 0 --tile-height 16 -f rgb888 --width 100 --hei
 tri=$src/tests/golden/ycbcr-layers.tri
 builds layers.c layers --compress -m zienkiewicz -f rgb565le --width 90 --height 70 --tile 12
 builds layers.c layers -f l8 --tile-width 20 --tile-height 0
+# Names of the standard headers' types and macros, and C++'s std: prefixed, so the C compiles.
+for name in NULL SIZE_MAX INT8_C std; do
+  builds "$name.c" "blob_$name"
+done
+for name in uint8_t size_t int32_t; do
+  builds "$name.c" "${name}_blob"
+done
+builds uint8_t.c uint8_t_blob --compress
+
+# photo.h and Photo.h are two headers: included together, the second stops with a message (its
+# macros would clash), not skipped by a shared include guard.
+for form in "" --compress; do
+  mkdir -p "$tmp/case$form"
+  "$tripack" "$tri" -o "$tmp/case$form/photo.c" $form >/dev/null && "$tripack" "$tri" -o "$tmp/case$form/Photo.c" $form >/dev/null ||
+    fail "tripack photo.c / Photo.c $form"
+  printf '#include "photo.h"\n#include "Photo.h"\nint main(void) { return 0; }\n' >"$tmp/case$form/both.c"
+  if "$cc" -std=c99 "${cflags[@]}" -c "$tmp/case$form/both.c" -o "$tmp/case$form/both.o" 2>"$tmp/err"; then
+    fail "photo.h and Photo.h $form compiled together (one skipped or the macros clash silently)"
+  elif ! grep -q "PHOTO_BYTES is defined already" "$tmp/err"; then
+    fail "photo.h and Photo.h $form: expected 'PHOTO_BYTES is defined already', got: $(head -c 300 "$tmp/err")"
+  else pass; fi
+  printf '#include "Photo.h"\nint main(void) { return Photo.size == 0; }\n' >"$tmp/case$form/one.c"
+  if "$cc" -std=c99 "${cflags[@]}" -c "$tmp/case$form/one.c" -o "$tmp/case$form/one.o" 2>"$tmp/err"; then pass
+  else fail "Photo.h $form alone does not compile: $(head -c 300 "$tmp/err")"; fi
+done
 tri=$src/tests/golden/rgb.tri
 
 # --symbol that cannot be a C name: usage error (64) naming the option.
-for bad in int 7x a-b __x _X ts_open main; do
+for bad in int 7x a-b __x _X ts_open main uint8_t size_t NULL SIZE_MAX INT8_C std my_t; do
   "$tripack" "$tri" -o "$tmp/bad.c" --symbol "$bad" >/dev/null 2>"$tmp/err"
   code=$?
   if [ $code -ne 64 ] || ! grep -q -- "--symbol" "$tmp/err"; then fail "--symbol '$bad' -> exit $code: $(cat "$tmp/err")"; else pass; fi
