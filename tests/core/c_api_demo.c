@@ -48,7 +48,7 @@ static long framebuffer_errors(void) {
 
 int main(void) {
   ts_blob blob;
-  ts_params params;
+  ts_params params = TS_PARAMS_INIT; /* then ts_params_init below, which must give the same */
   struct count c = {0, 0, 0};
   uint32_t offset = 0;
   ts_status s = ts_open(demo_blob.bytes, demo_blob.size, &blob, &offset);

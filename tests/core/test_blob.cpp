@@ -205,7 +205,7 @@ TEST_CASE("render parameters and buffers are checked") {
 
 TEST_CASE("TS_PARAMS_INIT and ts_params_init give the C++ defaults, and need only a format") {
   // Garbage first: ts_params_init must write every field, not rely on zeroed memory.
-  ts_params from_function;
+  ts_params from_function = TS_PARAMS_INIT;  // then overwritten with garbage
   std::memset(&from_function, 0xA5, sizeof from_function);
   ts_params_init(&from_function);
   ts_params from_macro = TS_PARAMS_INIT;

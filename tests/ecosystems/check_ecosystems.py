@@ -132,8 +132,7 @@ static void send_band(void* context, const ts_tile* tile) {{
 
 int main(void) {{
   ts_blob blob;
-  ts_params params;
-  ts_params_init(&params);
+  ts_params params = TS_PARAMS_INIT;
   params.format = TS_RGB565_BE;
   params.tile_height = 16;
   if (ts_open(blob_bytes, sizeof blob_bytes, &blob, (uint32_t*)0) != TS_OK) return 1;

@@ -13,7 +13,7 @@
 /* An installed core (cmake --install) records the configuration and the CPU it was built with in
    tristream/config_build.h, which its copy of this header includes (TRISTREAM_INSTALLED_CONFIG 1):
    the knobs below then take the library's values, a file that defines one otherwise is refused,
-   and so is a file compiled for another CPU or float ABI. The source tree has no such file. */
+   and so is a file compiled for another CPU or FPU calling convention. The source tree has no such file. */
 #define TRISTREAM_INSTALLED_CONFIG 0
 #if TRISTREAM_INSTALLED_CONFIG
 #include "tristream/config_build.h"

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   FILE* f;
   size_t size, tile_bytes, work_bytes;
   ts_blob blob;
-  ts_params params;
+  ts_params params = TS_PARAMS_INIT;
   ts_status s;
   uint32_t offset = 0;
   struct progress p = {0, 0, 0};

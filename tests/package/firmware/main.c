@@ -33,7 +33,7 @@ static void params_of(const ts_blob_descriptor* d, ts_params* p) {
 int main(void) {
   ts_blob blob;
   ts_compressed_blob cblob;
-  ts_params p;
+  ts_params p = TS_PARAMS_INIT;
   ts_buffers b;
   ts_status s;
   params_of(&ok, &p);
