@@ -15,7 +15,7 @@
 #include "triangle_records.h"
 #include "tristream/blob.h"
 #include "tristream/compressed_blob.h"
-#include "tristream/detail/arith.h"
+#include "arith.h"
 #include "tristream/fixed_point.h"
 #include "tristream/status.h"
 #include "workspace_layout.h"

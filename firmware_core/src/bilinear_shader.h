@@ -9,9 +9,9 @@
 #if TS_USE_SSE2
 #include <emmintrin.h>
 #endif
-#include "tristream/detail/arith.h"
-#include "tristream/detail/interpolate.h"
-#include "tristream/detail/unroll.h"
+#include "arith.h"
+#include "interpolate.h"
+#include "unroll.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {

@@ -3,7 +3,7 @@
 
 #include "blob_header.h"
 #include "crc32.h"
-#include "tristream/detail/bytes.h"
+#include "bytes.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core {

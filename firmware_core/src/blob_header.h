@@ -10,7 +10,7 @@
 
 #include "tristream/blob.h"
 #include "tristream/config.h"
-#include "tristream/detail/bytes.h"
+#include "bytes.h"
 #include "tristream/status.h"
 
 namespace tristream::core::detail {

@@ -4,8 +4,8 @@
 // tile (3 values per pixel), which is converted to the pixel format once all layers are drawn.
 #include <stdint.h>
 
-#include "tristream/detail/arith.h"
-#include "tristream/detail/pixel_writer.h"
+#include "arith.h"
+#include "pixel_conversion.h"
 #include "tristream/render.h"
 #include "tristream/tile.h"
 

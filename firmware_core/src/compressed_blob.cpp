@@ -7,7 +7,7 @@
 
 #include "blob_header.h"
 #include "range_decoder.h"
-#include "tristream/detail/bytes.h"
+#include "bytes.h"
 
 namespace tristream::core {
 

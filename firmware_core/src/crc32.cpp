@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "crc32.h"
 
-#include "tristream/detail/bytes.h"
+#include "bytes.h"
 
 namespace tristream::core::detail {
 

@@ -21,8 +21,8 @@
 #if TS_USE_SSE2
 #include <emmintrin.h>
 #endif
-#include "tristream/detail/arith.h"
-#include "tristream/detail/pixel_writer.h"
+#include "arith.h"
+#include "pixel_conversion.h"
 #include "tristream/fixed_point.h"
 #include "tristream/pixel_format.h"
 #include "tristream/tile.h"

@@ -9,9 +9,9 @@
 #include "shader.h"
 #include "triangle_view.h"
 #include "tristream/blob.h"
-#include "tristream/detail/arith.h"
-#include "tristream/detail/edge.h"
-#include "tristream/detail/unroll.h"
+#include "arith.h"
+#include "edge.h"
+#include "unroll.h"
 #include "tristream/fixed_point.h"
 #include "tristream/tile.h"
 

@@ -15,8 +15,8 @@
 #include "scan_row_masks_scalar.h"
 #endif
 #include "tristream/blob.h"
-#include "tristream/detail/edge.h"
-#include "tristream/detail/unroll.h"
+#include "edge.h"
+#include "unroll.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {

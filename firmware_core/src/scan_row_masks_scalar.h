@@ -3,7 +3,7 @@
 // RowMasks without SIMD: the covered columns of a scan-path box row, column by column. The SSE2
 // alternative is scan_row_masks_sse2.h; both give the same masks.
 #include <stdint.h>
-#include "tristream/detail/unroll.h"
+#include "unroll.h"
 
 namespace tristream::core::detail {
 namespace {

@@ -11,8 +11,8 @@
 #if TS_USE_SSE2
 #include <emmintrin.h>
 #endif
-#include "tristream/detail/arith.h"
-#include "tristream/detail/bytes.h"
+#include "arith.h"
+#include "bytes.h"
 #include "tristream/tile.h"
 
 namespace tristream::core::detail {

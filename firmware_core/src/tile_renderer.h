@@ -17,7 +17,7 @@
 #include "zienkiewicz_shader.h"
 #include "tristream/blob.h"
 #include "tristream/config.h"
-#include "tristream/detail/pixel_writer.h"
+#include "pixel_conversion.h"
 #include "tristream/render.h"
 
 namespace tristream::core::detail {

@@ -7,7 +7,7 @@
 #include <stdint.h>
 
 #include "tristream/blob.h"
-#include "tristream/detail/bytes.h"
+#include "bytes.h"
 
 namespace tristream::core::detail {
 namespace {

@@ -8,9 +8,9 @@
 #include "output_mapping.h"
 #include "triangle_records.h"
 #include "tristream/blob.h"
-#include "tristream/detail/arith.h"
-#include "tristream/detail/bytes.h"
-#include "tristream/detail/unroll.h"
+#include "arith.h"
+#include "bytes.h"
+#include "unroll.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {

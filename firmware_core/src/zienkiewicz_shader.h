@@ -12,9 +12,9 @@
 #if TS_USE_SSE2
 #include <emmintrin.h>
 #endif
-#include "tristream/detail/arith.h"
-#include "tristream/detail/bytes.h"
-#include "tristream/detail/interpolate.h"
+#include "arith.h"
+#include "bytes.h"
+#include "interpolate.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {

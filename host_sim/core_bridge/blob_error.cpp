@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "tristream/blob.h"
-#include "tristream/detail/bytes.h"
+#include "bytes.h"
 
 namespace tristream {
 

@@ -10,7 +10,7 @@
 #include "core_bridge/blob_error.h"
 #include "geometry/mesh_check.h"
 #include "tristream/compressed_blob.h"
-#include "tristream/detail/bytes.h"
+#include "bytes.h"
 
 namespace tristream {
 

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "tristream/detail/arith.h"
+#include "arith.h"
 
 using namespace tristream::core::detail;
 

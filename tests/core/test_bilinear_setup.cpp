@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <random>
 
-#include "tristream/detail/arith.h"
-#include "tristream/detail/interpolate.h"
+#include "arith.h"
+#include "interpolate.h"
 
 using namespace tristream::core::detail;
 

@@ -6,7 +6,7 @@
 #include <array>
 
 #include "core_support.h"
-#include "tristream/detail/pixel_writer.h"
+#include "pixel_conversion.h"
 
 using namespace tristream;
 using namespace tristream::testing;

@@ -11,7 +11,7 @@
 #include <random>
 
 #include "tristream/config.h"
-#include "tristream/detail/edge.h"
+#include "edge.h"
 
 using namespace tristream::core;
 using namespace tristream::core::detail;

@@ -11,9 +11,9 @@
 #include <random>
 #include <vector>
 
-#include "tristream/detail/arith.h"
-#include "tristream/detail/edge.h"
-#include "tristream/detail/interpolate.h"
+#include "arith.h"
+#include "edge.h"
+#include "interpolate.h"
 
 using namespace tristream::core;
 using namespace tristream::core::detail;

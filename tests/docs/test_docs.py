@@ -110,7 +110,7 @@ class FixedPointFigures(unittest.TestCase):
 
     def test_divider_correction_count(self):
         # The reciprocal division corrects its estimate once: the doc and the code's comment agree.
-        self.assertIn("at most\n// one correction", read("firmware_core/include/tristream/detail/arith.h"))
+        self.assertIn("at most\n// one correction", read("firmware_core/src/arith.h"))
         text = read("docs/FIXED_POINT.md")
         self.assertTrue("high multiply with one correction" in text, "docs/FIXED_POINT.md: Divider's correction")
         # PreinvRoundingDivider (Cortex-M) does correct up to twice; the Divider's own sentence must not say so.

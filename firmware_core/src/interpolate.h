@@ -7,8 +7,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "tristream/detail/arith.h"
-#include "tristream/detail/edge.h"
+#include "arith.h"
+#include "edge.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {

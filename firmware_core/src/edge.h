@@ -16,7 +16,7 @@
 #if TS_USE_SSE2
 #include <emmintrin.h>
 #endif
-#include "tristream/detail/arith.h"
+#include "arith.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {
