@@ -43,17 +43,7 @@ CoreRenderer::CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions
     return DataError(blob_error_message(name, blob, st, error.offset));
   };
   if (s != core::Status::ok) throw data_error(s);
-  if (compressed_) {
-    const core::CompressedBlob& c = compressed_blob_;
-    blob_.bytes = c.bytes;
-    blob_.size = c.size;
-    blob_.width = c.width;
-    blob_.height = c.height;
-    blob_.space = c.space;
-    blob_.method = c.method;
-    blob_.layer_count = c.layer_count;
-    blob_.values_per_vertex = c.values_per_vertex;
-  }
+  if (compressed_) static_cast<core::BlobInfo&>(blob_) = compressed_blob_;  // the header fields, no layers
   auto dimension = [](int v, const char* what) {
     if (v < 0 || v > core::config::max_dimension)
       throw UsageError(std::string(what) + " must be 0 to " + std::to_string(core::config::max_dimension));
