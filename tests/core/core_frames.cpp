@@ -15,6 +15,7 @@
 
 #include "bench_support.h"
 #include "core_bridge/pack.h"
+#include "core_bridge/pixel_format_names.h"
 #include "core_bridge/render_core.h"
 
 using namespace tristream;

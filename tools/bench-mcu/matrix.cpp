@@ -19,6 +19,7 @@
 #include "core_bridge/compress.h"
 #include "core_bridge/core_stack.h"
 #include "core_bridge/pack.h"
+#include "core_bridge/pixel_format_names.h"
 #include "elf_image.h"
 #include "emulated_render.h"
 #include "io/atomic_file.h"
@@ -208,7 +209,7 @@ json configuration_json(const Configuration& c) {
   j["tile"] = {c.tiling.w ? c.tiling.w : c.width(), c.tiling.h ? c.tiling.h : c.height()};
   j["method"] = c.blobs.method;
   j["opt"] = c.opt;
-  j["format"] = "rgb565be";
+  j["format"] = std::string(pixel_format_name(core::PixelFormat::rgb565_be));
   j["dither"] = c.dither;
   return j;
 }

@@ -12,6 +12,7 @@
 
 #include "common/errors.h"
 #include "common/json_name.h"
+#include "common/name_list.h"
 #include "common/tool_main.h"
 #include "core_bridge/compress.h"
 #include "core_bridge/pack.h"
@@ -22,6 +23,7 @@
 #include "io/limits.h"
 #include "io/tri_file.h"
 #include "metrics/metrics.h"
+#include "reference/fit_names.h"
 #include "reference/render.h"
 
 using namespace tristream;
@@ -117,16 +119,12 @@ void check_usage(const CLI::App& app) {
 CLI::Validator panel_fit() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        if (text == "stretch" || text == "inside" || text == "fill") return {};
-        if (text == "pixel" || text == "lsq")
-          return "expected stretch, inside or fill, found '" + text + "' (the vertex values are --values " + text + ")";
-        return "expected stretch, inside or fill, found '" + text + "'";
+        if (find_fit(text)) return {};
+        const std::string expected = "expected " + name_list(fit_names()) + ", found '" + text + "'";
+        if (text == "pixel" || text == "lsq") return expected + " (the vertex values are --values " + text + ")";
+        return expected;
       },
-      "stretch|inside|fill");
-}
-
-Fit parse_fit(const std::string& name) {
-  return name == "inside" ? Fit::inside : name == "fill" ? Fit::fill : Fit::stretch;
+      name_list(fit_names(), "|", "|"));
 }
 
 // The triangulation of the picture on the panel: positions moved by the picture's offset, the size
@@ -167,7 +165,7 @@ struct Command {
   double max_rms = 0;
   std::string color = "co", space = "rgb", cotri = "greedy", values = "lsq", rank = "total";
   int panel_width = 0, panel_height = 0;
-  std::string fit = "stretch", resampled, method = "bilinear", blob = "compressed";
+  std::string fit = std::string(fit_name(Fit::stretch)), resampled, method = "bilinear", blob = "compressed";
   long long max_bytes = 0;
   double sigma = -1;
   int relocate = EncodeOptions{}.relocate_passes;

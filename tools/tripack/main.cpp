@@ -14,6 +14,7 @@
 #include "core_bridge/compressed_c_source.h"
 #include "core_bridge/core_stack.h"
 #include "core_bridge/pack.h"
+#include "core_bridge/pixel_format_names.h"
 #include "core_bridge/render_core.h"
 #include "io/atomic_file.h"
 #include "io/tri_file.h"
@@ -28,7 +29,7 @@ struct Request {
   std::string input;
   std::string output;
   std::string method = "bilinear";
-  std::string format = "rgb565be";
+  std::string format = std::string(pixel_format_name(core::PixelFormat::rgb565_be));
   int tile = 32;
   int tile_width = -1;   // -1: --tile
   int tile_height = -1;
@@ -48,7 +49,7 @@ void add_options(CLI::App& app, Request& req) {
   app.add_option("-f,--format", req.format,
                  "Pixel format the RAM figure and the descriptor are for; a display on SPI (ST7789, ILI9341) "
                  "wants rgb565be, RGB565 high byte first")
-      ->check(CLI::IsMember({"l8", "rgb888", "rgb565le", "rgb565be", "xrgb8888"}))
+      ->check(CLI::IsMember(pixel_format_name_list()))
       ->capture_default_str();
   app.add_option("--tile", req.tile, "Square tile side the RAM figure is for (0 = full frame)")
       ->check(CLI::Range(0, core::config::max_dimension))
