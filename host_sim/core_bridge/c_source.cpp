@@ -246,7 +246,8 @@ std::string blob_c_header(const core::Blob& blob, const CBlobSpec& spec) {
          blob_c_header_opening("TRISTREAM_BLOB_", id) + blob_c_guard(blob.method, blob.space, blob.layer_count, spec) +
          "\n/* The blob's bytes (" + id + ".size): to size a copy of it, e.g. into RAM. */\n#define " + macro +
          "_BYTES " + std::to_string(blob.size) +
-         "u\n\n/* Buffer sizes that suffice for every render of this blob in " + std::string(pixel_format_name(spec.format)) +
+         "u\n\n/* Buffer sizes that suffice for every render of this blob in " +
+         std::string(pixel_format_name(spec.format)) +
          "\n   with an output of at most " + std::to_string(spec.output_width) + " x " +
          std::to_string(spec.output_height) + ", any fit and viewport of it and tiles of at most " + blob_c_tiles(spec) +
          " pixels:\n   static buffers of these sizes are always big enough. The descriptor holds the exact figures\n"

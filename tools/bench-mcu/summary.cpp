@@ -95,8 +95,11 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
 void print_stack_summary(const std::vector<Row>& rows, const std::vector<std::string>& methods) {
   for (const std::string& method : methods) {
     std::uint32_t most = 0, most_compressed = 0;
-    for (const Row& r : rows)
-      if (r.method == method) (r.compressed ? most_compressed : most) = std::max(r.compressed ? most_compressed : most, r.stack);
+    for (const Row& r : rows) {
+      if (r.method != method) continue;
+      std::uint32_t& m = r.compressed ? most_compressed : most;
+      m = std::max(m, r.stack);
+    }
     std::printf("largest stack high-water mark, %s: %u bytes (core_stack_bytes: %zu)\n", method.c_str(), most,
                 core_stack_bytes(parse_core_method(method)));
     if (most_compressed)

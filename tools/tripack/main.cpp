@@ -105,18 +105,18 @@ void write_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes
 // Writes -o: the blob (.bin), or the C source and its header (.c), whose descriptor has the figures
 // of a render of the whole output in the tiles asked for. `compressed` and `stream` (its render
 // from the streams) with --compress only.
-void write_outputs(const Request& req, const std::vector<std::uint8_t>& blob, const CoreRenderer& sizes,
-                   const Compressed* compressed, const CoreRenderer* stream) {
+void write_outputs(const Request& req, const CoreOptions& o, const std::vector<std::uint8_t>& blob,
+                   const CoreRenderer& sizes, const Compressed* compressed, const CoreRenderer* stream) {
   const bool c_source = std::filesystem::path(req.output).extension() == ".c";
   if (!c_source) return write_bytes(req.output, compressed ? compressed->bytes : blob);
   CBlobSpec spec;
   spec.symbol = req.symbol.empty() ? blob_symbol_of(req.output) : req.symbol;
   spec.source_name = std::filesystem::path(req.input).filename().string();
-  spec.format = parse_pixel_format(req.format);
+  spec.format = o.format;
   spec.output_width = req.width ? req.width : sizes.blob().width;
   spec.output_height = req.height ? req.height : sizes.blob().height;
-  spec.tile_width = req.tile_width >= 0 ? req.tile_width : req.tile;
-  spec.tile_height = req.tile_height >= 0 ? req.tile_height : req.tile;
+  spec.tile_width = o.tile_width;
+  spec.tile_height = o.tile_height;
   const std::string header = std::filesystem::path(req.output).replace_extension(".h").string();
   if (compressed) {
     spec.tile_buffer_bytes = stream->tile_buffer_bytes();
@@ -132,9 +132,8 @@ void write_outputs(const Request& req, const std::vector<std::uint8_t>& blob, co
   }
 }
 
-PackReport report_of(const Request& req, const std::vector<std::uint8_t>& blob, const CoreRenderer& sizes,
-                     const Compressed* compressed, const CoreRenderer* stream) {
-  const CoreOptions o = core_options(req);
+PackReport report_of(const Request& req, const CoreOptions& o, const std::vector<std::uint8_t>& blob,
+                     const CoreRenderer& sizes, const Compressed* compressed, const CoreRenderer* stream) {
   PackReport r;
   r.output = req.output;
   r.method = req.method;
@@ -182,8 +181,8 @@ int pack(const Request& req) {
   }
   const Compressed* c = compressed ? &*compressed : nullptr;
   const CoreRenderer* s = stream ? &*stream : nullptr;
-  write_outputs(req, blob, sizes, c, s);
-  const PackReport report = report_of(req, blob, sizes, c, s);
+  write_outputs(req, o, blob, sizes, c, s);
+  const PackReport report = report_of(req, o, blob, sizes, c, s);
   if (req.json) print_json(report);
   else print_text(report);
   return exit_ok;
