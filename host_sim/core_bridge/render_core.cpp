@@ -142,14 +142,13 @@ Image render_core(const Triangulation& tri, std::string_view method, const CoreO
   return frame_to_image(render_core_frame(tri, method, options, name));
 }
 
-core::PixelFormat parse_pixel_format(std::string_view name) {
-  if (name == "l8") return core::PixelFormat::l8;
-  if (name == "rgb888") return core::PixelFormat::rgb888;
-  if (name == "rgb565le") return core::PixelFormat::rgb565_le;
-  if (name == "rgb565be") return core::PixelFormat::rgb565_be;
-  if (name == "xrgb8888") return core::PixelFormat::xrgb8888;
-  throw UsageError("pixel format must be l8, rgb888, rgb565le, rgb565be or xrgb8888, not \"" + std::string(name) +
-                   "\"");
+core::Fit core_fit(Fit fit) {
+  switch (fit) {
+    case Fit::stretch: return core::Fit::stretch;
+    case Fit::inside: return core::Fit::inside;
+    case Fit::fill: return core::Fit::fill;
+  }
+  return core::Fit::stretch;
 }
 
 }  // namespace tristream
