@@ -11,7 +11,7 @@
 #endif
 #include "arith.h"
 #include "interpolate.h"
-#include "unroll.h"
+#include "tuning.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {
@@ -99,11 +99,10 @@ struct BilinearShader {
   // A writer that takes rounded values, without lanes: span's scalar path (begin moves v_ref).
   static constexpr bool rounded_scalar = Writer::takes_rounded && !in_lanes;
 
-  // Out of line with SSE2: GCC inlined it at one of rasterize's call sites from session 21 on,
-  // and rasterize's bilinear RGB888 loop then cost x86-64 up to +0.6 % instructions (dense
-  // meshes). Elsewhere as the compiler chooses (the Cortex-M4 code unchanged).
+  // Out of line with SSE2: inlined at one of rasterize's call sites it makes rasterize's bilinear
+  // RGB888 loop slower on x86-64. Elsewhere as the compiler chooses.
 #if TS_USE_SSE2
-  __attribute__((noinline))
+  TS_NOINLINE
 #endif
   void begin(const TriangleView& tv, const TriangleSetup& s) {
     xr = s.xr;
