@@ -78,7 +78,7 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& 
   // Only the methods compiled in (plan_frame rejects the others before any tile is drawn).
   if (blob.method == Method::bilinear) {
     if constexpr (config::methods & 1) {
-      BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
+      BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0, {}};
       draw_layer<Records>(list, map, rect, cull_columns, s);
     }
   } else {

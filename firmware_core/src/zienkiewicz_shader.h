@@ -10,12 +10,12 @@
 #include "triangle_view.h"
 #include "tristream/config.h"
 #include "tuning.h"
-#if TS_USE_SSE2
-#include <emmintrin.h>
-#endif
 #include "arith.h"
+#include "backend.h"
 #include "bytes.h"
 #include "interpolate.h"
+#include "portable/zienkiewicz_shader.h"
+#include "sse2/zienkiewicz_shader.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {
@@ -203,8 +203,11 @@ struct ZienkiewiczTriangle {
   }
 };
 
+// Forward-differenced rows with the channels in vector lanes where the platform has them:
+// backend::ZienkiewiczLanes (portable/zienkiewicz_shader.h, sse2/zienkiewicz_shader.h).
 template <int Channels, typename Writer>
 struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
+  using Lanes = backend::ZienkiewiczLanes<Channels, Writer>;
 #if TS_USE_SSE2
   Writer writer;
 #else
@@ -419,29 +422,10 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     auto* p = writer.at(x0, y);
     const int step = bpp;  // a local: the pixel stores could alias the member
     const uint32_t da = steps.dadx, db = steps.dbdx;
-#if TS_USE_SSE2
-    if constexpr (Writer::takes_rounded && Channels == 3) {
-      // Rounding to nearest folded into the values. The three channels in 32-bit lanes: three
-      // additions a pixel, the rounded values the lanes shifted down.
-      const int32_t last = x1 - xs;
-      zienkiewicz_row_chunks<3>(ch, a, b, da, db, x0 - xs, last, half, [&](int32_t n, int32_t end, CubicSteps* s) {
-        // The three channels' (v, d1, d2, d3) transposed into a vector of each.
-        static_assert(sizeof(CubicSteps) == 16, "four words a channel");
-        auto row = [&](int c) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(&s[c])); };
-        const __m128i r0 = row(0), r1 = row(1), r2 = row(2), zero = _mm_setzero_si128();
-        const __m128i t0 = _mm_unpacklo_epi32(r0, r1), t1 = _mm_unpacklo_epi32(r2, zero);
-        const __m128i t2 = _mm_unpackhi_epi32(r0, r1), t3 = _mm_unpackhi_epi32(r2, zero);
-        __m128i v = _mm_unpacklo_epi64(t0, t1), d1 = _mm_unpackhi_epi64(t0, t1), d2 = _mm_unpacklo_epi64(t2, t3);
-        const __m128i d3 = _mm_unpackhi_epi64(t2, t3);
-        for (; n <= end; ++n) {
-          writer.put_lanes(p, Writer::ordered(_mm_srai_epi32(v, vf)), xs + n, y, n != last);
-          p += step;
-          v = _mm_add_epi32(v, d1), d1 = _mm_add_epi32(d1, d2), d2 = _mm_add_epi32(d2, d3);
-        }
-      });
+    if constexpr (Lanes::active) {
+      Lanes::row(writer, ch, a, b, da, db, xs, x0, x1, y, p, step);
       return;
     }
-#endif
     if constexpr (Writer::takes_rounded) {
       // Rounding to nearest folded into the values; clamped here (rarely needed: the writer's
       // clamp then folds away).

@@ -3,7 +3,8 @@
 // (every target without SSE2, Cortex-M among them) and the SSE2 form (x86-64 hosts) must give the
 // same results for the same input. Here the tile cull's test (meeting: the bits of the triangles
 // that meet a tile's columns, also checked against a direct test) and the scan path's part (the
-// covered-column masks of every box row and the shader's set-up). The span path's row bounds are
+// covered-column masks of every box row and the shader's set-up), and the pixels the shaders' SSE2
+// lanes write against DirectWriter's (put_rounded). The span path's row bounds are
 // compared in test_span_stepper.cpp; the golden images run with each form (test_core_golden and
 // test_core_golden_portable). Without SSE2 (another host) the portable form is checked against the
 // direct test only.
@@ -16,8 +17,10 @@
 #include <vector>
 
 #include "tristream/config.h"
+#include "pixel_writers.h"
 #include "portable/scan_path.h"
 #include "portable/tile_cull.h"
+#include "sse2/pixel_writers.h"
 #include "sse2/scan_path.h"
 #include "sse2/tile_cull.h"
 #include "triangle_records.h"
@@ -248,5 +251,59 @@ TEST_CASE("the scan path's portable and SSE2 forms give the same masks and set-u
   }
   CHECK(checked > 5000);
 }
+
+#if TS_USE_SSE2
+// sse2::PixelLanes<F>::put_lanes and put_span_lanes against DirectWriter::put_rounded of the same
+// rounded values, in range and beyond it (clamped), with and without dithering.
+template <PixelFormat F>
+void check_pixel_lanes() {
+  std::mt19937 rng(static_cast<uint32_t>(F) + 7);
+  constexpr int bpp = bytes_per_pixel(F);
+  using Px = sse2::PixelLanes<F>;
+  for (int round = 0; round < 20000; ++round) {
+    const bool dither = round & 1;
+    const int32_t x = int32_t(rng() % 64), y = int32_t(rng() % 64);
+    int32_t r[3];
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t k = rng() % 8;
+      r[c] = k == 0 ? -int32_t(rng() % 70000) : (k == 1 ? 256 + int32_t(rng() % 70000) : int32_t(rng() % 256));
+    }
+    uint8_t want[8] = {}, got[8] = {};
+    DirectWriter<F, 3, false> w{want, 0, Rect{0, 0, 64, 64}, dither};
+    w.put_rounded(want, x, y, r);
+    Px::put_lanes(got, Px::ordered(_mm_setr_epi32(r[0], r[1], r[2], 0)), x, y, dither, false);
+    INFO("format " << int(F) << " values " << r[0] << " " << r[1] << " " << r[2] << " dither " << dither);
+    CHECK(std::memcmp(want, got, bpp) == 0);
+  }
+  // A span of q16_16 values (rounding offset included) in range, stepped.
+  for (int round = 0; round < 2000; ++round) {
+    const bool dither = round & 1;
+    const int32_t x0 = int32_t(rng() % 16), n = 1 + int32_t(rng() % 24), y = int32_t(rng() % 64);
+    uint32_t v[3], d[3];
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t end = rng() % (256u << 16), start = rng() % (256u << 16);
+      v[c] = start;
+      d[c] = uint32_t((int64_t(end) - start) / n);
+    }
+    uint8_t want[32 * 4 + 4] = {}, got[32 * 4 + 4] = {};
+    DirectWriter<F, 3, false> w{want, 0, Rect{0, 0, 64, 64}, dither};
+    for (int32_t i = 0; i < n; ++i) {
+      const int32_t q[3] = {int32_t((v[0] + d[0] * uint32_t(i)) >> 16), int32_t((v[1] + d[1] * uint32_t(i)) >> 16),
+                            int32_t((v[2] + d[2] * uint32_t(i)) >> 16)};
+      w.put_rounded(want + i * bpp, x0 + i, y, q);
+    }
+    Px::put_span_lanes(got, x0, x0 + n - 1, y, dither, Px::lanes(v[0], v[1], v[2], true), Px::lanes(d[0], d[1], d[2], false));
+    INFO("format " << int(F) << " span of " << n << " dither " << dither);
+    CHECK(std::memcmp(want, got, size_t(n * bpp)) == 0);
+  }
+}
+
+TEST_CASE("the SSE2 pixel lanes write DirectWriter's pixels") {
+  check_pixel_lanes<PixelFormat::rgb888>();
+  check_pixel_lanes<PixelFormat::rgb565_le>();
+  check_pixel_lanes<PixelFormat::rgb565_be>();
+  check_pixel_lanes<PixelFormat::xrgb8888>();
+}
+#endif
 
 }  // namespace

@@ -25,22 +25,20 @@ inline __m128i inclusive_edge_lanes(__m128i dx, __m128i dy, __m128i boundary) {
 // is four vector operations, with no branch.
 class RowSpans {
  public:
-  void init(const Edge* edges, const int32_t* /*ys*/, int32_t y0) {
-    SpanStepper s;
-    s.init(edges, y0);
-    const FloorStepper* b = s.bound;
+  TS_INLINE void init(const Edge* edges, const int32_t* /*ys*/, int32_t y0) {
+    bounds_.init(edges, y0);
+    const FloorStepper* b = bounds_.bound;
     q_ = _mm_setr_epi32(b[0].q, b[1].q, b[2].q, 0);
     r_ = _mm_setr_epi32(b[0].r, b[1].r, b[2].r, 0);
     den_ = _mm_setr_epi32(b[0].den, b[1].den, b[2].den, 1);
     q_step_ = _mm_setr_epi32(b[0].q_step, b[1].q_step, b[2].q_step, 0);
     r_step_ = _mm_setr_epi32(b[0].r_step, b[1].r_step, b[2].r_step, 0);
-    third_left_ = s.third_left;
   }
   TS_INLINE void begin_row(int32_t) {}
   TS_INLINE void span(int32_t, int32_t* x0, int32_t* x1) const {
     const int32_t q0 = _mm_cvtsi128_si32(q_), q1 = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 1));
     const int32_t v = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 2));
-    SpanStepper::columns(q0, q1, v, third_left_, x0, x1);
+    SpanStepper::columns(q0, q1, v, bounds_.third_left, x0, x1);
   }
   TS_INLINE void next_row() {
     // r < 2 den < 2^31, so the signed compare r > den - 1 is r >= den; a wrap is -1 in its lane.
@@ -51,8 +49,8 @@ class RowSpans {
   }
 
  private:
+  SpanStepper bounds_;  // sets the lanes up; its third_left is read per row
   __m128i q_, r_, den_, q_step_, r_step_;
-  bool third_left_;
 };
 
 }  // namespace tristream::core::detail::sse2

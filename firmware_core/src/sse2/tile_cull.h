@@ -22,7 +22,7 @@ namespace {
 // 0x1FF). PackedStoreRecords: a negative int32 among their 32 bytes (a flag record's two top bits
 // are set, a triangle's clear).
 template <typename Records>
-bool has_flag_record8(const uint8_t* p) {
+TS_INLINE inline bool has_flag_record8(const uint8_t* p) {
   auto at = [p](int i) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 16 * i)); };
   if constexpr (Records::stride == PackedStoreRecords::stride) {
     static_assert(int32_t(packed_flag_marker) < 0 && (packed_flag_marker << 1) >> 31 == 1, "the marker's top bits");
@@ -42,7 +42,7 @@ bool has_flag_record8(const uint8_t* p) {
 // triangle kept in error is clipped away exactly by rasterize, one missed would be wrong):
 // min(low, 65535) for max < low, max(high, 0) for min > high.
 template <typename Records>
-uint32_t meeting8(const uint8_t* p, const uint8_t* positions, int32_t low, int32_t high) {
+TS_INLINE inline uint32_t meeting8(const uint8_t* p, const uint8_t* positions, int32_t low, int32_t high) {
   // As the 16-bit lane it goes to (the same bits).
   auto x = [&](int j, int k) {
     return int16_t(load_u16(positions + 4 * size_t(Records::vertex(p + j * Records::stride, k))));
