@@ -5,7 +5,7 @@
 #include <stdint.h>
 
 #include "tristream/config.h"
-#include "tristream/render.h"
+#include "tristream/render_params.h"
 #include "tristream/tile.h"
 
 namespace tristream::core::detail {

@@ -18,7 +18,7 @@
 #include "tristream/blob.h"
 #include "tristream/config.h"
 #include "pixel_conversion.h"
-#include "tristream/render.h"
+#include "tristream/render_params.h"
 
 namespace tristream::core::detail {
 namespace {
