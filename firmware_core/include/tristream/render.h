@@ -20,7 +20,9 @@ Status tile_buffer_size(const Blob& blob, const RenderParams& params, size_t* by
 // Bytes of workspace `render` needs with these parameters: per layer, a bitmap of its active
 // triangles (one bit per triangle of the longest window from the oldest live to the newest
 // started triangle over all bands), plus, for layered blobs, a channel scratch of 6 bytes per
-// tile pixel. One pass over the triangles.
+// tile pixel, and 8 bytes for the alignment (a workspace starts with 1 to 8 bytes of padding to
+// the next 8-aligned address): exact for an 8-aligned workspace (one byte less is
+// workspace_too_small), enough at any alignment. One pass over the triangles.
 Status workspace_size(const Blob& blob, const RenderParams& params, size_t* bytes);
 
 // Renders the viewport tile by tile into `tile_buffer` (or in place into params.target) and passes
@@ -49,7 +51,8 @@ Status render(const Blob& blob, const RenderParams& params, const RenderBuffers&
 // each band's C, F and V and checks every stream to its end.
 Status tile_buffer_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes);
 // Bytes of scratch workspace_size(CompressedBlob) needs: 8 + align8(decoder) + align8(largest
-// ring) + 12 (bands + 1) + 2 x the largest layer's vertex count.
+// ring) + 12 (bands + 1) + 2 x the largest layer's vertex count (the 8 as for a workspace: exact
+// for an 8-aligned scratch, enough at any alignment).
 Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes);
 // Bytes of workspace `render` needs for this blob and these parameters (exact for an 8-aligned
 // workspace: one byte less is workspace_too_small). Decodes every stream: a damaged one returns
