@@ -6,7 +6,7 @@
 
 #include "tristream/config.h"
 #include "tuning.h"
-#include "tristream/render.h"
+#include "tristream/render_params.h"
 #include "tristream/tile.h"
 
 namespace tristream::core::detail {

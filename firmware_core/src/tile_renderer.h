@@ -19,7 +19,7 @@
 #include "tristream/config.h"
 #include "tuning.h"
 #include "pixel_conversion.h"
-#include "tristream/render.h"
+#include "tristream/render_params.h"
 
 namespace tristream::core::detail {
 namespace {
