@@ -8,10 +8,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "bench_support.h"
 #include "core_bridge/compress.h"
 #include "core_support.h"
 #include "io/tri_file.h"
+#include "scenes/bench_scenes.h"
 #include "tristream/compressed_blob.h"
 #include "tristream/render.h"
 #include "workspace_layout.h"
@@ -100,7 +100,7 @@ void check_every_alignment(const B& blob, const core::RenderParams& p, std::size
 }  // namespace
 
 TEST_CASE("v1 and compressed renders: workspace_size exact when 8-aligned, enough at any alignment") {
-  const Triangulation single = testing::bench_scene(4000);
+  const Triangulation single = scenes::bench_scene(4000);
   const Triangulation layers = read_tri_file(TRISTREAM_SOURCE_DIR "/data/demo/kodim23.ycbcr-layers.tri");
   for (const Triangulation* tri : {&single, &layers})
     for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz})
