@@ -15,6 +15,7 @@
 #include "frame_plan.h"
 #include "render_driver.h"
 #include "triangle_records.h"
+#include "tuning.h"
 #include "tristream/compressed_blob.h"
 #include "tristream/render.h"
 #include "workspace_layout.h"
@@ -30,6 +31,7 @@ struct LayerStream {
   DecodedTriangle held;  // decoded and not yet taken (its top row is past the last band's)
   uint32_t remaining;    // triangles not decoded yet
   bool has_held;
+  bool failed;           // its decoder stopped the frame (decoder.offset() is where)
 };
 static_assert(alignof(LayerStream) <= 8, "the workspace sections are 8-aligned");
 static_assert(__is_trivial(LayerDecoder) && __is_trivial(LayerStream),
@@ -94,7 +96,7 @@ class StreamLayers {
  public:
   using Records = detail::BandStoreRecords;
 
-  StreamLayers(const CompressedBlob& blob, BlobError* error) : blob_(blob), view_(header_view(blob)), error_(error) {}
+  explicit StreamLayers(const CompressedBlob& blob) : blob_(blob), view_(header_view(blob)) {}
   const Blob& view() const { return view_; }
 
   Status carve(const detail::FramePlan&, detail::WorkspaceCarver* ws, detail::ActiveSet* sets) {
@@ -102,6 +104,7 @@ class StreamLayers {
     for (int l = 0; l < blob_.layer_count; ++l) streams_[l] = take_stream_sections(blob_, l, ws, &tags[l]);
     // Every layer's fixed sections fit before any decoder begins.
     if (!ws->fits()) return Status::workspace_too_small;
+    for (int l = 0; l < blob_.layer_count; ++l) streams_[l]->failed = false;
     for (int l = 0; l < blob_.layer_count; ++l) {
       LayerStream* const at = streams_[l];
       const Status s = at->decoder.begin(blob_, l, stream_ring(at), align8(compressed_ring_bytes(blob_, l)));
@@ -120,11 +123,11 @@ class StreamLayers {
     return Status::ok;
   }
 
-  Status advance(const detail::Mapping& map, int32_t y0, int32_t y1, detail::ActiveSet* sets) {
+  TS_BAND_ADVANCE Status advance(const detail::Mapping& map, int32_t y0, int32_t y1, detail::ActiveSet* sets) {
     for (int l = 0; l < blob_.layer_count; ++l) {
       const Status s = advance_layer(*streams_[l], stores_[l], map, y0, y1);
       if (s != Status::ok) {
-        if (error_ && s != Status::workspace_too_small) error_->offset = streams_[l]->decoder.offset();
+        streams_[l]->failed = s != Status::workspace_too_small;
         return s;
       }
       // The bitmap's place and size follow the store's triangles, band by band.
@@ -137,10 +140,17 @@ class StreamLayers {
     return Status::ok;
   }
 
+  // After a frame that a stream stopped (a status other than ok, stopped or workspace_too_small
+  // from advance): the failing decoder's byte offset in the blob. Kept in the stream state, not
+  // here, so that the error pointer takes no room in the render's frame.
+  void report(BlobError* error) const {
+    for (int l = 0; l < detail::max_layers && l < blob_.layer_count; ++l)
+      if (streams_[l] && streams_[l]->failed) error->offset = streams_[l]->decoder.offset();
+  }
+
  private:
   const CompressedBlob& blob_;
   Blob view_;
-  BlobError* error_;
   LayerStream* streams_[detail::max_layers] = {};
   detail::BandStore stores_[detail::max_layers];
 };
@@ -303,8 +313,10 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
 
 Status render(const CompressedBlob& blob, const RenderParams& params, const RenderBuffers& buffers, FrameSink sink,
               void* context, BlobError* error) {
-  StreamLayers layers(blob, error);
-  return detail::render_frame(layers, params, buffers, sink, context);
+  StreamLayers layers(blob);
+  const Status s = detail::render_frame(layers, params, buffers, sink, context);
+  if (error && s != Status::ok && s != Status::stopped && s != Status::workspace_too_small) layers.report(error);
+  return s;
 }
 
 Status render(const CompressedBlob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,

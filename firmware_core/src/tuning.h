@@ -79,3 +79,13 @@
 #else
 #define TS_BILINEAR_BEGIN
 #endif
+
+// A compressed render's step between bands (its layer source's advance): out of line when
+// optimizing for size, where GCC otherwise keeps the decoding's locals in the render's frame,
+// under every tile's stack (core_compressed_stack_bytes); inlined for speed, where they share
+// the frame's slots.
+#if TS_SIZE
+#define TS_BAND_ADVANCE TS_NOINLINE
+#else
+#define TS_BAND_ADVANCE
+#endif
