@@ -80,6 +80,31 @@ inline bool tile_buffers_hold(const RenderParams& params, const FramePlan& r, co
   return params.target || b.tile_bytes >= size_t(r.tile_w) * r.tile_h * bytes_per_pixel(r.format);
 }
 
+// Whether the byte ranges [a, a + a_bytes) and [b, b + b_bytes) share no byte (an empty range
+// shares none). Written with differences, so no end address is formed (it could wrap).
+inline bool apart(const void* a, size_t a_bytes, const void* b, size_t b_bytes) {
+  const uintptr_t x = reinterpret_cast<uintptr_t>(a), y = reinterpret_cast<uintptr_t>(b);
+  return !a_bytes || !b_bytes || (x <= y ? y - x >= a_bytes : x - y >= b_bytes);
+}
+
+// Whether the memory a frame writes its pixels to (each tile buffer's tile_bytes, or the target's
+// bytes of the viewport) shares no byte with the workspace, nor the two tile buffers with each
+// other. The workspace holds the frame's state (a compressed blob's decoders, pointers included):
+// pixels written over it would corrupt the frame, not only its picture.
+inline bool buffers_apart(const RenderParams& params, const FramePlan& r, const RenderBuffers& b) {
+  if (params.target) {
+    const size_t rows = size_t(r.view.height());
+    const size_t step = size_t(r.target_stride < 0 ? -int64_t(r.target_stride) : int64_t(r.target_stride));
+    const size_t bytes = (rows - 1) * step + size_t(r.view.width()) * bytes_per_pixel(r.format);
+    const uint8_t* top = static_cast<const uint8_t*>(params.target);
+    const uint8_t* first = r.target_stride < 0 ? top - (rows - 1) * step : top;
+    return apart(first, bytes, b.workspace, b.workspace_bytes);
+  }
+  return apart(b.tile[0], b.tile_bytes, b.workspace, b.workspace_bytes) &&
+         (!b.tile[1] || (apart(b.tile[1], b.tile_bytes, b.workspace, b.workspace_bytes) &&
+                         (b.tile[1] == b.tile[0] || apart(b.tile[0], b.tile_bytes, b.tile[1], b.tile_bytes))));
+}
+
 // The buffers of a render call with one tile buffer.
 inline RenderBuffers single_buffers(void* tile_buffer, size_t tile_buffer_bytes, void* workspace,
                                     size_t workspace_bytes) {

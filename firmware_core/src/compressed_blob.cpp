@@ -854,6 +854,9 @@ Status expand_compressed_blob(const CompressedBlob& blob, void* out, size_t out_
   if (!out || !workspace) return Status::null_argument;
   const size_t size = expanded_blob_size(blob);
   if (out_bytes < size) return Status::workspace_too_small;
+  // The ring in the workspace is read while the blob is written: they must share no byte.
+  const uintptr_t o = reinterpret_cast<uintptr_t>(out), w = reinterpret_cast<uintptr_t>(workspace);
+  if (workspace_bytes && (o <= w ? w - o < out_bytes : o - w < workspace_bytes)) return Status::bad_params;
   uint8_t* b = static_cast<uint8_t*>(out);
   for (size_t i = 0; i < size; ++i) b[i] = 0;
   namespace h = wire::header;

@@ -44,6 +44,7 @@ __attribute__((always_inline)) inline Status render_frame(Source& source, const 
   Status s = plan_frame(view, params, &r);
   if (s != Status::ok) return s;
   if (!tile_buffers_hold(params, r, buffers)) return Status::tile_buffer_too_small;
+  if (!buffers_apart(params, r, buffers)) return Status::bad_params;
   ActiveSet sets[max_layers];
   int16_t* scratch;
   {  // the carver's scope ends before the band loop, which may then reuse its stack

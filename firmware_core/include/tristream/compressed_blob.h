@@ -135,7 +135,8 @@ size_t expanded_blob_size(const CompressedBlob& blob);
 size_t expand_workspace_size(const CompressedBlob& blob);
 // Decodes every layer into a v1 blob at `out` (expanded_blob_size bytes), which open_blob accepts
 // and which renders bit-identically to the v1 blob the stream was made from (its vertices are
-// numbered in the stream's raster order). `error` receives the offset of a failure.
+// numbered in the stream's raster order). `error` receives the offset of a failure. bad_params
+// when `out` (out_bytes) and the workspace (workspace_bytes) overlap.
 Status expand_compressed_blob(const CompressedBlob& blob, void* out, size_t out_bytes, void* workspace,
                               size_t workspace_bytes, BlobError* error = nullptr);
 

@@ -64,6 +64,9 @@ struct RenderParams {
 // Caller memory of a render: one tile buffer, or two that the tiles alternate between (double
 // buffering: the sink may hand a tile to a DMA transfer and return at once), none with a target
 // (RenderParams::target), and the workspace.
+// The buffers share no byte: render refuses with bad_params a tile buffer (tile_bytes; either of
+// two) or a target (its viewport's bytes) that overlaps the workspace (workspace_bytes), which
+// holds the frame's state, and two different tile buffers that overlap.
 struct RenderBuffers {
   void* tile[2] = {nullptr, nullptr};  // tile[1] null: every tile in tile[0]
   size_t tile_bytes = 0;               // bytes of each tile buffer (tile_buffer_size)

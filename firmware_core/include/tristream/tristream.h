@@ -155,7 +155,11 @@ ts_status ts_open(const void* bytes, size_t size, ts_blob* blob, uint32_t* error
 ts_status ts_tile_buffer_size(const ts_blob* blob, const ts_params* params, size_t* bytes);
 ts_status ts_workspace_size(const ts_blob* blob, const ts_params* params, size_t* bytes);
 /* Renders the viewport; each finished tile goes to sink(context, tile). The sink may be NULL
-   only with a target (ts_params.target); so may the tile buffer, in both calls. */
+   only with a target (ts_params.target); so may the tile buffer, in both calls. Every render call
+   (these two and ts_render_compressed) refuses with TS_BAD_PARAMS a tile buffer (its
+   tile_buffer_size bytes; with two, either of them) or a target (its viewport's bytes) that
+   shares a byte with the workspace (workspace_size bytes), and two tile buffers that share one:
+   the workspace holds the frame's state, which pixels must not overwrite. */
 ts_status ts_render(const ts_blob* blob, const ts_params* params, void* tile_buffer, size_t tile_buffer_size,
                     void* workspace, size_t workspace_size, ts_sink sink, void* context);
 /* The same with one or two tile buffers and a sink that may stop the frame. */
