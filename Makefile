@@ -30,13 +30,13 @@ run: tools
 
 # The mcu group first: the build finds unicorn and capstone when it configures (bench_mcu tests).
 test: deps
-	@bash tools/install-deps.sh experiments mcu ecosystems
+	@bash tools/install-deps.sh checks experiments mcu ecosystems
 	$(MAKE) build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
 # The tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer.
 test-sanitize: deps
-	@bash tools/install-deps.sh experiments ecosystems
+	@bash tools/install-deps.sh checks experiments ecosystems
 	cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DTRISTREAM_SANITIZE=ON -DTRISTREAM_BENCH=OFF
 	cmake --build build-sanitize -j$(JOBS)
 	cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --output-on-failure -j$(JOBS)

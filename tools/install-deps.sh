@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Installs the Debian packages a task needs, and only those that are missing.
-# Usage: tools/install-deps.sh [build|fuzz|cross|bench|mcu|experiments|ecosystems|browser|all]...   (default: build)
+# Usage: tools/install-deps.sh [build|checks|fuzz|cross|bench|mcu|experiments|ecosystems|browser|all]...   (default: build)
+# checks: universal-ctags, for the function-length check of make test (tests/tools/check_function_lengths.py).
 # browser: headless Chromium, for the check of the report page (make experiments-quick).
 # ecosystems: the Cortex-M4 compiler, arduino-builder and PyYAML of tests/ecosystems (make test).
 set -euo pipefail
 
 declare -A groups=(
   [build]="cmake make g++ pkg-config catch2 libstb-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev"
+  [checks]="universal-ctags python3"
   [fuzz]="clang-14 libclang-rt-14-dev"
   [cross]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-user file"
   [bench]="valgrind"
@@ -24,7 +26,7 @@ for group in "${@:-build}"; do
   elif [ -n "${groups[$group]:-}" ]; then
     wanted+=(${groups[$group]})
   else
-    echo "install-deps: unknown group '$group' (expected build, fuzz, cross, bench, mcu, experiments, ecosystems, browser or all)" >&2
+    echo "install-deps: unknown group '$group' (expected build, checks, fuzz, cross, bench, mcu, experiments, ecosystems, browser or all)" >&2
     exit 64
   fi
 done

@@ -1,7 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
-// Little-endian reads of unaligned bytes; compilers turn them into single loads.
+// Little-endian loads and stores of unaligned bytes, the only ones of the core and of the host's
+// packer and unpacker (wire_layout.h names where they go). Compilers turn the loads into single
+// loads; the stores are one memcpy each on a little-endian target, which compilers do not always
+// make of the byte stores.
 #include <stdint.h>
+#include <string.h>
 
 namespace tristream::core::detail {
 
@@ -10,5 +14,25 @@ inline uint32_t load_u32(const uint8_t* p) {
   return uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24);
 }
 inline int32_t load_i32(const uint8_t* p) { return int32_t(load_u32(p)); }
+
+// Stores the low 16 bits of v.
+inline void store_u16(uint8_t* p, uint32_t v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  const uint16_t x = uint16_t(v);
+  memcpy(p, &x, 2);
+#else
+  p[0] = uint8_t(v & 0xFFu);
+  p[1] = uint8_t((v >> 8) & 0xFFu);
+#endif
+}
+inline void store_u32(uint8_t* p, uint32_t v) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+  memcpy(p, &v, 4);
+#else
+  store_u16(p, v & 0xFFFFu);
+  store_u16(p + 2, v >> 16);
+#endif
+}
+inline void store_i32(uint8_t* p, int32_t v) { store_u32(p, uint32_t(v)); }
 
 }  // namespace tristream::core::detail

@@ -3,38 +3,21 @@
 // (docs/COMPRESSED_BLOB.md is the format; this file is its only reader).
 #include "tristream/compressed_blob.h"
 
-#include <string.h>
 
 #include "blob_header.h"
-#include "range_decoder.h"
+#include "layer_decoder_state.h"
 #include "bytes.h"
+#include "wire_layout.h"
 
 namespace tristream::core {
 
+using detail::LayerDecoderState;
 using detail::load_u16;
 using detail::load_u32;
+using detail::store_u16;
+using detail::store_u32;
 
 namespace {
-
-// Little-endian stores; on a little-endian target one (unaligned-safe) store each, which
-// compilers do not always make of the byte stores.
-void store_u16(uint8_t* p, uint32_t v) {
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-  const uint16_t x = uint16_t(v);
-  memcpy(p, &x, 2);
-#else
-  p[0] = uint8_t(v & 0xFFu);
-  p[1] = uint8_t((v >> 8) & 0xFFu);
-#endif
-}
-void store_u32(uint8_t* p, uint32_t v) {
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
-  memcpy(p, &v, 4);
-#else
-  store_u16(p, v & 0xFFFFu);
-  store_u16(p + 2, v >> 16);
-#endif
-}
 
 constexpr uint32_t align4(uint32_t n) { return (n + 3u) & ~3u; }
 
@@ -65,53 +48,49 @@ struct Fail {
 
 bool is_compressed_blob(const void* bytes, size_t size) {
   const uint8_t* b = static_cast<const uint8_t*>(bytes);
-  return b && size >= 4 && b[0] == 'T' && b[1] == 'S' && b[2] == 'T' && b[3] == 'C';
+  return b && size >= 4 && wire::has_magic(b + wire::header::magic, wire::compressed_magic);
 }
 
 Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out, BlobError* error) {
   if (!bytes || !out) return Status::null_argument;
   const uint8_t* b = static_cast<const uint8_t*>(bytes);
   const Fail fail{error};
-  if (size < compressed_header_size) return fail(Status::truncated, uint32_t(size));
-  if (!is_compressed_blob(b, size)) return fail(Status::bad_magic, 0);
-  detail::SharedHeader h;
-  uint32_t at = 0;
-  const Status shared = detail::check_shared_header(b, size, compressed_version, compressed_header_size, &h, &at);
-  if (shared != Status::ok) return fail(shared, at);
+  namespace h = wire::header;
+  namespace L = wire::compressed_layer;
+  if (size < h::bytes) return fail(Status::truncated, uint32_t(size));
+  if (!is_compressed_blob(b, size)) return fail(Status::bad_magic, h::magic);
   CompressedBlob blob;
   blob.bytes = b;
-  blob.size = h.total;
-  blob.width = h.width;
-  blob.height = h.height;
-  blob.space = h.space;
-  blob.method = h.method;
-  blob.layer_count = h.layer_count;
-  blob.values_per_vertex = h.values_per_vertex;
-  if (load_u32(b + 28) != compressed_header_size) return fail(Status::bad_section, 28);
-  blob.max_triangle_height = load_u32(b + 32);
-  for (uint32_t k = 36; k < compressed_header_size; ++k)
+  uint32_t at = 0;
+  const Status shared = detail::check_shared_header(b, size, compressed_version, h::bytes, &blob, &at);
+  if (shared != Status::ok) return fail(shared, at);
+  if (load_u32(b + h::layer_table) != h::bytes) return fail(Status::bad_section, h::layer_table);
+  blob.max_triangle_height = load_u32(b + h::max_triangle_height);
+  for (uint32_t k = h::compressed_reserved; k < h::bytes; ++k)
     if (b[k] != 0) return fail(Status::bad_header, k);
-  uint32_t next_stream = compressed_header_size + blob.layer_count * compressed_layer_entry_size;
-  if (next_stream > h.total) return fail(Status::truncated, 28);
+  uint32_t next_stream = h::bytes + blob.layer_count * L::bytes;
+  if (next_stream > blob.size) return fail(Status::truncated, h::layer_table);
   for (uint32_t l = 0; l < blob.layer_count; ++l) {
-    const uint32_t e = compressed_header_size + l * compressed_layer_entry_size;
+    const uint32_t e = h::bytes + l * L::bytes;
     CompressedLayer& layer = blob.layers[l];
-    layer.vertex_count = load_u32(b + e);
-    layer.triangle_count = load_u32(b + e + 4);
-    layer.stream_offset = load_u32(b + e + 8);
-    layer.stream_bytes = load_u32(b + e + 12);
-    layer.window = load_u32(b + e + 16);
-    layer.pinned = load_u32(b + e + 20);
-    for (uint32_t k = 24; k < compressed_layer_entry_size; ++k)
+    layer.vertex_count = load_u32(b + e + L::vertex_count);
+    layer.triangle_count = load_u32(b + e + L::triangle_count);
+    layer.stream_offset = load_u32(b + e + L::stream_offset);
+    layer.stream_bytes = load_u32(b + e + L::stream_bytes);
+    layer.window = load_u32(b + e + L::window);
+    layer.pinned = load_u32(b + e + L::pinned);
+    for (uint32_t k = L::reserved; k < L::bytes; ++k)
       if (b[e + k] != 0) return fail(Status::bad_header, e + k);
-    if (layer.vertex_count < 3 || layer.vertex_count > blob_max_vertices) return fail(Status::too_large, e);
-    if (layer.triangle_count < 1 || layer.triangle_count > blob_max_triangles) return fail(Status::too_large, e + 4);
+    if (layer.vertex_count < 3 || layer.vertex_count > blob_max_vertices)
+      return fail(Status::too_large, e + L::vertex_count);
+    if (layer.triangle_count < 1 || layer.triangle_count > blob_max_triangles)
+      return fail(Status::too_large, e + L::triangle_count);
     // Streams in layer order, each of at least the 4 bytes the decoder starts with.
     if (layer.stream_offset < next_stream || layer.stream_bytes < 4 ||
-        uint64_t(layer.stream_offset) + layer.stream_bytes > h.total)
-      return fail(Status::bad_section, e + 8);
-    if (layer.window < 3 || layer.window > layer.vertex_count) return fail(Status::bad_header, e + 16);
-    if (layer.pinned > layer.vertex_count) return fail(Status::bad_header, e + 20);
+        uint64_t(layer.stream_offset) + layer.stream_bytes > blob.size)
+      return fail(Status::bad_section, e + L::stream_offset);
+    if (layer.window < 3 || layer.window > layer.vertex_count) return fail(Status::bad_header, e + L::window);
+    if (layer.pinned > layer.vertex_count) return fail(Status::bad_header, e + L::pinned);
     layer.stream = b + layer.stream_offset;
     next_stream = layer.stream_offset + layer.stream_bytes;
   }
@@ -141,18 +120,18 @@ size_t compressed_tag_bytes(const CompressedBlob& blob, int layer) {
 }
 
 // A failure after the decoder ran past the stream's end is its truncation.
-Status LayerDecoder::fail(Status s) {
+Status LayerDecoderState::fail(Status s) {
   if (rc_.overrun) s = Status::truncated;
   failed_ = s;
   return s;
 }
 
-uint32_t LayerDecoder::offset() const {
+uint32_t LayerDecoderState::offset() const {
   if (!layer_) return 0;
   return layer_->stream_offset + uint32_t(rc_.p - layer_->stream);
 }
 
-Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, size_t ring_bytes, VertexSink sink,
+Status LayerDecoderState::begin(const CompressedBlob& blob, int layer, void* ring, size_t ring_bytes, VertexSink sink,
                            void* sink_context) {
   layer_ = nullptr;  // offset() is 0 after a failed begin
   if (layer < 0 || layer >= blob.layer_count) return Status::bad_params;
@@ -202,14 +181,14 @@ Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, si
   return Status::ok;
 }
 
-void LayerDecoder::keep_tags(uint16_t* tags) {
+void LayerDecoderState::keep_tags(uint16_t* tags) {
   tags_ = tags;
   if (!tags || !layer_) return;
   for (uint32_t i = 0; i < layer_->window + layer_->pinned; ++i) tags[i] = compressed_tag_none;
 }
 
 // The pinned slot of a vertex not yet in the ring, or 0xFFFFFFFF.
-uint32_t LayerDecoder::pinned_slot(uint32_t index) const {
+uint32_t LayerDecoderState::pinned_slot(uint32_t index) const {
   // next_pinned_ is the smallest index pending in a slot (decode_position takes it before it passes)
   if (index < decoded_ || index < next_pinned_) return 0xFFFFFFFFu;
   const uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
@@ -219,18 +198,18 @@ uint32_t LayerDecoder::pinned_slot(uint32_t index) const {
 }
 
 // The pinned record of a vertex not yet in the ring, or null.
-uint8_t* LayerDecoder::pinned_record(uint32_t index) const {
+uint8_t* LayerDecoderState::pinned_record(uint32_t index) const {
   const uint32_t i = pinned_slot(index);
   return i == 0xFFFFFFFFu ? nullptr : pins_ + size_t(i) * record_;
 }
 
 // The ring slot of the vertex `back` (1 .. window, the layer's) before vertex decoded_.
-__attribute__((always_inline)) inline uint32_t LayerDecoder::ring_slot(uint32_t back, uint32_t window) const {
+__attribute__((always_inline)) inline uint32_t LayerDecoderState::ring_slot(uint32_t back, uint32_t window) const {
   return slot_ >= back ? slot_ - back : slot_ + window - back;
 }
 
 // The tag of a vertex in the ring or pinned (as record()), or null. Inlined: three a triangle.
-__attribute__((always_inline)) inline uint16_t* LayerDecoder::tag_of(uint32_t index) const {
+__attribute__((always_inline)) inline uint16_t* LayerDecoderState::tag_of(uint32_t index) const {
   if (index >= decoded_) {
     const uint32_t i = pinned_slot(index);
     return i == 0xFFFFFFFFu ? nullptr : tags_ + layer_->window + i;
@@ -239,7 +218,7 @@ __attribute__((always_inline)) inline uint16_t* LayerDecoder::tag_of(uint32_t in
   return back > window ? nullptr : tags_ + ring_slot(back, window);
 }
 
-void LayerDecoder::find_next_pinned() {
+void LayerDecoderState::find_next_pinned() {
   const uint8_t* indices = pins_ + size_t(layer_->pinned) * record_;
   next_pinned_ = 0xFFFFFFFFu;
   for (uint32_t i = 0; i < layer_->pinned; ++i) {
@@ -250,7 +229,7 @@ void LayerDecoder::find_next_pinned() {
 
 // The record of a vertex: in the ring, or pinned ahead of it; null when it is in neither.
 // Inlined: it is called a dozen times per triangle.
-__attribute__((always_inline)) inline uint8_t* LayerDecoder::record(uint32_t index) const {
+__attribute__((always_inline)) inline uint8_t* LayerDecoderState::record(uint32_t index) const {
   if (index >= decoded_) return pinned_record(index);
   const uint32_t back = decoded_ - index, window = layer_->window;
   return back > window ? nullptr : ring_ + size_t(ring_slot(back, window)) * record_;
@@ -278,7 +257,7 @@ int32_t gradient_prediction(const uint8_t* p0, const uint8_t* p1, int nv, int c,
 // the row), at edges_at + 2 the distance to the first later vertex of the row in another 32-pixel
 // block of columns, or to the row's end. 0 means not set (the last row, still open). Both stay
 // below the window and point before decoded_, whatever the stream.
-void LayerDecoder::enter_row(uint32_t row) {
+void LayerDecoderState::enter_row(uint32_t row) {
   if (decoded_ != 0 && row == row_) return;
   const uint32_t end = decoded_, window = layer_->window;
   const uint32_t oldest = end >= window ? end - window + 1 : 0;  // slot_ is being taken by `end`
@@ -303,7 +282,7 @@ void LayerDecoder::enter_row(uint32_t row) {
   row_start_ = end;
 }
 
-Status LayerDecoder::decode_position() {
+Status LayerDecoderState::decode_position() {
   using namespace detail;
   const CompressedBlob& blob = *blob_;
   const int S = config::subpixel_bits;
@@ -361,13 +340,13 @@ Status LayerDecoder::decode_position() {
 // triangle's corners whose values are known; either may be null) or else from the last vertex
 // whose values were decoded.
 // Values per vertex are 1 or 3 (open_compressed_blob): one copy for each, its loops unrolled.
-Status LayerDecoder::decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1) {
+Status LayerDecoderState::decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1) {
   return blob_->values_per_vertex == 1 ? decode_values_of<1>(rec, index, p0, p1)
                                        : decode_values_of<3>(rec, index, p0, p1);
 }
 
 template <int PerVertex>
-Status LayerDecoder::decode_values_of(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1) {
+Status LayerDecoderState::decode_values_of(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1) {
   using namespace detail;
   const CompressedBlob& blob = *blob_;
   constexpr int nv = PerVertex;
@@ -439,7 +418,7 @@ Status LayerDecoder::decode_values_of(uint8_t* rec, uint32_t index, const uint8_
 
 // A corner not decoded yet: the positions up to it into the ring, or (a lift) its position alone
 // into the next pinned slot, whose vertex must have reached the ring.
-Status LayerDecoder::place(uint32_t index) {
+Status LayerDecoderState::place(uint32_t index) {
   using namespace detail;
   if (!decode_bit(rc_, m_.lift)) {
     while (decoded_ <= index) {
@@ -484,7 +463,7 @@ Status LayerDecoder::place(uint32_t index) {
 // The columns (1/16 pixel) where the third corner of a triangle on the edge a->s is looked for:
 // the edge's span widened by its length (L-infinity) and 2 pixels on each side; all of them when
 // a or s has no record.
-LayerDecoder::Columns LayerDecoder::columns(const uint8_t* ra, const uint8_t* rs) {
+LayerDecoderState::Columns LayerDecoderState::columns(const uint8_t* ra, const uint8_t* rs) {
   if (!ra || !rs) return Columns{0, 0xFFFF};
   const int32_t ax = load_u16(ra), ay = load_u16(ra + 2), sx = load_u16(rs), sy = load_u16(rs + 2);
   const int32_t dx = ax > sx ? ax - sx : sx - ax, dy = ay > sy ? ay - sy : sy - ay;
@@ -498,7 +477,7 @@ LayerDecoder::Columns LayerDecoder::columns(const uint8_t* ra, const uint8_t* rs
 // in 64 bits on pixel coordinates (differences below 2^12, so dot and cross below 2^25); ties keep
 // the first. 0xFFFFFFFF when a or s has no record or no candidate is on that side; its record in
 // *record_out (null when none).
-uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side, uint8_t** record_out) const {
+uint32_t LayerDecoderState::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side, uint8_t** record_out) const {
   const int nv = blob_->values_per_vertex;
   const int S = config::subpixel_bits;
   *record_out = nullptr;
@@ -544,7 +523,7 @@ uint32_t LayerDecoder::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs,
 // byte k (1 .. 255) says it and the k - 1 after it are used (values are never undecoded, and all of
 // them are below decoded_, so in the ring while it is); each run's first byte is set to the run's
 // length as the walk finds it (capped at 255), so later walks skip it in one step.
-uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
+uint64_t LayerDecoderState::fresh(uint32_t a, uint32_t count, Columns cols) {
   const int S = config::subpixel_bits;
   const uint32_t known_at = 4 + 2 * uint32_t(blob_->values_per_vertex);
   const uint32_t skips = edges_at(uint32_t(blob_->values_per_vertex));
@@ -601,7 +580,7 @@ uint64_t LayerDecoder::fresh(uint32_t a, uint32_t count, Columns cols) {
 // Records the edge from->to (from < to) of a decoded triangle whose third corner is on its
 // positive side or not: a side already known closes the edge (both triangles decoded), else it
 // becomes the most recent open edge of `from`, the oldest of two dropped.
-__attribute__((always_inline)) inline void LayerDecoder::add_edge(uint8_t* rec, uint32_t to, bool positive) {
+__attribute__((always_inline)) inline void LayerDecoderState::add_edge(uint8_t* rec, uint32_t to, bool positive) {
   const int nv = blob_->values_per_vertex;
   uint8_t* ends = rec + edges_at(uint32_t(nv));
   const uint32_t bit = positive ? 1u : 2u;
@@ -624,7 +603,7 @@ __attribute__((always_inline)) inline void LayerDecoder::add_edge(uint8_t* rec, 
   sides_byte(rec, nv) = uint8_t(((sides << 2) & 0xCu) | bit);
 }
 
-Status LayerDecoder::next(DecodedTriangle* out) {
+Status LayerDecoderState::next(DecodedTriangle* out) {
   using namespace detail;
   if (!layer_ || !out) return Status::null_argument;
   if (failed_ != Status::ok) return failed_;
@@ -771,7 +750,7 @@ Status LayerDecoder::next(DecodedTriangle* out) {
   return Status::ok;
 }
 
-Status LayerDecoder::finish() {
+Status LayerDecoderState::finish() {
   if (!layer_) return Status::null_argument;
   if (failed_ != Status::ok) return failed_;
   if (triangles_ != layer_->triangle_count) return Status::bad_params;
@@ -792,6 +771,23 @@ Status LayerDecoder::finish() {
   return Status::ok;
 }
 
+static_assert(sizeof(LayerDecoderState) == layer_decoder_bytes,
+              "layer_decoder_bytes (compressed_blob.h) must be the size of LayerDecoderState for this target");
+static_assert(alignof(LayerDecoderState) == layer_decoder_align, "layer_decoder_align must be its alignment");
+static_assert(__is_trivial(LayerDecoderState), "a LayerDecoder lives in caller memory without construction");
+
+LayerDecoderState& LayerDecoder::state() { return *reinterpret_cast<LayerDecoderState*>(state_); }
+const LayerDecoderState& LayerDecoder::state() const { return *reinterpret_cast<const LayerDecoderState*>(state_); }
+
+Status LayerDecoder::begin(const CompressedBlob& blob, int layer, void* ring, size_t ring_bytes, VertexSink sink,
+                           void* sink_context) {
+  return state().begin(blob, layer, ring, ring_bytes, sink, sink_context);
+}
+void LayerDecoder::keep_tags(uint16_t* tags) { state().keep_tags(tags); }
+Status LayerDecoder::next(DecodedTriangle* out) { return state().next(out); }
+Status LayerDecoder::finish() { return state().finish(); }
+uint32_t LayerDecoder::offset() const { return state().offset(); }
+
 namespace {
 
 // v1 section offsets of one layer (the packer's layout: each section 4-aligned, in this order).
@@ -803,10 +799,11 @@ V1Layer v1_layer(const CompressedBlob& blob, const CompressedLayer& l, uint32_t 
   V1Layer o;
   const uint32_t nv = blob.values_per_vertex;
   o.positions = at;
-  o.values = align4(o.positions + 4 * l.vertex_count);
-  o.gradients = align4(o.values + 2 * l.vertex_count * nv);
-  o.triangles = blob.method == Method::zienkiewicz ? o.gradients + 8 * l.vertex_count * nv : o.gradients;
-  o.end = o.triangles + blob_triangle_size * l.triangle_count;
+  o.values = wire::align_section(o.positions + wire::position::bytes * l.vertex_count);
+  o.gradients = wire::align_section(o.values + wire::value::bytes * l.vertex_count * nv);
+  o.triangles = blob.method == Method::zienkiewicz ? o.gradients + wire::gradient::bytes * l.vertex_count * nv
+                                                   : o.gradients;
+  o.end = o.triangles + wire::triangle::bytes * l.triangle_count;
   if (blob.method != Method::zienkiewicz) o.gradients = 0;
   return o;
 }
@@ -821,14 +818,16 @@ struct ExpandSink {
 void expand_vertex(void* context, uint32_t index, uint16_t x, uint16_t y, const uint16_t* values,
                    const int32_t* gradients) {
   const ExpandSink* s = static_cast<const ExpandSink*>(context);
-  store_u16(s->out + s->layer.positions + 4 * index, x);
-  store_u16(s->out + s->layer.positions + 4 * index + 2, y);
+  uint8_t* p = s->out + s->layer.positions + wire::position::bytes * index;
+  store_u16(p + wire::position::x, x);
+  store_u16(p + wire::position::y, y);
   for (int c = 0; c < s->per_vertex; ++c) {
-    store_u16(s->out + s->layer.values + 2 * (index * uint32_t(s->per_vertex) + uint32_t(c)), values[c]);
+    const uint32_t k = index * uint32_t(s->per_vertex) + uint32_t(c);
+    store_u16(s->out + s->layer.values + wire::value::bytes * k, values[c]);
     if (s->gradients) {
-      uint8_t* g = s->out + s->layer.gradients + 8 * (index * uint32_t(s->per_vertex) + uint32_t(c));
-      store_u32(g, uint32_t(gradients[2 * c]));
-      store_u32(g + 4, uint32_t(gradients[2 * c + 1]));
+      uint8_t* g = s->out + s->layer.gradients + wire::gradient::bytes * k;
+      store_u32(g + wire::gradient::gx, uint32_t(gradients[2 * c]));
+      store_u32(g + wire::gradient::gy, uint32_t(gradients[2 * c + 1]));
     }
   }
 }
@@ -836,7 +835,7 @@ void expand_vertex(void* context, uint32_t index, uint16_t x, uint16_t y, const 
 }  // namespace
 
 size_t expanded_blob_size(const CompressedBlob& blob) {
-  uint32_t at = blob_header_size + blob_layer_entry_size * blob.layer_count;
+  uint32_t at = wire::header::bytes + wire::v1_layer::bytes * blob.layer_count;
   for (int l = 0; l < blob.layer_count; ++l) at = v1_layer(blob, blob.layers[l], at).end;
   return at;
 }
@@ -857,25 +856,27 @@ Status expand_compressed_blob(const CompressedBlob& blob, void* out, size_t out_
   if (out_bytes < size) return Status::workspace_too_small;
   uint8_t* b = static_cast<uint8_t*>(out);
   for (size_t i = 0; i < size; ++i) b[i] = 0;
-  b[0] = 'T', b[1] = 'S', b[2] = 'T', b[3] = 'B';
-  store_u16(b + 4, blob_version);
-  store_u16(b + 6, blob_header_size);
-  store_u32(b + 8, uint32_t(size));
-  for (int k = 12; k < 36; ++k) b[k] = blob.bytes[k];  // the fields v1 and the compressed form share
-  store_u32(b + 28, blob_header_size);
-  uint32_t at = blob_header_size + blob_layer_entry_size * blob.layer_count;
+  namespace h = wire::header;
+  namespace L = wire::v1_layer;
+  wire::put_magic(b + h::magic, wire::v1_magic);
+  store_u16(b + h::version, blob_version);
+  store_u16(b + h::header_size, h::bytes);
+  store_u32(b + h::total_size, uint32_t(size));
+  for (uint32_t k = h::shared_begin; k < h::shared_end; ++k) b[k] = blob.bytes[k];
+  store_u32(b + h::layer_table, h::bytes);
+  uint32_t at = h::bytes + L::bytes * blob.layer_count;
   LayerDecoder decoder;  // set by begin
   for (int l = 0; l < blob.layer_count; ++l) {
     const CompressedLayer& cl = blob.layers[l];
     const V1Layer o = v1_layer(blob, cl, at);
     at = o.end;
-    uint8_t* e = b + blob_header_size + blob_layer_entry_size * uint32_t(l);
-    store_u32(e, cl.vertex_count);
-    store_u32(e + 4, cl.triangle_count);
-    store_u32(e + 8, o.positions);
-    store_u32(e + 12, o.values);
-    store_u32(e + 16, o.gradients);
-    store_u32(e + 20, o.triangles);
+    uint8_t* e = b + h::bytes + L::bytes * uint32_t(l);
+    store_u32(e + L::vertex_count, cl.vertex_count);
+    store_u32(e + L::triangle_count, cl.triangle_count);
+    store_u32(e + L::positions, o.positions);
+    store_u32(e + L::values, o.values);
+    store_u32(e + L::gradients, o.gradients);
+    store_u32(e + L::triangles, o.triangles);
     ExpandSink sink{b, o, blob.values_per_vertex, blob.method == Method::zienkiewicz};
     Status s = decoder.begin(blob, l, workspace, workspace_bytes, expand_vertex, &sink);
     if (s != Status::ok) return s;
@@ -886,9 +887,9 @@ Status expand_compressed_blob(const CompressedBlob& blob, void* out, size_t out_
         if (error) error->offset = decoder.offset();
         return s;
       }
-      uint8_t* p = b + o.triangles + blob_triangle_size * k;
-      for (int c = 0; c < 3; ++c) store_u16(p + 2 * c, t.v[c]);
-      store_u16(p + 6, t.flags);
+      uint8_t* p = b + o.triangles + wire::triangle::bytes * k;
+      for (uint32_t c = 0; c < 3; ++c) store_u16(p + wire::triangle::corner(c), t.v[c]);
+      store_u16(p + wire::triangle::flags, t.flags);
     }
     s = decoder.finish();
     if (s != Status::ok) {
@@ -896,7 +897,7 @@ Status expand_compressed_blob(const CompressedBlob& blob, void* out, size_t out_
       return s;
     }
   }
-  store_u32(b + blob_checksum_offset, blob_checksum(b, uint32_t(size)));
+  store_u32(b + h::checksum, blob_checksum(b, uint32_t(size)));
   // The decoder's checks are those of open_blob; it confirms them on the result.
   Blob check;
   BlobError where;

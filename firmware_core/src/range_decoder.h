@@ -6,9 +6,20 @@
 // the encoder flushes the bytes the decoder reads ahead), so no read leaves [p, end).
 #include <stdint.h>
 
-#include "tristream/compressed_blob.h"
+#include "stream_models.h"
 
 namespace tristream::core::detail {
+
+// The coder's state, set by start(); no initializers, so that the decoder state
+// (layer_decoder_state.h) stays a trivial type.
+struct RangeDecoder {
+  const uint8_t* p;
+  const uint8_t* end;
+  uint32_t range;
+  uint32_t code;
+  bool overrun;  // asked for bytes past the end (never in a valid stream)
+};
+
 namespace {
 
 constexpr uint32_t range_top = 1u << 24;

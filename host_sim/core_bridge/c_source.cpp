@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "common/errors.h"
+#include "core_bridge/pixel_format_names.h"
 #include "tristream/config.h"
 #include "tristream/tristream.h"
 
@@ -160,18 +161,6 @@ int c_format(core::PixelFormat format) {
   throw UsageError("coverage8 is a test format without a C value");
 }
 
-std::string_view format_name(core::PixelFormat format) {
-  switch (format) {
-    case core::PixelFormat::l8: return "l8";
-    case core::PixelFormat::rgb888: return "rgb888";
-    case core::PixelFormat::rgb565_le: return "rgb565le";
-    case core::PixelFormat::rgb565_be: return "rgb565be";
-    case core::PixelFormat::xrgb8888: return "xrgb8888";
-    case core::PixelFormat::coverage8: return "coverage8";
-  }
-  return "?";
-}
-
 std::string blob_c_guard(core::Method method_of, core::ColorSpace space_of, int layer_count, const CBlobSpec& spec) {
   const int method_bit = method_of == core::Method::zienkiewicz ? 2 : 1;
   const std::string method = method_of == core::Method::zienkiewicz ? "zienkiewicz" : "bilinear";
@@ -182,7 +171,7 @@ std::string blob_c_guard(core::Method method_of, core::ColorSpace space_of, int 
       layer_count > 1 ? "#if !TS_LAYERED\n#error \"" + spec.symbol +
                             ": the blob has a mesh per channel, which this core leaves out (TS_LAYERED)\"\n#endif\n"
                       : std::string();
-  const std::string format(format_name(spec.format));
+  const std::string format(pixel_format_name(spec.format));
   char format_bit[16];
   std::snprintf(format_bit, sizeof format_bit, "0x%02X", 1u << unsigned(spec.format));
   return "#if TS_SUBPIXEL_BITS != " + std::to_string(core::config::subpixel_bits) +
@@ -257,7 +246,8 @@ std::string blob_c_header(const core::Blob& blob, const CBlobSpec& spec) {
          blob_c_header_opening("TRISTREAM_BLOB_", id) + blob_c_guard(blob.method, blob.space, blob.layer_count, spec) +
          "\n/* The blob's bytes (" + id + ".size): to size a copy of it, e.g. into RAM. */\n#define " + macro +
          "_BYTES " + std::to_string(blob.size) +
-         "u\n\n/* Buffer sizes that suffice for every render of this blob in " + std::string(format_name(spec.format)) +
+         "u\n\n/* Buffer sizes that suffice for every render of this blob in " +
+         std::string(pixel_format_name(spec.format)) +
          "\n   with an output of at most " + std::to_string(spec.output_width) + " x " +
          std::to_string(spec.output_height) + ", any fit and viewport of it and tiles of at most " + blob_c_tiles(spec) +
          " pixels:\n   static buffers of these sizes are always big enough. The descriptor holds the exact figures\n"

@@ -46,7 +46,6 @@ BufferBounds compressed_buffer_upper_bounds(const core::Blob& blob, std::size_t 
 // The C value of a format (tristream.h: TS_L8 = 1 ... TS_XRGB8888 = 5); coverage8 has none
 // (throws UsageError).
 int c_format(core::PixelFormat format);
-std::string_view format_name(core::PixelFormat format);
 
 struct CBlobSpec {
   std::string symbol;       // is_blob_symbol

@@ -11,10 +11,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "bytes.h"
 #include "common/errors.h"
 #include "core_bridge/blob_error.h"
+#include "stream_models.h"
 #include "tristream/blob.h"
 #include "tristream/compressed_blob.h"
+#include "wire_layout.h"
 
 namespace tristream {
 
@@ -24,12 +27,10 @@ using core::detail::Prob;
 using core::detail::prob_bits;
 using core::detail::prob_half;
 using core::detail::prob_shift;
-
-std::uint32_t get16(const std::uint8_t* p) { return p[0] | (p[1] << 8); }
-std::uint32_t get32(const std::uint8_t* p) { return get16(p) | (get16(p + 2) << 16); }
-void put32(std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
-  for (int k = 0; k < 4; ++k) b[at + k] = std::uint8_t(v >> (8 * k));
-}
+using core::detail::load_i32;
+using core::detail::load_u16;
+using core::detail::store_u16;
+using core::detail::store_u32;
 
 enum Category { positions, values, gradients, connectivity, flags, category_count };
 
@@ -159,61 +160,118 @@ struct LayerStream {
   std::size_t ram = 0;  // the decoder's ring and pinned slots, and their tags
 };
 
-// One layer's stream; a corner more than `reach` ranks past its triangle's first vertex that is
-// not decoded yet is lifted (decoded alone into a pinned slot) instead of decoding every vertex up
-// to it: a shorter ring for a few explicit positions.
-LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, RangeEncoder& e,
-                         std::uint32_t reach) {
-  const int S = core::config::subpixel_bits;
-  const int nv = blob.values_per_vertex;
-  const bool zienkiewicz = blob.method == core::Method::zienkiewicz;
-  const std::uint32_t V = layer.vertex_count, T = layer.triangle_count;
-  std::vector<Vertex> in(V);
-  for (std::uint32_t v = 0; v < V; ++v) {
-    Vertex& x = in[v];
-    x.x = get16(layer.positions + 4 * v);
-    x.y = get16(layer.positions + 4 * v + 2);
-    for (int c = 0; c < 3; ++c) {
-      x.values[c] = c < nv ? get16(layer.values + 2 * (v * nv + c)) : 0;
-      for (int a = 0; a < 2; ++a)
-        x.gradients[c][a] = zienkiewicz && c < nv ? std::int32_t(get32(layer.gradients + 8 * (v * nv + c) + 4 * a)) : 0;
+// A triangle by the raster ranks of its corners.
+struct Tri {
+  std::uint32_t a, b, c;  // ranks, a < b < c
+  std::uint32_t rotation;  // the stored first corner is the positive cyclic order's (a first) corner `rotation`
+  std::uint32_t flags;
+};
+
+// The columns (1/16 pixel) where the third corner of a triangle is looked for.
+struct Columns {
+  std::int32_t lo, hi;
+};
+
+// How a triangle's anchor (its second corner) and third corner are coded.
+struct Anchor {
+  std::uint32_t pick;  // an open edge of the first corner (0, 1), or escape_symbol: gap-coded
+  std::uint32_t anchor, third;
+  int side;  // the third corner's side of first -> anchor (+1, -1)
+  bool hit;  // the third corner is the predicted one
+};
+
+// One layer's stream, as the decoder (LayerDecoderState, compressed_blob.cpp) reads it back: the
+// same models, the same predictions, the same order. A corner more than `reach` ranks past its
+// triangle's first vertex that is not decoded yet is lifted (decoded alone into a pinned slot)
+// instead of decoding every vertex up to it: a shorter ring for a few explicit positions.
+class LayerEncoder {
+ public:
+  LayerEncoder(const core::Blob& blob, const core::BlobLayer& layer, RangeEncoder& e, std::uint32_t reach)
+      : blob_(blob), e_(e), nv_(blob.values_per_vertex), zienkiewicz_(blob.method == core::Method::zienkiewicz),
+        rgb_(blob.space == core::ColorSpace::rgb && nv_ == 3), V_(layer.vertex_count) {
+    read_vertices(layer);
+    sort_raster();
+    read_triangles(layer);
+    plan_lifts(reach);
+  }
+
+  LayerStream encode() {
+    reset_models();
+    valued_.assign(V_, 0);
+    edge_end_.assign(V_, {0, 0});
+    edge_sides_.assign(V_, {0, 0});
+    for (std::size_t t = 0; t < tris_.size(); ++t) encode_triangle(tris_[t], t);
+    while (encoded_ < V_) position();
+    for (std::uint32_t i = V_ > window_ ? V_ - window_ : 0; i < V_; ++i)
+      if (!valued_[i]) values_of(i, -1, -1);
+    const std::size_t record = ((4 + 2 * std::size_t(nv_) + 3) & ~std::size_t(3)) + 4 + (zienkiewicz_ ? 8 * nv_ : 0);
+    // The slots' records, the pinned slots' indices and every slot's tag (compressed_ring_bytes and
+    // compressed_tag_bytes, less the value models, which every reach has).
+    const std::size_t slots = std::size_t(window_) + pinned_slots_;
+    return LayerStream{e_.finish(), window_, pinned_slots_, slots * (record + 2) + 4 * pinned_slots_};
+  }
+
+ private:
+  static constexpr int S = core::config::subpixel_bits;
+
+  void read_vertices(const core::BlobLayer& layer) {
+    namespace w = core::wire;
+    in_.resize(V_);
+    for (std::uint32_t v = 0; v < V_; ++v) {
+      Vertex& x = in_[v];
+      const std::uint8_t* p = layer.positions + w::position::bytes * v;
+      x.x = load_u16(p + w::position::x);
+      x.y = load_u16(p + w::position::y);
+      for (int c = 0; c < 3; ++c) {
+        const std::uint32_t k = v * std::uint32_t(nv_) + std::uint32_t(c);
+        x.values[c] = c < nv_ ? load_u16(layer.values + w::value::bytes * k) : 0;
+        const std::uint8_t* g = zienkiewicz_ && c < nv_ ? layer.gradients + w::gradient::bytes * k : nullptr;
+        x.gradients[c][0] = g ? load_i32(g + w::gradient::gx) : 0;
+        x.gradients[c][1] = g ? load_i32(g + w::gradient::gy) : 0;
+      }
     }
   }
-  // Raster order: pixel row, pixel column, then the sub-pixel bits (ties kept in input order).
-  auto key = [&](std::uint32_t v) {
-    const Vertex& x = in[v];
-    return std::array<std::uint32_t, 4>{x.y >> S, x.x >> S, x.y & ((1u << S) - 1), x.x & ((1u << S) - 1)};
-  };
-  std::vector<std::uint32_t> order(V), rank(V);
-  std::iota(order.begin(), order.end(), 0u);
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
-  for (std::uint32_t i = 0; i < V; ++i) rank[order[i]] = i;
 
-  struct Tri {
-    std::uint32_t a, b, c;  // ranks, a < b < c
-    std::uint32_t rotation;
-    std::uint32_t flags;
-  };
-  std::vector<Tri> tris(T);
-  for (std::uint32_t t = 0; t < T; ++t) {
-    const std::uint8_t* p = layer.triangles + core::blob_triangle_size * t;
-    const std::uint32_t v[3] = {rank[get16(p)], rank[get16(p + 2)], rank[get16(p + 4)]};
-    std::uint32_t s[3] = {v[0], v[1], v[2]};
-    std::sort(s, s + 3);
-    // The positive cyclic order starting at the smallest rank is (s0, s1, s2) or (s0, s2, s1):
-    // the one the stored triangle is a rotation of.
-    const int first = v[0] == s[0] ? 0 : (v[1] == s[0] ? 1 : 2);
-    const std::uint32_t after = v[(first + 1) % 3];
-    const std::uint32_t cyc[3] = {s[0], after, after == s[1] ? s[2] : s[1]};
-    // Stored v[0] is cyc[rotation].
-    const std::uint32_t rotation = v[0] == cyc[0] ? 0 : (v[0] == cyc[1] ? 1 : 2);
-    tris[t] = Tri{s[0], s[1], s[2], rotation, get16(p + 6)};
+  // Raster order: pixel row, pixel column, then the sub-pixel bits (ties kept in input order).
+  void sort_raster() {
+    auto key = [&](std::uint32_t v) {
+      const Vertex& x = in_[v];
+      return std::array<std::uint32_t, 4>{x.y >> S, x.x >> S, x.y & ((1u << S) - 1), x.x & ((1u << S) - 1)};
+    };
+    order_.resize(V_);
+    rank_.resize(V_);
+    std::iota(order_.begin(), order_.end(), 0u);
+    std::stable_sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    for (std::uint32_t i = 0; i < V_; ++i) rank_[order_[i]] = i;
   }
+
+  void read_triangles(const core::BlobLayer& layer) {
+    namespace T = core::wire::triangle;
+    tris_.resize(layer.triangle_count);
+    for (std::uint32_t t = 0; t < layer.triangle_count; ++t) {
+      const std::uint8_t* p = layer.triangles + T::bytes * t;
+      const std::uint32_t v[3] = {rank_[load_u16(p + T::corner(0))], rank_[load_u16(p + T::corner(1))],
+                                  rank_[load_u16(p + T::corner(2))]};
+      std::uint32_t s[3] = {v[0], v[1], v[2]};
+      std::sort(s, s + 3);
+      // The positive cyclic order starting at the smallest rank is (s0, s1, s2) or (s0, s2, s1):
+      // the one the stored triangle is a rotation of.
+      const int first = v[0] == s[0] ? 0 : (v[1] == s[0] ? 1 : 2);
+      const std::uint32_t after = v[(first + 1) % 3];
+      const std::uint32_t cyc[3] = {s[0], after, after == s[1] ? s[2] : s[1]};
+      // Stored v[0] is cyc[rotation].
+      const std::uint32_t rotation = v[0] == cyc[0] ? 0 : (v[0] == cyc[1] ? 1 : 2);
+      tris_[t] = Tri{s[0], s[1], s[2], rotation, load_u16(p + T::flags)};
+    }
+  }
+
   // Pass 1: the lifts, the window (the ring must hold every corner decoded in raster order) and
   // the pinned slots (taken in turn: a slot is free again once its vertex reached the ring).
-  std::vector<char> lift(3 * std::size_t(T), 0);
-  std::uint32_t window = 3, pinned_slots = 0;
-  {
+  void plan_lifts(std::uint32_t reach) {
+    const std::size_t T = tris_.size();
+    lift_.assign(3 * T, 0);
+    window_ = 3;
+    pinned_slots_ = 0;
     std::uint32_t done = 0;
     std::uint64_t lifts = 0;
     std::map<std::uint32_t, std::uint64_t> pending;  // pinned rank -> its lift number
@@ -225,150 +283,140 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
           pending.erase(it);
         }
     };
-    for (std::uint32_t t = 0; t < T; ++t) {
-      const std::uint32_t corner[3] = {tris[t].a, tris[t].b, tris[t].c};
+    for (std::size_t t = 0; t < T; ++t) {
+      const std::uint32_t corner[3] = {tris_[t].a, tris_[t].b, tris_[t].c};
       for (int k = 0; k < 3; ++k) {
         const std::uint32_t x = corner[k];
         if (x < done || pending.count(x)) continue;
         if (x + 1 - corner[0] > reach) {
-          lift[3 * std::size_t(t) + k] = 1;
+          lift_[3 * t + k] = 1;
           pending[x] = lifts;
           pending_lifts.insert(lifts);
-          pinned_slots = std::max(pinned_slots, std::uint32_t(lifts - *pending_lifts.begin() + 1));
+          pinned_slots_ = std::max(pinned_slots_, std::uint32_t(lifts - *pending_lifts.begin() + 1));
           ++lifts;
         } else {
           advance_to(x);
         }
       }
       for (std::uint32_t x : corner)
-        if (x < done) window = std::max(window, done - x);
+        if (x < done) window_ = std::max(window_, done - x);
     }
+    window_ = std::min(window_, V_);
   }
-  window = std::min(window, V);
 
-  std::uint32_t encoded = 0, pixel = 0;
-  std::uint32_t last_values[3] = {0, 0, 0};
-  std::int32_t last_gradients[3][2] = {};
-  const bool rgb = blob.space == core::ColorSpace::rgb && nv == 3;
-  core::detail::StreamModels m;
-  core::detail::IntModel value_model[3], gradient_model[2];  // the decoder's value models
-  reset(m.gap);
-  m.subpixel = m.fraction = m.flags_nonzero = prob_half;
-  for (auto& x : value_model) reset(x);
-  for (auto& x : gradient_model) reset(x);
-  reset(&m.top[0][0], 6 * 8);
-  reset(m.top_far);
-  reset(&m.anchor[0][0], 3 * 8);
-  reset(m.anchor_gap);
-  m.side = prob_half;
-  reset(m.predicted, 3);
-  reset(m.fresh, 3);
-  reset(m.fresh_count);
-  reset(m.third_gap);
-  std::uint32_t previous_picks = 0;
-  reset(m.rotation, 2);
-  m.lift = prob_half;
-  reset(m.lift_gap);
-  std::set<std::uint32_t> pinned;  // ranks decoded ahead, not yet in the ring
-  reset(m.flag_bit, 9);
-  std::vector<char> valued(V, 0);
+  void reset_models() {
+    reset(m_.gap);
+    m_.subpixel = m_.fraction = m_.flags_nonzero = prob_half;
+    for (auto& x : value_model_) reset(x);
+    for (auto& x : gradient_model_) reset(x);
+    reset(&m_.top[0][0], 6 * 8);
+    reset(m_.top_far);
+    reset(&m_.anchor[0][0], 3 * 8);
+    reset(m_.anchor_gap);
+    m_.side = prob_half;
+    reset(m_.predicted, 3);
+    reset(m_.fresh, 3);
+    reset(m_.fresh_count);
+    reset(m_.third_gap);
+    reset(m_.rotation, 2);
+    m_.lift = prob_half;
+    reset(m_.lift_gap);
+    reset(m_.flag_bit, 9);
+  }
+
   // Values (and gradients) of rank i, predicted from ranks p0, p1 (-1: none) as the decoder does.
-  auto values_of = [&](std::uint32_t i, std::int64_t p0, std::int64_t p1) {
-    const Vertex& x = in[order[i]];
+  void values_of(std::uint32_t i, std::int64_t p0, std::int64_t p1) {
+    const Vertex& x = in_[order_[i]];
     if (p0 < 0) p0 = p1, p1 = -1;
     std::uint32_t predicted[3];
     for (int c = 0; c < 3; ++c) {
       if (p0 >= 0) {
-        const std::uint32_t h = in[order[p0]].values[c] >> 8;
-        predicted[c] = p1 >= 0 ? (h + (in[order[p1]].values[c] >> 8) + 1) >> 1 : h;
+        const std::uint32_t h = in_[order_[p0]].values[c] >> 8;
+        predicted[c] = p1 >= 0 ? (h + (in_[order_[p1]].values[c] >> 8) + 1) >> 1 : h;
       } else {
-        predicted[c] = last_values[c] >> 8;
+        predicted[c] = last_values_[c] >> 8;
       }
     }
-    e.category = values;
+    e_.category = values;
     std::int64_t shared = 0;
-    for (int k = 0; k < nv; ++k) {
-      const int c = rgb ? (k == 0 ? 1 : (k == 1 ? 0 : 2)) : k;
+    for (int k = 0; k < nv_; ++k) {
+      const int c = rgb_ ? (k == 0 ? 1 : (k == 1 ? 0 : 2)) : k;
       std::int64_t r = std::int64_t(x.values[c] >> 8) - std::int64_t(predicted[c]);
-      if (rgb && k == 0) shared = r;
-      if (rgb && k > 0) r -= shared;
-      encode_int(e, value_model[k], value_bits, r);
+      if (rgb_ && k == 0) shared = r;
+      if (rgb_ && k > 0) r -= shared;
+      encode_int(e_, value_model_[k], value_bits, r);
     }
     bool fraction = false;
-    for (int c = 0; c < nv; ++c) fraction |= (x.values[c] & 0xFFu) != 0;
-    e.bit(m.fraction, fraction);
+    for (int c = 0; c < nv_; ++c) fraction |= (x.values[c] & 0xFFu) != 0;
+    e_.bit(m_.fraction, fraction);
     if (fraction)
-      for (int c = 0; c < nv; ++c) e.direct(x.values[c] & 0xFFu, 8);
-    if (zienkiewicz) {
-      e.category = gradients;
-      for (int c = 0; c < nv; ++c)
-        for (int a = 0; a < 2; ++a)
-        {
-          std::int32_t predicted = last_gradients[c][a];
+      for (int c = 0; c < nv_; ++c) e_.direct(x.values[c] & 0xFFu, 8);
+    if (zienkiewicz_) {
+      e_.category = gradients;
+      for (int c = 0; c < nv_; ++c)
+        for (int a = 0; a < 2; ++a) {
+          std::int32_t guess = last_gradients_[c][a];
           if (p0 >= 0) {
-            const std::int64_t g0 = in[order[p0]].gradients[c][a];
-            predicted = p1 >= 0 ? std::int32_t((g0 + in[order[p1]].gradients[c][a]) >> 1) : std::int32_t(g0);
+            const std::int64_t g0 = in_[order_[p0]].gradients[c][a];
+            guess = p1 >= 0 ? std::int32_t((g0 + in_[order_[p1]].gradients[c][a]) >> 1) : std::int32_t(g0);
           }
-          encode_int(e, gradient_model[a], gradient_bits,
-                     std::int32_t(std::uint32_t(x.gradients[c][a]) - std::uint32_t(predicted)));
+          encode_int(e_, gradient_model_[a], gradient_bits,
+                     std::int32_t(std::uint32_t(x.gradients[c][a]) - std::uint32_t(guess)));
         }
     }
     for (int c = 0; c < 3; ++c) {
-      last_values[c] = x.values[c];
-      last_gradients[c][0] = x.gradients[c][0];
-      last_gradients[c][1] = x.gradients[c][1];
+      last_values_[c] = x.values[c];
+      last_gradients_[c][0] = x.gradients[c][0];
+      last_gradients_[c][1] = x.gradients[c][1];
     }
-    valued[i] = 1;
-  };
-  // The position of rank `encoded`; first the values of the rank it evicts from the ring, if no
-  // triangle asked for them.
-  auto position = [&]() {
-    if (encoded >= window && !valued[encoded - window]) values_of(encoded - window, -1, -1);
-    const Vertex& x = in[order[encoded]];
-    e.category = positions;
-    const std::uint32_t here = (x.y >> S) * blob.width + (x.x >> S);
-    if (pinned.erase(encoded)) {  // decoded ahead: no bits
-      pixel = here;
-      ++encoded;
-      return;
-    }
-    encode_uint(e, m.gap, gap_bits, here - pixel);
+    valued_[i] = 1;
+  }
+
+  // A vertex's raster pixel gap to the last one and its sub-pixel bits (position, and a lift).
+  void encode_point(core::detail::UintModel& gap_model, const Vertex& x) {
+    const std::uint32_t here = (x.y >> S) * blob_.width + (x.x >> S);
+    encode_uint(e_, gap_model, gap_bits, here - pixel_);
     const std::uint32_t sx = x.x & ((1u << S) - 1), sy = x.y & ((1u << S) - 1);
-    e.bit(m.subpixel, (sx | sy) != 0);
+    e_.bit(m_.subpixel, (sx | sy) != 0);
     if (sx | sy) {
-      e.direct(sx, S);
-      e.direct(sy, S);
+      e_.direct(sx, S);
+      e_.direct(sy, S);
     }
-    pixel = here;
-    ++encoded;
-  };
-  std::uint32_t previous_top = 0;
-  // The decoder's records: open edges (the other end, the sides decoded: 1 positive, 2 negative,
-  // 0 none), the most recent first, as LayerDecoder::add_edge keeps them.
-  std::vector<std::array<std::uint32_t, 2>> edge_end(V, {0, 0});
-  std::vector<std::array<std::uint8_t, 2>> edge_sides(V, {0, 0});
-  auto has_record = [&](std::uint32_t r) { return (r < encoded && encoded - r <= window) || pinned.count(r) != 0; };
-  auto cross = [&](std::uint32_t o, std::uint32_t p, std::uint32_t q) {
-    const Vertex &O = in[order[o]], &P = in[order[p]], &Q = in[order[q]];
+  }
+
+  // The position of rank encoded_; first the values of the rank it evicts from the ring, if no
+  // triangle asked for them.
+  void position() {
+    if (encoded_ >= window_ && !valued_[encoded_ - window_]) values_of(encoded_ - window_, -1, -1);
+    const Vertex& x = in_[order_[encoded_]];
+    e_.category = positions;
+    const std::uint32_t here = (x.y >> S) * blob_.width + (x.x >> S);
+    if (!pinned_.erase(encoded_)) encode_point(m_.gap, x);  // decoded ahead: no bits
+    pixel_ = here;
+    ++encoded_;
+  }
+
+  bool has_record(std::uint32_t r) const {
+    return (r < encoded_ && encoded_ - r <= window_) || pinned_.count(r) != 0;
+  }
+  std::int64_t cross(std::uint32_t o, std::uint32_t p, std::uint32_t q) const {
+    const Vertex &O = in_[order_[o]], &P = in_[order_[p]], &Q = in_[order_[q]];
     return (std::int64_t(P.x) - O.x) * (std::int64_t(Q.y) - O.y) - (std::int64_t(P.y) - O.y) * (std::int64_t(Q.x) - O.x);
-  };
-  // LayerDecoder::columns, predict and fresh.
-  struct Columns {
-    std::int32_t lo, hi;
-  };
-  auto columns = [&](std::uint32_t a, std::uint32_t s) {
+  }
+  // LayerDecoderState::columns, predict and fresh.
+  Columns columns(std::uint32_t a, std::uint32_t s) const {
     if (!has_record(a) || !has_record(s)) return Columns{0, 0xFFFF};
-    const std::int32_t ax = in[order[a]].x, ay = in[order[a]].y, sx = in[order[s]].x, sy = in[order[s]].y;
+    const std::int32_t ax = in_[order_[a]].x, ay = in_[order_[a]].y, sx = in_[order_[s]].x, sy = in_[order_[s]].y;
     const std::int32_t reach = std::max(std::abs(ax - sx), std::abs(ay - sy)) + (2 << S);
     return Columns{std::min(ax, sx) - reach, std::max(ax, sx) + reach};
-  };
-  auto in_columns = [&](std::uint32_t r, Columns c) {
-    return std::int32_t(in[order[r]].x) >= c.lo && std::int32_t(in[order[r]].x) <= c.hi;
-  };
-  auto predict = [&](std::uint32_t a, std::uint32_t s, int side) {
+  }
+  bool in_columns(std::uint32_t r, Columns c) const {
+    return std::int32_t(in_[order_[r]].x) >= c.lo && std::int32_t(in_[order_[r]].x) <= c.hi;
+  }
+  std::uint32_t predict(std::uint32_t a, std::uint32_t s, int side) const {
     if (!has_record(a) || !has_record(s)) return none;
-    auto px = [&](std::uint32_t r) { return std::int32_t(in[order[r]].x >> S); };
-    auto py = [&](std::uint32_t r) { return std::int32_t(in[order[r]].y >> S); };
+    auto px = [&](std::uint32_t r) { return std::int32_t(in_[order_[r]].x >> S); };
+    auto py = [&](std::uint32_t r) { return std::int32_t(in_[order_[r]].y >> S); };
     std::uint32_t best = none;
     std::int64_t best_dot = 0, best_cross = 0;
     auto consider = [&](std::uint32_t q) {
@@ -384,20 +432,23 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     };
     for (std::uint32_t e : {a, s})
       for (int j = 0; j < 2; ++j) {
-        if (!edge_sides[e][j]) continue;
-        const std::uint32_t q = edge_end[e][j];
+        if (!edge_sides_[e][j]) continue;
+        const std::uint32_t q = edge_end_[e][j];
         if (q <= a || q == s || q == best || !has_record(q)) continue;
         consider(q);
       }
     return best;
-  };
+  }
   // Whether fresh() can reach r (unused, and in the columns when in the ring).
-  auto eligible = [&](std::uint32_t r, Columns cols) { return r >= encoded || (!valued[r] && in_columns(r, cols)); };
-  // LayerDecoder::add_edge.
-  auto add_edge = [&](std::uint32_t from, std::uint32_t to, bool positive) {
+  bool eligible(std::uint32_t r, Columns cols) const {
+    return r >= encoded_ || (!valued_[r] && in_columns(r, cols));
+  }
+  // LayerDecoderState::add_edge: open edges (the other end, the sides decoded: 1 positive, 2
+  // negative, 0 none), the most recent first.
+  void add_edge(std::uint32_t from, std::uint32_t to, bool positive) {
     const std::uint8_t bit = positive ? 1 : 2;
-    auto& end = edge_end[from];
-    auto& sd = edge_sides[from];
+    auto& end = edge_end_[from];
+    auto& sd = edge_sides_[from];
     for (int j = 0; j < 2; ++j) {
       if (!sd[j] || end[j] != to) continue;
       if ((sd[j] | bit) != 3) return;
@@ -412,109 +463,136 @@ LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, R
     sd[1] = sd[0];
     end[0] = to;
     sd[0] = bit;
-  };
-  for (const Tri& t : tris) {
-    e.category = connectivity;
-    const std::int64_t delta = std::int64_t(t.a) - std::int64_t(previous_top);
+  }
+
+  // The triangle's first corner against the previous triangle's; returns the step's class.
+  std::uint32_t encode_top(const Tri& t) {
+    e_.category = connectivity;
+    const std::int64_t delta = std::int64_t(t.a) - std::int64_t(previous_top_);
     const std::uint32_t step = delta >= 0 && delta <= 2 ? std::uint32_t(delta) : (delta == -1 ? 3 : 7);
-    encode_symbol8(e, m.top[previous_picks], step);
-    if (step == 7) encode_int(e, m.top_far, index_bits, delta);
-    const std::uint32_t step_class = step < 2 ? step : 2;
-    // The anchor: an open edge of a whose other end is a corner, preferring one whose prediction
-    // is the third corner; else gap-coded, preferring the corner whose prediction is the other.
-    std::uint32_t pick = escape_symbol, anchor = t.b, third = t.c;
-    int side = 1;
-    bool hit = false;
-    for (int j = 0; j < 2 && !hit; ++j) {
-      const std::uint32_t y = edge_end[t.a][j];
-      if (!edge_sides[t.a][j] || !has_record(t.a) || (y != t.b && y != t.c)) continue;
+    encode_symbol8(e_, m_.top[previous_picks_], step);
+    if (step == 7) encode_int(e_, m_.top_far, index_bits, delta);
+    return step < 2 ? step : 2;
+  }
+
+  // The anchor: an open edge of a whose other end is a corner, preferring one whose prediction
+  // is the third corner; else gap-coded, preferring the corner whose prediction is the other.
+  Anchor choose_anchor(const Tri& t) const {
+    Anchor x{escape_symbol, t.b, t.c, 1, false};
+    for (int j = 0; j < 2 && !x.hit; ++j) {
+      const std::uint32_t y = edge_end_[t.a][j];
+      if (!edge_sides_[t.a][j] || !has_record(t.a) || (y != t.b && y != t.c)) continue;
       const std::uint32_t other = y == t.b ? t.c : t.b;
-      const int sd = edge_sides[t.a][j] == 1 ? -1 : 1;
+      const int sd = edge_sides_[t.a][j] == 1 ? -1 : 1;
       const bool h = predict(t.a, y, sd) == other;
-      if (pick == escape_symbol || h) pick = std::uint32_t(j), anchor = y, third = other, side = sd, hit = h;
+      if (x.pick == escape_symbol || h) x = Anchor{std::uint32_t(j), y, other, sd, h};
     }
-    if (pick == escape_symbol) {
+    if (x.pick == escape_symbol) {
       for (const auto& [s0, t0] : {std::pair{t.b, t.c}, std::pair{t.c, t.b}}) {
         const int sd = cross(t.a, s0, t0) > 0 ? 1 : -1;
         if (predict(t.a, s0, sd) == t0) {
-          anchor = s0, third = t0, side = sd, hit = true;
+          x.anchor = s0, x.third = t0, x.side = sd, x.hit = true;
           break;
         }
       }
-      if (!hit) side = cross(t.a, t.b, t.c) > 0 ? 1 : -1;
+      if (!x.hit) x.side = cross(t.a, t.b, t.c) > 0 ? 1 : -1;
     }
-    const std::uint32_t kind = pick == escape_symbol ? 2 : pick;
-    encode_symbol8(e, m.anchor[step_class], pick);
-    if (pick == escape_symbol) {
-      encode_uint(e, m.anchor_gap, index_bits, anchor - t.a - 1);
-      e.bit(m.side, side < 0);
+    return x;
+  }
+
+  // The anchor, then the third corner: predicted, or fresh (counted among the eligible), or gap-coded.
+  void encode_anchor_and_third(const Tri& t, std::uint32_t step_class, const Anchor& x, std::uint32_t kind) {
+    encode_symbol8(e_, m_.anchor[step_class], x.pick);
+    if (x.pick == escape_symbol) {
+      encode_uint(e_, m_.anchor_gap, index_bits, x.anchor - t.a - 1);
+      e_.bit(m_.side, x.side < 0);
     }
-    const Columns cols = columns(t.a, anchor);
-    const std::uint32_t guess = predict(t.a, anchor, side);
-    if (guess != none) e.bit(m.predicted[kind], hit);
-    if (!hit) {
-      const bool fresh = eligible(third, cols);
-      e.bit(m.fresh[kind], fresh);
-      if (fresh) {
-        std::uint32_t count = 0;
-        for (std::uint32_t r = t.a + 1; r < third; ++r) count += eligible(r, cols);
-        encode_uint(e, m.fresh_count, index_bits, count);
-      } else {
-        encode_uint(e, m.third_gap, index_bits, third - t.a - 1);
-      }
+    const Columns cols = columns(t.a, x.anchor);
+    const std::uint32_t guess = predict(t.a, x.anchor, x.side);
+    if (guess != none) e_.bit(m_.predicted[kind], x.hit);
+    if (x.hit) return;
+    const bool fresh = eligible(x.third, cols);
+    e_.bit(m_.fresh[kind], fresh);
+    if (fresh) {
+      std::uint32_t count = 0;
+      for (std::uint32_t r = t.a + 1; r < x.third; ++r) count += eligible(r, cols);
+      encode_uint(e_, m_.fresh_count, index_bits, count);
+    } else {
+      encode_uint(e_, m_.third_gap, index_bits, x.third - t.a - 1);
     }
+  }
+
+  // The corners not decoded yet: the positions up to each, or a lift into a pinned slot.
+  void place_corners(const Tri& t, std::size_t index) {
     const std::uint32_t corners[3] = {t.a, t.b, t.c};
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t c = corners[k];
-      if (c < encoded || pinned.count(c)) continue;
-      e.category = positions;
-      const bool lifted = lift[3 * std::size_t(&t - tris.data()) + k];
-      e.bit(m.lift, lifted);
+      if (c < encoded_ || pinned_.count(c)) continue;
+      e_.category = positions;
+      const bool lifted = lift_[3 * index + k];
+      e_.bit(m_.lift, lifted);
       if (!lifted) {
-        while (encoded <= c) position();
+        while (encoded_ <= c) position();
         continue;
       }
-      const Vertex& x = in[order[c]];
-      const std::uint32_t here = (x.y >> S) * blob.width + (x.x >> S);
-      encode_uint(e, m.lift_gap, gap_bits, here - pixel);
-      const std::uint32_t sx = x.x & ((1u << S) - 1), sy = x.y & ((1u << S) - 1);
-      e.bit(m.subpixel, (sx | sy) != 0);
-      if (sx | sy) {
-        e.direct(sx, S);
-        e.direct(sy, S);
-      }
-      pinned.insert(c);
+      encode_point(m_.lift_gap, in_[order_[c]]);
+      pinned_.insert(c);
     }
-    e.category = connectivity;
-    e.bit(m.rotation[0], t.rotation != 0);
-    if (t.rotation) e.bit(m.rotation[1], t.rotation == 2);
-    e.category = flags;
-    e.bit(m.flags_nonzero, t.flags != 0);
+  }
+
+  void encode_triangle(const Tri& t, std::size_t index) {
+    const std::uint32_t step_class = encode_top(t);
+    const Anchor x = choose_anchor(t);
+    const std::uint32_t kind = x.pick == escape_symbol ? 2 : x.pick;
+    encode_anchor_and_third(t, step_class, x, kind);
+    place_corners(t, index);
+    e_.category = connectivity;
+    e_.bit(m_.rotation[0], t.rotation != 0);
+    if (t.rotation) e_.bit(m_.rotation[1], t.rotation == 2);
+    e_.category = flags;
+    e_.bit(m_.flags_nonzero, t.flags != 0);
     if (t.flags)
-      for (int i = 0; i < 9; ++i) e.bit(m.flag_bit[i], (t.flags >> i) & 1u);
+      for (int i = 0; i < 9; ++i) e_.bit(m_.flag_bit[i], (t.flags >> i) & 1u);
     const std::uint32_t corner[3] = {t.a, t.b, t.c};
     for (int k = 0; k < 3; ++k) {
-      if (valued[corner[k]]) continue;
+      if (valued_[corner[k]]) continue;
       std::int64_t known[2] = {-1, -1};
       for (int j = 0, n = 0; j < 3; ++j)
-        if (j != k && valued[corner[j]]) known[n++] = corner[j];
+        if (j != k && valued_[corner[j]]) known[n++] = corner[j];
       values_of(corner[k], known[0], known[1]);
     }
-    previous_top = t.a;
-    previous_picks = 2 * kind + (hit ? 1 : 0);
+    previous_top_ = t.a;
+    previous_picks_ = 2 * kind + (x.hit ? 1 : 0);
     const std::int64_t area = cross(t.a, t.b, t.c);
     add_edge(t.a, t.b, area > 0);
     add_edge(t.a, t.c, area < 0);
     add_edge(t.b, t.c, area > 0);
   }
-  while (encoded < V) position();
-  for (std::uint32_t i = V > window ? V - window : 0; i < V; ++i)
-    if (!valued[i]) values_of(i, -1, -1);
-  const std::size_t record = ((4 + 2 * std::size_t(nv) + 3) & ~std::size_t(3)) + 4 + (zienkiewicz ? 8 * nv : 0);
-  // The slots' records, the pinned slots' indices and every slot's tag (compressed_ring_bytes and
-  // compressed_tag_bytes, less the value models, which every reach has).
-  const std::size_t slots = std::size_t(window) + pinned_slots;
-  return LayerStream{e.finish(), window, pinned_slots, slots * (record + 2) + 4 * pinned_slots};
+
+  const core::Blob& blob_;
+  RangeEncoder& e_;
+  const int nv_;
+  const bool zienkiewicz_, rgb_;
+  const std::uint32_t V_;
+  std::vector<Vertex> in_;
+  std::vector<std::uint32_t> order_, rank_;  // rank -> vertex, vertex -> rank
+  std::vector<Tri> tris_;
+  std::vector<char> lift_;  // per triangle corner
+  std::uint32_t window_ = 3, pinned_slots_ = 0;
+  std::uint32_t encoded_ = 0, pixel_ = 0;
+  std::uint32_t last_values_[3] = {0, 0, 0};
+  std::int32_t last_gradients_[3][2] = {};
+  core::detail::StreamModels m_;
+  core::detail::IntModel value_model_[3], gradient_model_[2];  // the decoder's value models
+  std::uint32_t previous_top_ = 0, previous_picks_ = 0;
+  std::set<std::uint32_t> pinned_;  // ranks decoded ahead, not yet in the ring
+  std::vector<char> valued_;
+  std::vector<std::array<std::uint32_t, 2>> edge_end_;
+  std::vector<std::array<std::uint8_t, 2>> edge_sides_;
+};
+
+LayerStream encode_layer(const core::Blob& blob, const core::BlobLayer& layer, RangeEncoder& e, std::uint32_t reach) {
+  return LayerEncoder(blob, layer, e, reach).encode();
 }
 
 }  // namespace
@@ -525,13 +603,15 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
   core::BlobError error;
   const core::Status s = core::open_blob(v1.data(), v1.size(), &blob, &error);
   if (s != core::Status::ok) throw DataError(blob_error_message(name, v1, s, error.offset));
-  const std::size_t table = core::compressed_header_size;
-  std::vector<std::uint8_t> out(table + core::compressed_layer_entry_size * blob.layer_count, 0);
-  std::copy(v1.begin() + 12, v1.begin() + 36, out.begin() + 12);  // the fields both forms share
-  out[0] = 'T', out[1] = 'S', out[2] = 'T', out[3] = 'C';
-  out[4] = std::uint8_t(core::compressed_version), out[5] = 0;
-  out[6] = std::uint8_t(core::compressed_header_size), out[7] = 0;
-  put32(out, 28, std::uint32_t(table));
+  namespace h = core::wire::header;
+  namespace L = core::wire::compressed_layer;
+  const std::uint32_t table = h::bytes;
+  std::vector<std::uint8_t> out(table + L::bytes * blob.layer_count, 0);
+  std::copy(v1.begin() + h::shared_begin, v1.begin() + h::shared_end, out.begin() + h::shared_begin);
+  core::wire::put_magic(out.data() + h::magic, core::wire::compressed_magic);
+  store_u16(out.data() + h::version, core::compressed_version);
+  store_u16(out.data() + h::header_size, h::bytes);
+  store_u32(out.data() + h::layer_table, table);
   CompressStats st;
   st.v1_bytes = v1.size();
   for (int l = 0; l < blob.layer_count; ++l) {
@@ -550,13 +630,13 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
         e = trial;
       }
     }
-    const std::size_t entry = table + core::compressed_layer_entry_size * l;
-    put32(out, entry, blob.layers[l].vertex_count);
-    put32(out, entry + 4, blob.layers[l].triangle_count);
-    put32(out, entry + 8, std::uint32_t(out.size()));
-    put32(out, entry + 12, std::uint32_t(ls.bytes.size()));
-    put32(out, entry + 16, ls.window);
-    put32(out, entry + 20, ls.pinned);
+    std::uint8_t* entry = out.data() + table + L::bytes * l;
+    store_u32(entry + L::vertex_count, blob.layers[l].vertex_count);
+    store_u32(entry + L::triangle_count, blob.layers[l].triangle_count);
+    store_u32(entry + L::stream_offset, std::uint32_t(out.size()));
+    store_u32(entry + L::stream_bytes, std::uint32_t(ls.bytes.size()));
+    store_u32(entry + L::window, ls.window);
+    store_u32(entry + L::pinned, ls.pinned);
     out.insert(out.end(), ls.bytes.begin(), ls.bytes.end());
     st.vertices += blob.layers[l].vertex_count;
     st.triangles += blob.layers[l].triangle_count;
@@ -567,7 +647,7 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
     st.flag_bits += e.cost[flags];
     st.window = std::max(st.window, ls.window);
   }
-  put32(out, 8, std::uint32_t(out.size()));
+  store_u32(out.data() + h::total_size, std::uint32_t(out.size()));
   st.bytes = out.size();
   if (stats) *stats = st;
   return out;

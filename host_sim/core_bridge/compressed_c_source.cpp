@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "core_bridge/compressed_c_source.h"
 
+#include "core_bridge/pixel_format_names.h"
+
 namespace tristream {
 
 std::string compressed_c_source(const std::vector<std::uint8_t>& bytes, const core::Blob& v1, const CBlobSpec& spec) {
@@ -22,9 +24,9 @@ std::string compressed_c_header(const core::CompressedBlob& blob, const core::Bl
          "_BYTES bytes): ts_open_compressed(" + id + ".bytes, " + id +
          ".size, ...),\n   then ts_render_compressed draws it from its streams. */\n#define " + macro + "_BYTES " +
          std::to_string(blob.size) + "u\n\n/* Buffer sizes that suffice for every ts_render_compressed of this blob in " +
-         std::string(format_name(spec.format)) + "\n   with an output of at most " + std::to_string(spec.output_width) +
-         " x " + std::to_string(spec.output_height) + ", any fit and viewport of it and tiles of at most " +
-         blob_c_tiles(spec) +
+         std::string(pixel_format_name(spec.format)) + "\n   with an output of at most " +
+         std::to_string(spec.output_width) + " x " + std::to_string(spec.output_height) +
+         ", any fit and viewport of it and tiles of at most " + blob_c_tiles(spec) +
          " pixels:\n   static buffers of these sizes are always big enough (the workspace bound holds every triangle\n"
          "   of the largest layer in each band store). The descriptor holds the exact figures for the whole\n"
          "   output in these tiles, measured by the host's core (a 32-bit core needs no more). */\n#define " +

@@ -6,24 +6,21 @@
 #include <numeric>
 #include <string>
 
+#include "bytes.h"
 #include "common/errors.h"
 #include "model/topology.h"
 #include "reference/gradients.h"
+#include "wire_layout.h"
 
 namespace tristream {
 
 namespace {
 
-constexpr int S = core::config::subpixel_bits;
+using core::detail::store_i32;
+using core::detail::store_u16;
+using core::detail::store_u32;
 
-void put16(std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
-  b[at] = std::uint8_t(v & 0xFF);
-  b[at + 1] = std::uint8_t((v >> 8) & 0xFF);
-}
-void put32(std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
-  put16(b, at, v & 0xFFFF);
-  put16(b, at + 2, v >> 16);
-}
+constexpr int S = core::config::subpixel_bits;
 
 struct QPoint {
   std::int64_t x, y;
@@ -203,8 +200,6 @@ LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const
   return d;
 }
 
-std::size_t align4(std::size_t n) { return (n + 3) & ~std::size_t(3); }
-
 }  // namespace
 
 core::Method parse_core_method(std::string_view name) {
@@ -234,70 +229,83 @@ std::vector<std::uint8_t> pack_blob(const Triangulation& tri, core::Method metho
                                  tri.layered() ? where + ": layer " + std::to_string(l) : where));
   const int per_vertex = tri.layers[0].value_count;
 
-  std::size_t at = core::blob_header_size;
-  const std::size_t table = at;
-  at += core::blob_layer_entry_size * layers.size();
+  namespace w = core::wire;
+  namespace h = core::wire::header;
+  namespace L = core::wire::v1_layer;
+  // Sections in layer order, each 4-aligned: positions, values, gradients (zienkiewicz), triangles.
+  std::uint32_t at = h::bytes;
+  const std::uint32_t table = at;
+  at += L::bytes * std::uint32_t(layers.size());
   struct Offsets {
-    std::size_t pos, val, grad, tri;
+    std::uint32_t pos, val, grad, tri;
   };
   std::vector<Offsets> off;
   for (const LayerData& d : layers) {
     Offsets o{};
     o.pos = at;
-    at = align4(at + 4 * d.pos.size());
+    at = w::align_section(at + w::position::bytes * std::uint32_t(d.pos.size()));
     o.val = at;
-    at = align4(at + 2 * d.values.size());
+    at = w::align_section(at + w::value::bytes * std::uint32_t(d.values.size()));
     if (method == core::Method::zienkiewicz) {
       o.grad = at;
-      at = align4(at + 4 * d.gradients.size());
+      at = w::align_section(at + w::gradient::bytes * std::uint32_t(d.gradients.size() / 2));
     }
     o.tri = at;
-    at = align4(at + core::blob_triangle_size * d.triangles.size());
+    at = w::align_section(at + w::triangle::bytes * std::uint32_t(d.triangles.size()));
     off.push_back(o);
   }
-  std::vector<std::uint8_t> b(at, 0);
-  b[0] = 'T', b[1] = 'S', b[2] = 'T', b[3] = 'B';
-  put16(b, 4, core::blob_version);
-  put16(b, 6, core::blob_header_size);
-  put32(b, 8, std::uint32_t(at));
-  put16(b, 12, std::uint32_t(tri.width));
-  put16(b, 14, std::uint32_t(tri.height));
-  b[16] = std::uint8_t(tri.space == ColorSpace::grey ? 0 : tri.space == ColorSpace::rgb ? 1 : 2);
-  b[17] = std::uint8_t(method);
-  b[18] = std::uint8_t(layers.size());
-  b[19] = std::uint8_t(per_vertex);
-  b[20] = std::uint8_t(core::config::subpixel_bits);
-  b[21] = std::uint8_t(core::config::gradient_frac_bits);
-  put32(b, 24, core::blob_config_hash());
-  put32(b, 28, std::uint32_t(table));
+  std::vector<std::uint8_t> bytes(at, 0);
+  std::uint8_t* b = bytes.data();
+  w::put_magic(b + h::magic, w::v1_magic);
+  store_u16(b + h::version, core::blob_version);
+  store_u16(b + h::header_size, h::bytes);
+  store_u32(b + h::total_size, at);
+  store_u16(b + h::width, std::uint32_t(tri.width));
+  store_u16(b + h::height, std::uint32_t(tri.height));
+  b[h::color_space] = std::uint8_t(tri.space == ColorSpace::grey ? 0 : tri.space == ColorSpace::rgb ? 1 : 2);
+  b[h::method] = std::uint8_t(method);
+  b[h::layer_count] = std::uint8_t(layers.size());
+  b[h::values_per_vertex] = std::uint8_t(per_vertex);
+  b[h::subpixel_bits] = std::uint8_t(core::config::subpixel_bits);
+  b[h::gradient_frac_bits] = std::uint8_t(core::config::gradient_frac_bits);
+  store_u32(b + h::config_hash, core::blob_config_hash());
+  store_u32(b + h::layer_table, table);
   std::int64_t tallest = 0;
   for (std::size_t l = 0; l < layers.size(); ++l) {
     const LayerData& d = layers[l];
     const Offsets& o = off[l];
-    const std::size_t e = table + l * core::blob_layer_entry_size;
-    put32(b, e, std::uint32_t(d.pos.size()));
-    put32(b, e + 4, std::uint32_t(d.triangles.size()));
-    put32(b, e + 8, std::uint32_t(o.pos));
-    put32(b, e + 12, std::uint32_t(o.val));
-    put32(b, e + 16, std::uint32_t(o.grad));
-    put32(b, e + 20, std::uint32_t(o.tri));
+    std::uint8_t* e = b + table + l * L::bytes;
+    store_u32(e + L::vertex_count, std::uint32_t(d.pos.size()));
+    store_u32(e + L::triangle_count, std::uint32_t(d.triangles.size()));
+    store_u32(e + L::positions, o.pos);
+    store_u32(e + L::values, o.val);
+    store_u32(e + L::gradients, o.grad);
+    store_u32(e + L::triangles, o.tri);
     for (std::size_t v = 0; v < d.pos.size(); ++v) {
-      put16(b, o.pos + 4 * v, std::uint32_t(d.pos[v].x));
-      put16(b, o.pos + 4 * v + 2, std::uint32_t(d.pos[v].y));
+      std::uint8_t* p = b + o.pos + w::position::bytes * v;
+      store_u16(p + w::position::x, std::uint32_t(d.pos[v].x));
+      store_u16(p + w::position::y, std::uint32_t(d.pos[v].y));
     }
-    for (std::size_t k = 0; k < d.values.size(); ++k) put16(b, o.val + 2 * k, d.values[k]);
-    for (std::size_t k = 0; k < d.gradients.size(); ++k) put32(b, o.grad + 4 * k, std::uint32_t(d.gradients[k]));
-    for (std::size_t t = 0; t < d.triangles.size(); ++t)
-      for (int k = 0; k < 4; ++k) put16(b, o.tri + core::blob_triangle_size * t + 2 * k, d.triangles[t][k]);
+    for (std::size_t k = 0; k < d.values.size(); ++k) store_u16(b + o.val + w::value::bytes * k, d.values[k]);
+    for (std::size_t k = 0; 2 * k < d.gradients.size(); ++k) {
+      std::uint8_t* g = b + o.grad + w::gradient::bytes * k;
+      store_i32(g + w::gradient::gx, d.gradients[2 * k]);
+      store_i32(g + w::gradient::gy, d.gradients[2 * k + 1]);
+    }
+    for (std::size_t t = 0; t < d.triangles.size(); ++t) {
+      std::uint8_t* p = b + o.tri + w::triangle::bytes * t;
+      for (std::uint32_t k = 0; k < 3; ++k) store_u16(p + w::triangle::corner(k), d.triangles[t][k]);
+      store_u16(p + w::triangle::flags, d.triangles[t][3]);
+    }
     for (const auto& t : d.triangles) {
       const std::int64_t lo = std::min({d.pos[t[0]].y, d.pos[t[1]].y, d.pos[t[2]].y});
       const std::int64_t hi = std::max({d.pos[t[0]].y, d.pos[t[1]].y, d.pos[t[2]].y});
       tallest = std::max(tallest, (hi >> S) - ((lo + (1 << S) - 1) >> S) + 1);
     }
   }
-  put32(b, 32, std::uint32_t(tallest));
-  put32(b, core::blob_checksum_offset, core::blob_checksum(b.data(), std::uint32_t(b.size())));
-  return b;
+  store_u32(b + h::max_triangle_height, std::uint32_t(tallest));
+  store_u32(b + h::checksum, core::blob_checksum(b, std::uint32_t(bytes.size())));
+  return bytes;
 }
 
 }  // namespace tristream

@@ -43,17 +43,7 @@ CoreRenderer::CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions
     return DataError(blob_error_message(name, blob, st, error.offset));
   };
   if (s != core::Status::ok) throw data_error(s);
-  if (compressed_) {
-    const core::CompressedBlob& c = compressed_blob_;
-    blob_.bytes = c.bytes;
-    blob_.size = c.size;
-    blob_.width = c.width;
-    blob_.height = c.height;
-    blob_.space = c.space;
-    blob_.method = c.method;
-    blob_.layer_count = c.layer_count;
-    blob_.values_per_vertex = c.values_per_vertex;
-  }
+  if (compressed_) static_cast<core::BlobInfo&>(blob_) = compressed_blob_;  // the header fields, no layers
   auto dimension = [](int v, const char* what) {
     if (v < 0 || v > core::config::max_dimension)
       throw UsageError(std::string(what) + " must be 0 to " + std::to_string(core::config::max_dimension));
@@ -152,14 +142,13 @@ Image render_core(const Triangulation& tri, std::string_view method, const CoreO
   return frame_to_image(render_core_frame(tri, method, options, name));
 }
 
-core::PixelFormat parse_pixel_format(std::string_view name) {
-  if (name == "l8") return core::PixelFormat::l8;
-  if (name == "rgb888") return core::PixelFormat::rgb888;
-  if (name == "rgb565le") return core::PixelFormat::rgb565_le;
-  if (name == "rgb565be") return core::PixelFormat::rgb565_be;
-  if (name == "xrgb8888") return core::PixelFormat::xrgb8888;
-  throw UsageError("pixel format must be l8, rgb888, rgb565le, rgb565be or xrgb8888, not \"" + std::string(name) +
-                   "\"");
+core::Fit core_fit(Fit fit) {
+  switch (fit) {
+    case Fit::stretch: return core::Fit::stretch;
+    case Fit::inside: return core::Fit::inside;
+    case Fit::fill: return core::Fit::fill;
+  }
+  return core::Fit::stretch;
 }
 
 }  // namespace tristream

@@ -10,6 +10,7 @@
 #include "model/color.h"
 #include "model/image.h"
 #include "model/triangulation.h"
+#include "reference/fit.h"
 #include "tristream/compressed_blob.h"
 #include "tristream/render.h"
 
@@ -75,7 +76,7 @@ Image render_core(const Triangulation& tri, std::string_view method, const CoreO
 CoreFrame render_core_frame(const Triangulation& tri, std::string_view method, const CoreOptions& options,
                             std::string_view name = "triangulation");
 
-// "l8", "rgb888", "rgb565le", "rgb565be", "xrgb8888"; throws UsageError otherwise.
-core::PixelFormat parse_pixel_format(std::string_view name);
+// The core's Fit of the host's (reference/fit.h): the same layout.
+core::Fit core_fit(Fit fit);
 
 }  // namespace tristream

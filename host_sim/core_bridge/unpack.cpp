@@ -11,6 +11,7 @@
 #include "geometry/mesh_check.h"
 #include "tristream/compressed_blob.h"
 #include "bytes.h"
+#include "wire_layout.h"
 
 namespace tristream {
 
@@ -49,17 +50,17 @@ void check_drawable(const Mesh& mesh, const core::BlobLayer& layer, const core::
   for (std::size_t k = 1; k < order.size(); ++k) {
     const Point &p = mesh.points[order[k - 1]], &q = mesh.points[order[k]];
     if (p.x == q.x && p.y == q.y)
-      throw DataError(at_byte(name, blob, layer.positions + 4 * order[k]) + ": expected distinct vertex positions, found vertex " +
+      throw DataError(at_byte(name, blob, layer.positions + core::wire::position::bytes * order[k]) + ": expected distinct vertex positions, found vertex " +
                       std::to_string(order[k]) + " at the position of vertex " + std::to_string(order[k - 1]));
   }
   const auto defect = find_mesh_defect(mesh.points, mesh.triangles);
   if (!defect) return;
-  const std::uint8_t* second = layer.triangles + core::blob_triangle_size * std::max(defect->a, defect->b);
+  const std::uint8_t* second = layer.triangles + core::wire::triangle::bytes * std::max(defect->a, defect->b);
   if (defect->kind == MeshDefect::Kind::overlap)
     throw DataError(at_byte(name, blob, second) + ": expected triangles whose interiors do not overlap, found triangle " +
                     std::to_string(std::max(defect->a, defect->b)) + " overlapping triangle " +
                     std::to_string(std::min(defect->a, defect->b)));
-  throw DataError(at_byte(name, blob, layer.triangles + core::blob_triangle_size * defect->a) +
+  throw DataError(at_byte(name, blob, layer.triangles + core::wire::triangle::bytes * defect->a) +
                   ": expected triangles that meet edge to edge, found vertex " + std::to_string(defect->vertex) +
                   " inside an edge of triangle " + std::to_string(defect->a));
 }
@@ -67,7 +68,9 @@ void check_drawable(const Mesh& mesh, const core::BlobLayer& layer, const core::
 }  // namespace
 
 bool is_blob(std::span<const std::uint8_t> bytes) {
-  if (bytes.size() >= 3 && std::memcmp(bytes.data(), "TST", 3) == 0) return true;  // TSTB, TSTC: never .tri text
+  // TSTB, TSTC: never .tri text
+  if (bytes.size() >= 3 && std::memcmp(bytes.data(), core::wire::v1_magic, 3) == 0) return true;
+  static_assert(core::wire::v1_magic[2] == core::wire::compressed_magic[2], "the magics share 3 bytes");
   core::Blob blob;
   core::BlobError error;
   const core::Status s = core::open_blob(bytes.data(), bytes.size(), &blob, &error);
@@ -85,6 +88,7 @@ core::Blob open_blob_or_throw(std::span<const std::uint8_t> bytes, std::string_v
 UnpackedBlob unpack_blob(const core::Blob& blob, std::string_view name) {
   using core::detail::load_i32;
   using core::detail::load_u16;
+  namespace w = core::wire;
   UnpackedBlob out;
   out.method = blob.method;
   out.tri.width = blob.width;
@@ -101,20 +105,26 @@ UnpackedBlob unpack_blob(const core::Blob& blob, std::string_view name) {
     if (blob.layer_count > 1) mesh.name = layer_name(out.tri.space, l);
     const std::size_t nv = layer.vertex_count, nval = nv * blob.values_per_vertex;
     mesh.points.resize(nv);
-    for (std::size_t v = 0; v < nv; ++v)
-      mesh.points[v] = {load_u16(layer.positions + 4 * v) * position_scale,
-                        load_u16(layer.positions + 4 * v + 2) * position_scale};
+    for (std::size_t v = 0; v < nv; ++v) {
+      const std::uint8_t* p = layer.positions + w::position::bytes * v;
+      mesh.points[v] = {load_u16(p + w::position::x) * position_scale, load_u16(p + w::position::y) * position_scale};
+    }
     mesh.values.resize(nval);
-    for (std::size_t k = 0; k < nval; ++k) mesh.values[k] = load_u16(layer.values + 2 * k) / 256.0;
+    for (std::size_t k = 0; k < nval; ++k) mesh.values[k] = load_u16(layer.values + w::value::bytes * k) / 256.0;
     mesh.triangles.resize(layer.triangle_count);
     for (std::size_t t = 0; t < layer.triangle_count; ++t) {
-      const std::uint8_t* p = layer.triangles + core::blob_triangle_size * t;
-      mesh.triangles[t].v = {load_u16(p), load_u16(p + 2), load_u16(p + 4)};
+      const std::uint8_t* p = layer.triangles + w::triangle::bytes * t;
+      mesh.triangles[t].v = {load_u16(p + w::triangle::corner(0)), load_u16(p + w::triangle::corner(1)),
+                             load_u16(p + w::triangle::corner(2))};
     }
     check_drawable(mesh, layer, blob, name);
     if (blob.method == core::Method::zienkiewicz) {
       std::vector<std::int32_t> g(2 * nval);
-      for (std::size_t k = 0; k < g.size(); ++k) g[k] = load_i32(layer.gradients + 4 * k);
+      for (std::size_t k = 0; k < nval; ++k) {
+        const std::uint8_t* p = layer.gradients + w::gradient::bytes * k;
+        g[2 * k] = load_i32(p + w::gradient::gx);
+        g[2 * k + 1] = load_i32(p + w::gradient::gy);
+      }
       out.gradients.push_back(std::move(g));
     }
     out.tri.layers.push_back(std::move(mesh));

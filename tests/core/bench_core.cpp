@@ -9,9 +9,9 @@
 #include <sstream>
 #include <tuple>
 
-#include "bench_support.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/render_core.h"
+#include "scenes/bench_scenes.h"
 
 using namespace tristream;
 
@@ -20,7 +20,7 @@ namespace {
 const std::vector<std::uint8_t>& scene_blob(int triangles, core::Method method) {
   static std::map<std::pair<int, int>, std::vector<std::uint8_t>> cache;
   auto& blob = cache[{triangles, int(method)}];
-  if (blob.empty()) blob = pack_blob(testing::bench_scene(triangles), method);
+  if (blob.empty()) blob = pack_blob(scenes::bench_scene(triangles), method);
   return blob;
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // core_frames <triangles> <bilinear|zienkiewicz> <tile, 0 = full frame> <rgb888|rgb565le> <frames>:
-// renders the 512 x 512 benchmark scene (bench_support.h) repeatedly, for instruction counts
+// renders the 512 x 512 benchmark scene (scenes/bench_scenes.h) repeatedly, for instruction counts
 // under callgrind (tests/core/callgrind_core.sh counts only inside tristream::core::render).
 // Also prints the fastest and the median frame's wall time (the fastest is the least disturbed
 // by other processes: a quick check on a busy machine; bench_core is the benchmark). With
@@ -13,9 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "bench_support.h"
 #include "core_bridge/pack.h"
+#include "core_bridge/pixel_format_names.h"
 #include "core_bridge/render_core.h"
+#include "scenes/bench_scenes.h"
 
 using namespace tristream;
 
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: core_frames <triangles> <method> <tile> <format> <frames>\n");
     return 64;
   }
-  const auto blob = pack_blob(testing::bench_scene(std::atoi(argv[1])), parse_core_method(argv[2]));
+  const auto blob = pack_blob(scenes::bench_scene(std::atoi(argv[1])), parse_core_method(argv[2]));
   CoreOptions o;
   o.tile_width = o.tile_height = std::atoi(argv[3]);
   o.format = parse_pixel_format(argv[4]);

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "active_set.h"
-#include "bench_support.h"
 #include "core_bridge/pack.h"
 #include "io/tri_file.h"
+#include "scenes/bench_scenes.h"
 #include "tristream/tristream.h"
 
 using namespace tristream;
@@ -66,7 +66,7 @@ int check_capacities(const core::Blob& blob, const core::RenderParams& p) {
 
 TEST_CASE("the measured window and render's check agree with the window's definition") {
   const Triangulation layered = read_tri_file(TRISTREAM_SOURCE_DIR "/data/demo/kodim23.ycbcr-layers.tri");
-  const Triangulation sparse = testing::bench_scene(500, 3), dense = testing::bench_scene(40000, 4);
+  const Triangulation sparse = scenes::bench_scene(500, 3), dense = scenes::bench_scene(40000, 4);
   for (const Triangulation* t : {&sparse, &dense, &layered}) {
     const auto bytes = pack_blob(*t, core::Method::bilinear);
     core::Blob blob;

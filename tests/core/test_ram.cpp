@@ -4,14 +4,14 @@
 // renders with exactly the workspace it reports.
 #include <catch2/catch.hpp>
 
-#include "bench_support.h"
 #include "core_support.h"
 #include "io/tri_file.h"
+#include "scenes/bench_scenes.h"
 
 using namespace tristream;
 
 TEST_CASE("512x512 RGB565, 32x32 tiles, 20,000 vertices: at most 8 KiB") {
-  const Triangulation tri = testing::bench_scene(40000);
+  const Triangulation tri = scenes::bench_scene(40000);
   REQUIRE(tri.layers[0].vertex_count() == 20002);
   for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) {
     const auto blob = pack_blob(tri, m);
@@ -29,7 +29,7 @@ TEST_CASE("512x512 RGB565, 32x32 tiles, 20,000 vertices: at most 8 KiB") {
 }
 
 TEST_CASE("one byte less workspace than reported is refused, never overrun") {
-  const auto blob = pack_blob(testing::bench_scene(4000), core::Method::bilinear);
+  const auto blob = pack_blob(scenes::bench_scene(4000), core::Method::bilinear);
   core::Blob b;
   REQUIRE(core::open_blob(blob.data(), blob.size(), &b) == core::Status::ok);
   for (int tile : {8, 32, 0}) {
@@ -52,7 +52,7 @@ TEST_CASE("one byte less workspace than reported is refused, never overrun") {
 // with workspace_too_small before any tile reaches the sink (no division by a zero capacity, no
 // partial frame), for a single-mesh and a layered blob; a tile buffer one byte short likewise.
 TEST_CASE("a buffer too small for the frame is refused before the first tile") {
-  const Triangulation single = testing::bench_scene(4000);
+  const Triangulation single = scenes::bench_scene(4000);
   const Triangulation layers = read_tri_file(TRISTREAM_SOURCE_DIR "/data/demo/kodim23.ycbcr-layers.tri");
   for (const Triangulation* tri : {&single, &layers}) {
     const auto blob = pack_blob(*tri, core::Method::bilinear);

@@ -2,10 +2,9 @@
 #pragma once
 // The meshes of the bench-mcu matrix, by name:
 //   kodim23  data/demo/kodim23.rgb.tri (768 x 512, 7,964 triangles)
-//   scene4k  tests/core/bench_support.h's 512 x 512 benchmark scene of about 4,000 triangles
-//   grid40k  a 512 x 512 grid of 142 x 142 vertices (39,762 triangles), each vertex moved by up
-//            to 0.3 of the grid step (border vertices along the border), values from the demo
-//            photograph: deterministic
+//   scene4k  scenes::bench_scene(4000), 512 x 512 (host_sim/scenes/bench_scenes.h)
+//   grid40k  scenes::jittered_grid(142, 1): a 512 x 512 grid of 142 x 142 vertices (39,762
+//            triangles), each vertex moved by up to 0.3 of the grid step
 #include <string>
 #include <vector>
 
@@ -16,6 +15,5 @@ namespace tristream::bench_mcu {
 const std::vector<std::string>& mesh_names();
 // Throws UsageError for an unknown name.
 Triangulation make_mesh(const std::string& name);
-Triangulation jittered_grid(int points_per_side, unsigned seed);
 
 }  // namespace tristream::bench_mcu

@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "core_bridge/pixel_format_names.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
+#include "reference/fit_names.h"
 #include "picture.h"
 
 namespace tristream::trisim {
@@ -90,8 +92,8 @@ void apply_setting(const std::string& where, const std::string& key, const json&
   }
   else if (key == "width") r.width = int(int_in(where, key, v, 1, 65535));
   else if (key == "height") r.height = int(int_in(where, key, v, 1, 65535));
-  else if (key == "fit") r.fit = one_of(where, key, v, {"stretch", "inside", "fill"});
-  else if (key == "format") r.format = one_of(where, key, v, {"l8", "rgb888", "rgb565le", "rgb565be", "xrgb8888"});
+  else if (key == "fit") r.fit = one_of(where, key, v, fit_name_list());
+  else if (key == "format") r.format = one_of(where, key, v, pixel_format_name_list());
   else if (key == "dither") {
     if (!v.is_boolean()) bad_value(where, key, "true or false", v);
     r.dither = v.get<bool>();

@@ -17,10 +17,12 @@
 #include "common/errors.h"
 #include "common/tool_main.h"
 #include "core_bridge/pack.h"
+#include "core_bridge/pixel_format_names.h"
 #include "core_bridge/render_core.h"
 #include "io/atomic_file.h"
 #include "io/image_io.h"
 #include "metrics/metrics.h"
+#include "reference/fit_names.h"
 #include "reference/render.h"
 
 #include "golden.h"
@@ -67,7 +69,7 @@ void add_render_options(CLI::App* cmd, CliRequest& c) {
                   "Core: the output pixels to render, X0,Y0,X1,Y1 (half-open, as RenderParams::viewport); the "
                   "output is the viewport's size");
   cmd->add_option("--format", req.format, "Core: pixel format (default l8 for grey, rgb888 for colour)")
-      ->check(CLI::IsMember({"l8", "rgb888", "rgb565le", "rgb565be", "xrgb8888"}));
+      ->check(CLI::IsMember(pixel_format_name_list()));
   cmd->add_flag("--dither", req.dither, "Core: Bayer dithering of RGB565");
   cmd->add_option("--variant", req.variant, "Method variant (e.g. 'thesis' for the patch methods)");
   cmd->add_option("--width", req.width, "Output width (default: the triangulation's; mapped corner to corner)")
@@ -76,7 +78,7 @@ void add_render_options(CLI::App* cmd, CliRequest& c) {
   cmd->add_option("--fit", req.fit,
                   "How the picture meets an output of another shape: stretch (corner to corner), inside (one "
                   "scale, centred, a --background border) or fill (one scale, centred, the excess cropped)")
-      ->check(CLI::IsMember({"stretch", "inside", "fill"}))
+      ->check(CLI::IsMember(fit_name_list()))
       ->capture_default_str();
   cmd->add_option("--background", c.background,
                   "Pixels outside the triangulation: one value for every channel, or R,G,B (a grey render takes "
@@ -452,7 +454,7 @@ int run_bench(BenchCommand& c) {
     j["mpix_per_s"] = mpix;
     if (core_renderer) {
       j["tile"] = req.tile;
-      j["format"] = req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : req.format;
+      j["format"] = std::string(pixel_format_name(pixel_format_of(tri, req)));
       j["ram_bytes"] = core_renderer->tile_buffer_bytes() + core_renderer->workspace_bytes();
       // A compressed blob renders from its streams; its v1 expansion's frames are timed beside.
       if (v1) {

@@ -7,6 +7,7 @@
 
 #include "common/errors.h"
 #include "core_bridge/pack.h"
+#include "core_bridge/pixel_format_names.h"
 #include "core_bridge/unpack.h"
 #include "io/atomic_file.h"
 #include "io/limits.h"
@@ -123,23 +124,34 @@ void check_engine_options(const RenderRequest& req) {
     return;
   }
   if (!req.variant.empty()) throw UsageError("--variant: applies to --engine reference only");
-  if (req.dither && req.format != "rgb565le" && req.format != "rgb565be")
-    throw UsageError("--dither: applies to --format rgb565le and rgb565be only");
+  auto rgb565 = [](const std::string& name) {
+    if (name.empty()) return false;
+    const core::PixelFormat f = parse_pixel_format(name);
+    return f == core::PixelFormat::rgb565_le || f == core::PixelFormat::rgb565_be;
+  };
+  if (req.dither && !rgb565(req.format))
+    throw UsageError("--dither: applies to --format " + std::string(pixel_format_name(core::PixelFormat::rgb565_le)) +
+                     " and " + std::string(pixel_format_name(core::PixelFormat::rgb565_be)) + " only");
   const std::vector<std::string> core_methods = core_method_names();
   if (std::find(core_methods.begin(), core_methods.end(), req.method) == core_methods.end())
     throw UsageError("--method " + req.method + ": the core renders bilinear and zienkiewicz only (--engine reference "
                      "renders every method)");
 }
 
+core::PixelFormat pixel_format_of(const Triangulation& tri, const RenderRequest& req) {
+  if (!req.format.empty()) return parse_pixel_format(req.format);
+  return tri.channels() == 1 ? core::PixelFormat::l8 : core::PixelFormat::rgb888;
+}
+
 CoreOptions core_options(const Triangulation& tri, const RenderRequest& req) {
   CoreOptions o;
   o.width = req.width;
   o.height = req.height;
-  o.fit = req.fit == "inside" ? core::Fit::inside : req.fit == "fill" ? core::Fit::fill : core::Fit::stretch;
+  o.fit = core_fit(parse_fit(req.fit));
   o.viewport = req.viewport;
   o.tile_width = req.tile_width >= 0 ? req.tile_width : req.tile;
   o.tile_height = req.tile_height >= 0 ? req.tile_height : req.tile;
-  o.format = parse_pixel_format(req.format.empty() ? (tri.channels() == 1 ? "l8" : "rgb888") : req.format);
+  o.format = pixel_format_of(tri, req);
   o.dither = req.dither;
   o.background = req.background;
   return o;
@@ -168,7 +180,7 @@ Rendered render(const Input& in, const RenderRequest& req) {
   RenderOptions options;
   options.width = req.width;
   options.height = req.height;
-  options.fit = req.fit == "inside" ? Fit::inside : req.fit == "fill" ? Fit::fill : Fit::stretch;
+  options.fit = parse_fit(req.fit);
   options.variant = req.variant;
   options.background = req.background;
   const auto t0 = std::chrono::steady_clock::now();

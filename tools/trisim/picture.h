@@ -12,6 +12,7 @@
 #include "model/color.h"
 #include "model/image.h"
 #include "model/triangulation.h"
+#include "reference/fit_names.h"
 #include "tristream/blob.h"
 
 namespace tristream::trisim {
@@ -23,7 +24,7 @@ struct RenderRequest {
   std::string variant;
   int width = 0;
   int height = 0;
-  std::string fit = "stretch";  // stretch, inside or fill
+  std::string fit = std::string(fit_name(Fit::stretch));  // a name of reference/fit_names.h
   Background background;
   // The core's tiling (RenderParams::tile_width/height): `tile` for both sides unless a side is
   // given (>= 0); 0 = the viewport's width (bands) or height (one band).
@@ -31,7 +32,7 @@ struct RenderRequest {
   int tile_width = -1;
   int tile_height = -1;
   core::Rect viewport;  // output pixels to render, half-open; empty = the whole output
-  std::string format;   // core: pixel format ("" = l8 for grey, rgb888 for colour)
+  std::string format;   // core: pixel format, a name of core_bridge/pixel_format_names.h ("" = pixel_format_of's)
   bool dither = false;
   // Settings given explicitly, by their option names ("--engine", "--tile", ...): an option that
   // would be ignored is an error, and a blob's engine and method are its own unless given.
@@ -84,6 +85,8 @@ void check_render_size(const Triangulation& tri, const RenderRequest& req);
 // does not have.
 void check_engine_options(const RenderRequest& req);
 
+// The core's pixel format: --format, else l8 for a grey triangulation and rgb888 for colour.
+core::PixelFormat pixel_format_of(const Triangulation& tri, const RenderRequest& req);
 CoreOptions core_options(const Triangulation& tri, const RenderRequest& req);
 
 // The core's frame of the input: a blob's own bytes, a .tri packed for the method.

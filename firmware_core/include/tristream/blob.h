@@ -74,8 +74,9 @@ struct BlobLayer {
   const uint8_t* triangles = nullptr;  // blob_triangle_size bytes per triangle
 };
 
-// A validated blob; a view of the caller's bytes, which must outlive it.
-struct Blob {
+// The header fields both blob forms have (Blob, CompressedBlob): a view of the caller's bytes,
+// which must outlive it, and the total size its header records.
+struct BlobInfo {
   const uint8_t* bytes = nullptr;
   uint32_t size = 0;
   uint16_t width = 0;
@@ -84,6 +85,10 @@ struct Blob {
   Method method = Method::bilinear;
   uint8_t layer_count = 0;
   uint8_t values_per_vertex = 0;
+};
+
+// A validated blob; a view of the caller's bytes, which must outlive it.
+struct Blob : BlobInfo {
   BlobLayer layers[3];
 };
 

@@ -41,15 +41,7 @@ struct CompressedLayer {
 };
 
 // A compressed blob whose header and layer table are valid; a view of the caller's bytes.
-struct CompressedBlob {
-  const uint8_t* bytes = nullptr;
-  uint32_t size = 0;
-  uint16_t width = 0;
-  uint16_t height = 0;
-  ColorSpace space = ColorSpace::grey;
-  Method method = Method::bilinear;
-  uint8_t layer_count = 0;
-  uint8_t values_per_vertex = 0;
+struct CompressedBlob : BlobInfo {
   uint32_t max_triangle_height = 0;
   CompressedLayer layers[3];
 };
@@ -80,66 +72,7 @@ size_t compressed_tag_bytes(const CompressedBlob& blob, int layer);
 inline constexpr uint16_t compressed_tag_none = 0xFFFF;
 
 namespace detail {
-
-// An adaptive probability of a 0 in 1/2048 (11 bits), moved 1/32 of the way per coded bit.
-using Prob = uint16_t;
-inline constexpr int prob_bits = 11;
-inline constexpr int prob_shift = 5;
-inline constexpr Prob prob_half = 1u << (prob_bits - 1);
-
-// Contexts of an unsigned integer u in adaptive Exp-Golomb form: k = floor(log2(u + 1)) as k ones
-// and a zero (bit i with prefix[min(i, 15)]), then the k bits of u + 1 below its leading one, the
-// first two through a small tree per k (mantissa[min(k, 15)]), the others at probability 1/2.
-struct UintModel {
-  Prob prefix[16];
-  Prob mantissa[16][3];
-};
-// A signed integer: zero or not, the sign, then |s| - 1 as an UintModel.
-struct IntModel {
-  Prob zero;
-  Prob sign;
-  UintModel magnitude;
-};
-
-// Every context of one layer's stream (docs/COMPRESSED_BLOB.md lists what each codes) but the
-// value models: those of the integer parts of the values (predicted, see the doc) and of the
-// gradients (gx, gy, against their prediction), of which a layer has only those it codes
-// (compressed_value_models), in its decoder's ring memory.
-struct StreamModels {
-  UintModel gap;            // raster pixel gap to the previous vertex
-  Prob subpixel;            // the vertex has non-zero sub-pixel bits
-  Prob fraction;            // some value of the vertex has a non-zero fraction byte
-  // A triangle's first vertex a against the previous triangle's: 0, +1, +2, -1 or an escape (7) to
-  // top_far, context: how the previous triangle's anchor and third vertex were coded (6 classes).
-  Prob top[6][8];
-  IntModel top_far;
-  // The anchor s (a second corner): one of a's open edges (0, 1) or gap-coded (7); context: a's step.
-  Prob anchor[3][8];
-  UintModel anchor_gap;     // a gap-coded anchor: s - a - 1
-  Prob side;                // a gap-coded anchor: the side of a->s the third corner is on
-  // The third corner t: the predicted one (the largest angle over a->s among the candidates) or
-  // not; if not, unused so far (then the count of such vertices in the edge's columns between a
-  // and t) or a gap t - a - 1; contexts: how the anchor was coded (open edge 0, 1, gap-coded).
-  Prob predicted[3];
-  Prob fresh[3];
-  UintModel fresh_count;
-  UintModel third_gap;
-  Prob lift;                // a corner far ahead is decoded into a pinned slot
-  UintModel lift_gap;       // its raster pixel gap to the last vertex of the ring
-  Prob rotation[2];
-  Prob flags_nonzero;
-  Prob flag_bit[9];
-};
-
-// Set by start() (range_decoder.h); no initializers, so that LayerDecoder stays a trivial type.
-struct RangeDecoder {
-  const uint8_t* p;
-  const uint8_t* end;
-  uint32_t range;
-  uint32_t code;
-  bool overrun;  // asked for bytes past the end (never in a valid stream)
-};
-
+struct LayerDecoderState;  // layer_decoder_state.h, private to the core
 }  // namespace detail
 
 // One decoded triangle: its corners as in the v1 blob (v[0] first), each with its data.
@@ -158,10 +91,15 @@ struct DecodedTriangle {
 using VertexSink = void (*)(void* context, uint32_t index, uint16_t x, uint16_t y, const uint16_t* values,
                             const int32_t* gradients);
 
+// Bytes and alignment of a LayerDecoder: its adaptive models (960 bytes) and its place in the
+// stream, ten pointers among them (the core checks both against its state's type).
+inline constexpr size_t layer_decoder_bytes = sizeof(void*) == 4 ? 1092 : 1144;
+inline constexpr size_t layer_decoder_align = alignof(void*);
+
 // Decodes one layer's stream triangle by triangle, keeping the last `window` vertices in a ring
-// of caller memory (compressed_ring_bytes). Its own state is this object (about 1.1 KiB). A
-// trivial type: begin sets every field, so it can live in caller memory (8-aligned bytes taken as
-// a LayerDecoder) without being constructed; call begin before the other members.
+// of caller memory (compressed_ring_bytes). Its own state is this object (layer_decoder_bytes,
+// opaque). A trivial type: begin sets all of it, so it can live in caller memory (8-aligned bytes
+// taken as a LayerDecoder) without being constructed; call begin before the other members.
 class LayerDecoder {
  public:
   // Starts layer `layer` of `blob` (both must outlive the decoding); `ring` must hold
@@ -185,52 +123,10 @@ class LayerDecoder {
   uint32_t offset() const;
 
  private:
-  Status fail(Status s);
-  Status decode_position();
-  void enter_row(uint32_t row);
-  Status place(uint32_t index);
-  uint32_t pinned_slot(uint32_t index) const;
-  uint8_t* pinned_record(uint32_t index) const;
-  uint32_t ring_slot(uint32_t back, uint32_t window) const;
-  uint16_t* tag_of(uint32_t index) const;
-  void find_next_pinned();
-  Status decode_values(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
-  template <int PerVertex>
-  Status decode_values_of(uint8_t* rec, uint32_t index, const uint8_t* p0, const uint8_t* p1);
-  struct Columns {
-    int32_t lo, hi;  // 1/16 pixel
-  };
-  static Columns columns(const uint8_t* ra, const uint8_t* rs);
-  uint32_t predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t* rs, int side, uint8_t** record_out) const;
-  uint64_t fresh(uint32_t a, uint32_t count, Columns cols);
-  void add_edge(uint8_t* from, uint32_t to, bool positive);
-  uint8_t* record(uint32_t index) const;
+  detail::LayerDecoderState& state();
+  const detail::LayerDecoderState& state() const;
 
-  const CompressedBlob* blob_;
-  const CompressedLayer* layer_;
-  uint8_t* ring_;
-  detail::IntModel* value_models_;  // in the ring memory: per value, then gx, gy (zienkiewicz)
-  uint8_t* pins_;  // pinned records, then their indices (u32 each)
-  uint16_t* tags_;  // keep_tags: per ring slot, then per pinned slot (null: none)
-  uint32_t pin_slot_;  // the pinned slot the next lift takes
-  uint32_t next_pinned_;  // smallest index pending in a pinned slot (0xFFFFFFFF: none)
-  uint32_t record_;
-  VertexSink sink_;
-  void* sink_context_;
-  detail::RangeDecoder rc_;
-  detail::StreamModels m_;
-  uint32_t decoded_;  // vertices decoded: indices [0, decoded_)
-  uint32_t slot_;  // ring slot of vertex decoded_
-  uint32_t triangles_;  // triangles decoded
-  uint32_t pixel_;  // raster pixel index of the last vertex
-  uint32_t row_;  // its pixel row
-  uint32_t row_start_;  // the first vertex of that row
-  uint32_t previous_top_;  // first index of the previous triangle
-  int32_t previous_row_;  // top y (position_fx) of the previous triangle
-  uint8_t previous_picks_;  // context of the next triangle's first vertex
-  uint16_t last_values_[3];
-  int32_t last_gradients_[3][2];
-  Status failed_;
+  alignas(layer_decoder_align) unsigned char state_[layer_decoder_bytes];
 };
 
 // Bytes of the v1 blob expand_compressed_blob writes (the layout tripack's packer writes).
