@@ -112,8 +112,7 @@ struct ActiveSet {
 // in a band is live in no later one: it ended above, or has no rows) and stops where the window
 // could no longer exceed the longest so far: each triangle's rows are read once at most, and
 // render's check (least = the bitmap's capacity) reads only those of triangles more than the
-// capacity behind a band's cursor. (Measured with two row extents a triangle, that check had
-// cost dense meshes in 32 x 32 tiles 2 % of x86-64's instructions.)
+// capacity behind a band's cursor.
 inline uint32_t max_window(const BlobLayer& layer, const FramePlan& r, uint32_t least = 0) {
   uint32_t best = least, base = 0, cursor = 0;
   for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {

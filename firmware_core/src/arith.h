@@ -4,6 +4,7 @@
 #include <stdint.h>
 
 #include "tristream/config.h"
+#include "tuning.h"
 
 namespace tristream::core::detail {
 
@@ -160,7 +161,7 @@ class Mod32RoundingDivider {
   static constexpr uint32_t max_divisor = uint32_t(1) << 17;  // D = 2d at most this
 
   explicit Mod32RoundingDivider(int32_t d) : half_(uint32_t(d)), den_(uint32_t(2 * d)) {}
-  __attribute__((always_inline)) uint32_t small(int32_t m) const {
+  TS_INLINE uint32_t small(int32_t m) const {
     int32_t q, r;
     floor_divmod(m, &q, &r);
     return (uint32_t(q) << 9) + ((uint32_t(r) << 9) + half_) / den_;
@@ -168,7 +169,7 @@ class Mod32RoundingDivider {
 
  private:
   // m = q D + r with 0 <= r < D (D below 2^31: the truncated remainder is above -D).
-  __attribute__((always_inline)) void floor_divmod(int32_t m, int32_t* q, int32_t* r) const {
+  TS_INLINE void floor_divmod(int32_t m, int32_t* q, int32_t* r) const {
     const int32_t den = int32_t(den_);
     int32_t qq = m / den, rr = m - qq * den;
     if (rr < 0) rr += den, --qq;
@@ -199,7 +200,7 @@ class PreinvRoundingDivider {
         norm_(uint32_t(2 * d) << shift_),
         inv_(div_64_32(~norm_, 0xFFFFFFFFu, norm_)) {}  // floor((2^64 - 1) / norm) - 2^32
 
-  __attribute__((always_inline)) int64_t operator()(int64_t n) const {
+  TS_INLINE int64_t operator()(int64_t n) const {
     const int64_t x = 2 * n + half_;
     const int64_t s = x >> 63;
     const uint64_t u = uint64_t(x ^ s);
@@ -237,7 +238,7 @@ class PreinvRoundingDivider {
 struct SplitProduct {
   int64_t high;  // floor(x y / 2^32)
   uint32_t low;  // x y mod 2^32
-  __attribute__((always_inline)) SplitProduct(int64_t x, int32_t y) {
+  TS_INLINE SplitProduct(int64_t x, int32_t y) {
     const int32_t xl = int32_t(uint32_t(x));
     const int32_t xh = int32_t(x >> 32) + int32_t(uint32_t(x) >> 31);
     const int64_t l = int64_t(xl) * y;
@@ -245,12 +246,12 @@ struct SplitProduct {
     low = uint32_t(l);
   }
 };
-__attribute__((always_inline)) inline int64_t mul_q30_portable(int64_t x, int32_t y) {
+TS_INLINE inline int64_t mul_q30_portable(int64_t x, int32_t y) {
   const SplitProduct p(x, y);
   return int64_t(uint64_t(p.high) << 2) | int64_t(p.low >> 30);
 }
 
-__attribute__((always_inline)) inline int64_t mul_q30(int64_t x, int32_t y) {
+TS_INLINE inline int64_t mul_q30(int64_t x, int32_t y) {
 #if TS_USE_INT128
   __extension__ typedef __int128 i128;
   return int64_t((i128(x) * y) >> 30);
@@ -258,7 +259,7 @@ __attribute__((always_inline)) inline int64_t mul_q30(int64_t x, int32_t y) {
   return mul_q30_portable(x, y);
 #endif
 }
-__attribute__((always_inline)) inline int64_t mul_q32(int64_t x, int32_t y) {
+TS_INLINE inline int64_t mul_q32(int64_t x, int32_t y) {
 #if TS_USE_INT128
   __extension__ typedef __int128 i128;
   return int64_t((i128(x) * y) >> 32);

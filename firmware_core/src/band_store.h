@@ -120,8 +120,7 @@ struct BandStore {
   uint8_t values_per_vertex = 1;
   bool has_gradients = false;
   // The records are PackedStoreRecords (else StoreRecords): packed_store(slots), set with the slots
-  // by place(). Kept, not derived where used: deriving it cost zienkiewicz's compressed render up to
-  // 0.08 % modelled Cortex-M4 cycles at -O2.
+  // by place(). Kept, not derived where used (deriving it costs the compressed render a test per use).
   bool packed = false;
 
   void init(uint8_t* at, size_t size, uint32_t per_vertex, bool with_gradients, BlobLayer* view,

@@ -11,7 +11,7 @@
 #include "frame_plan.h"
 #include "tile_renderer.h"
 #include "tristream/blob.h"
-#include "tristream/render.h"
+#include "tristream/render_params.h"
 #include "tristream/tile.h"
 
 namespace tristream::core::detail {

@@ -6,12 +6,12 @@
 #include "shader.h"
 #include "triangle_view.h"
 #include "tristream/config.h"
-#if TS_USE_SSE2
-#include <emmintrin.h>
-#endif
 #include "arith.h"
+#include "backend.h"
 #include "interpolate.h"
-#include "unroll.h"
+#include "portable/bilinear_shader.h"
+#include "sse2/bilinear_shader.h"
+#include "tuning.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {
@@ -58,19 +58,9 @@ constexpr bool bilinear_preinv_division = true;
 static_assert(short_division_fits(16, 4), "the default configuration divides scan-path numerators without correction");
 static_assert(mod32_division_fits(15, 4), "the default configuration divides scan-path numerators in 32 bits");
 
-#if TS_USE_SSE2
-// Lane by lane, the low 32 bits of v * k (SSE2 has no 32-bit lane product: two 32 x 32 -> 64
-// products of the even and the odd lanes).
-inline __m128i mullo_lanes(__m128i v, uint32_t k) {
-  const __m128i kk = _mm_set1_epi32(int32_t(k));
-  const __m128i even = _mm_mul_epu32(v, kk), odd = _mm_mul_epu32(_mm_srli_epi64(v, 32), kk);
-  return _mm_unpacklo_epi32(_mm_shuffle_epi32(even, _MM_SHUFFLE(0, 0, 2, 0)),
-                            _mm_shuffle_epi32(odd, _MM_SHUFFLE(0, 0, 2, 0)));
-}
-#endif
-
 template <int Channels, typename Writer>
 struct BilinearShader {
+  using Lanes = backend::BilinearLanes<Channels, Writer>;
   const BlobLayer* layer;
   int per_vertex;
   int first_channel;
@@ -88,24 +78,14 @@ struct BilinearShader {
                                      : from_vertex0              ? 0u
                                      : bilinear_short_division   ? scan_e_ref32
                                                                  : scan_e_ref64;
-#if TS_USE_SSE2
-  // RGB to a writer that takes rounded values: the channels' values (rounding offset included),
-  // steps per column and per row in the writer's lanes.
-  static constexpr bool in_lanes = Channels == 3 && Writer::takes_rounded;
-  __m128i lane_ref{}, lane_dx{}, lane_dy{};
-#else
-  static constexpr bool in_lanes = false;
-#endif
+  // The RGB spans in vector lanes where the platform has them (portable/bilinear_shader.h,
+  // sse2/bilinear_shader.h); no storage where it has none.
+  [[no_unique_address]] Lanes lanes;
+  static constexpr bool in_lanes = Lanes::active;
   // A writer that takes rounded values, without lanes: span's scalar path (begin moves v_ref).
   static constexpr bool rounded_scalar = Writer::takes_rounded && !in_lanes;
 
-  // Out of line with SSE2: GCC inlined it at one of rasterize's call sites from session 21 on,
-  // and rasterize's bilinear RGB888 loop then cost x86-64 up to +0.6 % instructions (dense
-  // meshes). Elsewhere as the compiler chooses (the Cortex-M4 code unchanged).
-#if TS_USE_SSE2
-  __attribute__((noinline))
-#endif
-  void begin(const TriangleView& tv, const TriangleSetup& s) {
+  TS_BILINEAR_BEGIN void begin(const TriangleView& tv, const TriangleSetup& s) {
     xr = s.xr;
     yr = s.yr;
     int32_t vals[3][Channels];
@@ -147,15 +127,7 @@ struct BilinearShader {
     } else {
       setup(RoundingDivider(s.area2), s.e_ref);
     }
-#if TS_USE_SSE2
-    if constexpr (in_lanes) {
-      // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded in.
-      constexpr uint32_t half = 1u << (q16_16::frac_bits - 1);
-      lane_ref = Writer::lanes(ch[0].v_ref + half, ch[1].v_ref + half, ch[2].v_ref + half, true);
-      lane_dx = Writer::lanes(ch[0].dvdx, ch[1].dvdx, ch[2].dvdx, false);
-      lane_dy = Writer::lanes(ch[0].dvdy, ch[1].dvdy, ch[2].dvdy, false);
-    }
-#endif
+    if constexpr (in_lanes) lanes.set(ch);
     if constexpr (rounded_scalar) {
       // v_ref becomes the value at pixel (0, 0) with the rounding offset (modulo 2^32, as every
       // use): a row's first value is then v_ref + dvdx x + dvdy y, without xr and yr.
@@ -166,15 +138,10 @@ struct BilinearShader {
     }
   }
   TS_SPAN_INLINE void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {
-#if TS_USE_SSE2
     if constexpr (in_lanes) {
-      // BilinearChannel::at in lanes: the same sums modulo 2^32.
-      const __m128i v = _mm_add_epi32(lane_ref, _mm_add_epi32(mullo_lanes(lane_dx, uint32_t(x0 - xr)),
-                                                              mullo_lanes(lane_dy, uint32_t(y - yr))));
-      writer.put_span_lanes(writer.at(x0, y), x0, x1, y, v, lane_dx);
+      lanes.span(writer, y, x0, x1, xr, yr);
       return;
     }
-#endif
     auto* p = writer.at(x0, y);
     if constexpr (Writer::takes_rounded) {
       // (int32(v) >> 8 + 128) >> 8 == int32(v + 2^15) >> 16: the rounding of to_u8 folded into

@@ -4,7 +4,7 @@
 // structs as the core's, the conversion of ts_params and the sink adapters. Internal linkage:
 // each unit keeps its own copy of what it uses.
 #include "tristream/compressed_blob.h"
-#include "tristream/render.h"
+#include "tristream/render_params.h"
 #include "tristream/tristream.h"
 
 namespace tristream_c_api {

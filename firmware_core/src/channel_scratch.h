@@ -6,7 +6,7 @@
 
 #include "arith.h"
 #include "pixel_conversion.h"
-#include "tristream/render.h"
+#include "tristream/render_params.h"
 #include "tristream/tile.h"
 
 namespace tristream::core::detail {

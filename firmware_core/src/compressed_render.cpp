@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
-// The render of a compressed blob from its streams, band by band (render.h): per band and layer,
-// the band store keeps the triangles carried over whose last row reaches the band, then takes
-// those the layer's decoder yields whose top row is at most the band's last row; the first one
-// past the band waits in the layer's stream state for the next band. The band stores are read
-// through a Blob whose layers point into them, by the same tile path as a v1 blob (this
-// translation unit has its own copy of the private headers' internal-linkage code, as render.cpp).
+// The render calls of a compressed blob: its layers' decoded streams are the layer source of the
+// band loop (render_driver.h). Per band and layer, the band store keeps the triangles carried over
+// whose last row reaches the band, then takes those the layer's decoder yields whose top row is at
+// most the band's last row; the first one past the band waits in the layer's stream state for the
+// next band. The band stores are read through a Blob whose layers point into them, by the same
+// tile path as a v1 blob (this translation unit has its own copy of the private headers'
+// internal-linkage code, as render.cpp).
 #include <stddef.h>
 #include <stdint.h>
 
@@ -12,7 +13,8 @@
 #include "band_store.h"
 #include "band_tiles.h"
 #include "frame_plan.h"
-#include "tile_renderer.h"
+#include "render_driver.h"
+#include "triangle_records.h"
 #include "tristream/compressed_blob.h"
 #include "tristream/render.h"
 #include "workspace_layout.h"
@@ -35,12 +37,16 @@ static_assert(__is_trivial(LayerDecoder) && __is_trivial(LayerStream),
 
 constexpr size_t align8(size_t n) { return (n + 7) / 8 * 8; }
 
-size_t stream_bytes(const CompressedBlob& blob, int l) {
-  return align8(sizeof(LayerStream)) + align8(compressed_ring_bytes(blob, l)) + align8(compressed_tag_bytes(blob, l));
+// Takes a layer's fixed sections of the workspace, in this order: its stream state (returned),
+// its decoder's ring (stream_ring) and its tags (*tags). Nothing is set: the addresses are the
+// carver's.
+LayerStream* take_stream_sections(const CompressedBlob& blob, int l, detail::WorkspaceCarver* ws, uint16_t** tags) {
+  LayerStream* const stream = reinterpret_cast<LayerStream*>(ws->take(align8(sizeof(LayerStream))));
+  ws->take(align8(compressed_ring_bytes(blob, l)));
+  *tags = reinterpret_cast<uint16_t*>(ws->take(align8(compressed_tag_bytes(blob, l))));
+  return stream;
 }
-
-// 8 - address mod 8 bytes (1 to 8) start every workspace: exact sizes for an 8-aligned one.
-size_t pad_of(const void* p) { return 8 - uintptr_t(p) % 8; }
+uint8_t* stream_ring(LayerStream* s) { return reinterpret_cast<uint8_t*>(s) + align8(sizeof(LayerStream)); }
 
 // The header fields of the compressed blob, no layers yet: what plan_frame and the tile path read.
 Blob header_view(const CompressedBlob& c) {
@@ -61,7 +67,7 @@ uint32_t band_count(const detail::FramePlan& r) {
 }
 
 // Takes the layer to band [y0, y1]: drops what ended above y0, appends what starts by y1.
-Status advance(LayerStream& s, detail::BandStore& store, const detail::Mapping& map, int32_t y0, int32_t y1) {
+Status advance_layer(LayerStream& s, detail::BandStore& store, const detail::Mapping& map, int32_t y0, int32_t y1) {
   store.begin_band(map, y0);
   for (;;) {
     if (!s.has_held) {
@@ -81,6 +87,92 @@ Status advance(LayerStream& s, detail::BandStore& store, const detail::Mapping& 
   }
 }
 
+// The layer source of a compressed blob: per layer a decoder in the workspace feeds a band store
+// (one equal share of the workspace per layer) that holds the band's live triangles as a small
+// v1-shaped layer of view(); a layer's active set is all of its store.
+class StreamLayers {
+ public:
+  using Records = detail::BandStoreRecords;
+
+  StreamLayers(const CompressedBlob& blob, BlobError* error) : blob_(blob), view_(header_view(blob)), error_(error) {}
+  const Blob& view() const { return view_; }
+
+  Status carve(const detail::FramePlan&, detail::WorkspaceCarver* ws, detail::ActiveSet* sets) {
+    uint16_t* tags[detail::max_layers];
+    for (int l = 0; l < blob_.layer_count; ++l) streams_[l] = take_stream_sections(blob_, l, ws, &tags[l]);
+    // Every layer's fixed sections fit before any decoder begins.
+    if (!ws->fits()) return Status::workspace_too_small;
+    for (int l = 0; l < blob_.layer_count; ++l) {
+      LayerStream* const at = streams_[l];
+      const Status s = at->decoder.begin(blob_, l, stream_ring(at), align8(compressed_ring_bytes(blob_, l)));
+      if (s != Status::ok) return s;
+      at->decoder.keep_tags(tags[l]);
+      at->remaining = blob_.layers[l].triangle_count;
+      at->has_held = false;
+    }
+    const bool gradients = blob_.method == Method::zienkiewicz;
+    const size_t share = ws->share(blob_.layer_count);
+    for (int l = 0; l < blob_.layer_count; ++l) {
+      stores_[l].init(ws->take(share), share, blob_.values_per_vertex, gradients, &view_.layers[l], tags[l],
+                      uint32_t(compressed_tag_bytes(blob_, l) / 2));
+      sets[l].layer = &view_.layers[l];
+    }
+    return Status::ok;
+  }
+
+  Status advance(const detail::Mapping& map, int32_t y0, int32_t y1, detail::ActiveSet* sets) {
+    for (int l = 0; l < blob_.layer_count; ++l) {
+      const Status s = advance_layer(*streams_[l], stores_[l], map, y0, y1);
+      if (s != Status::ok) {
+        if (error_ && s != Status::workspace_too_small) error_->offset = streams_[l]->decoder.offset();
+        return s;
+      }
+      // The bitmap's place and size follow the store's triangles, band by band.
+      sets[l].words = stores_[l].mark_all_live();
+      if (!sets[l].words) return Status::workspace_too_small;
+      sets[l].capacity = uint32_t(detail::bitmap_bytes(stores_[l].count()) * 8);
+      sets[l].base = 0;
+      sets[l].cursor = stores_[l].count();
+    }
+    return Status::ok;
+  }
+
+ private:
+  const CompressedBlob& blob_;
+  Blob view_;
+  BlobError* error_;
+  LayerStream* streams_[detail::max_layers] = {};
+  detail::BandStore stores_[detail::max_layers];
+};
+
+// The sections of workspace_size's scratch, in this order (null when measuring): a decoder, its
+// ring for the largest layer, per band + 1 the live triangles' difference, those with flags' and
+// the live vertices', then per stream index the last band of a triangle using it.
+struct MeasureSections {
+  LayerDecoder* decoder;
+  uint8_t* ring;
+  size_t ring_bytes;
+  uint32_t* live;
+  uint32_t* live_flagged;
+  uint32_t* live_vertices;
+  uint16_t* last_band;
+};
+
+MeasureSections take_measure_sections(const CompressedBlob& blob, uint32_t bands, detail::WorkspaceCarver* ws) {
+  uint32_t most_vertices = 0;
+  for (int l = 0; l < blob.layer_count; ++l)
+    most_vertices = blob.layers[l].vertex_count > most_vertices ? blob.layers[l].vertex_count : most_vertices;
+  MeasureSections m;
+  m.decoder = reinterpret_cast<LayerDecoder*>(ws->take(align8(sizeof(LayerDecoder))));
+  m.ring_bytes = align8(expand_workspace_size(blob));
+  m.ring = ws->take(m.ring_bytes);
+  m.live = reinterpret_cast<uint32_t*>(ws->take(4 * (size_t(bands) + 1)));
+  m.live_flagged = reinterpret_cast<uint32_t*>(ws->take(4 * (size_t(bands) + 1)));
+  m.live_vertices = reinterpret_cast<uint32_t*>(ws->take(4 * (size_t(bands) + 1)));
+  m.last_band = reinterpret_cast<uint16_t*>(ws->take(2 * size_t(most_vertices)));
+  return m;
+}
+
 }  // namespace
 
 Status tile_buffer_size(const CompressedBlob& blob, const RenderParams& params, size_t* bytes) {
@@ -92,11 +184,9 @@ Status measure_scratch_size(const CompressedBlob& blob, const RenderParams& para
   detail::FramePlan r;
   const Status s = detail::plan_frame(header_view(blob), params, &r);
   if (s != Status::ok) return s;
-  uint32_t most_vertices = 0;
-  for (int l = 0; l < blob.layer_count; ++l)
-    most_vertices = blob.layers[l].vertex_count > most_vertices ? blob.layers[l].vertex_count : most_vertices;
-  *bytes = 8 + align8(sizeof(LayerDecoder)) + align8(expand_workspace_size(blob)) + 12 * (size_t(band_count(r)) + 1) +
-           2 * size_t(most_vertices);
+  detail::WorkspaceCarver m;
+  take_measure_sections(blob, band_count(r), &m);
+  *bytes = m.used();
   return Status::ok;
 }
 
@@ -116,26 +206,25 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
   detail::FramePlan r;
   Status s = detail::plan_frame(view, params, &r);
   if (s != Status::ok) return s;
-  size_t need = 0;
-  s = measure_scratch_size(blob, params, &need);
-  if (s != Status::ok) return s;
-  if (scratch_bytes < need) return Status::workspace_too_small;
-  uint8_t* at = static_cast<uint8_t*>(scratch) + pad_of(scratch);
-  LayerDecoder* decoder = reinterpret_cast<LayerDecoder*>(at);  // set by begin
-  uint8_t* ring = at + align8(sizeof(LayerDecoder));
-  const size_t ring_bytes = align8(expand_workspace_size(blob));
   const uint32_t bands = band_count(r);
-  uint32_t* live = reinterpret_cast<uint32_t*>(ring + ring_bytes);  // per band: live triangles' difference
-  uint32_t* live_flagged = live + (bands + 1);                      // live triangles with flags'
-  uint32_t* live_vertices = live_flagged + (bands + 1);             // and live vertices'
+  // The padding rule of a render's workspace: measure_scratch_size is exact for an 8-aligned
+  // scratch and enough for any other.
+  detail::WorkspaceCarver carver(scratch, scratch_bytes);
+  const MeasureSections m = take_measure_sections(blob, bands, &carver);
+  if (!carver.fits()) return Status::workspace_too_small;
+  LayerDecoder* const decoder = m.decoder;  // set by begin
+  uint8_t* const ring = m.ring;
+  const size_t ring_bytes = m.ring_bytes;
+  uint32_t* const live = m.live;
+  uint32_t* const live_flagged = m.live_flagged;
+  uint32_t* const live_vertices = m.live_vertices;
   // Per stream index: the last band of a triangle using it, or 0xFFFF before the first (bands <=
   // 65,535: the output height is a u16).
-  uint16_t* last_band = reinterpret_cast<uint16_t*>(live_vertices + (bands + 1));
+  uint16_t* const last_band = m.last_band;
   const bool gradients = blob.method == Method::zienkiewicz;
   uint32_t most = 0, most_vertices = 0;
-  size_t store = 0, fixed = 0;
+  size_t store = 0;
   for (int l = 0; l < blob.layer_count; ++l) {
-    fixed += stream_bytes(blob, l);
     const uint32_t vertex_count = blob.layers[l].vertex_count;
     for (uint32_t b = 0; b <= bands; ++b) live[b] = live_flagged[b] = live_vertices[b] = 0;
     for (uint32_t v = 0; v < vertex_count; ++v) last_band[v] = 0xFFFF;
@@ -195,78 +284,27 @@ Status workspace_size(const CompressedBlob& blob, const RenderParams& params, vo
       store = need > store ? need : store;
     }
   }
+  // The layout StreamLayers::carve takes after the channel scratch: every layer's fixed sections,
+  // then a band store of the largest need for every layer.
+  detail::WorkspaceCarver ws;
   figures->channel_scratch = detail::scratch_bytes(view, r, r.format);
-  figures->decoders = fixed;
+  ws.take(figures->channel_scratch);
+  const size_t before_streams = ws.used();
+  uint16_t* tags;
+  for (int l = 0; l < blob.layer_count; ++l) take_stream_sections(blob, l, &ws, &tags);
+  figures->decoders = ws.used() - before_streams;
+  for (int l = 0; l < blob.layer_count; ++l) ws.take(store);
   figures->live_triangles = most;
   figures->live_vertices = most_vertices;
   figures->band_store = store;
-  figures->bytes = 8 + figures->channel_scratch + fixed + size_t(blob.layer_count) * figures->band_store;
+  figures->bytes = ws.used();
   return Status::ok;
 }
 
 Status render(const CompressedBlob& blob, const RenderParams& params, const RenderBuffers& buffers, FrameSink sink,
               void* context, BlobError* error) {
-  if (!detail::buffers_given(params, buffers, sink)) return Status::null_argument;
-  Blob view = header_view(blob);
-  detail::FramePlan r;
-  Status s = detail::plan_frame(view, params, &r);
-  if (s != Status::ok) return s;
-  if (!detail::tile_buffers_hold(params, r, buffers)) return Status::tile_buffer_too_small;
-
-  // Workspace: [1..8 bytes to 8-align][channel scratch][per layer: stream state, ring, tags][band
-  // stores, one equal share per layer].
-  uint8_t* const ws = static_cast<uint8_t*>(buffers.workspace);
-  if (!ws) return Status::workspace_too_small;
-  const size_t scratch = detail::scratch_bytes(view, r, r.format);
-  size_t fixed = pad_of(ws) + scratch;
-  for (int l = 0; l < blob.layer_count; ++l) fixed += stream_bytes(blob, l);
-  if (buffers.workspace_bytes < fixed) return Status::workspace_too_small;
-  int16_t* scratch_ptr = scratch ? reinterpret_cast<int16_t*>(ws + pad_of(ws)) : nullptr;
-  const bool gradients = blob.method == Method::zienkiewicz;
-  const size_t share = (buffers.workspace_bytes - fixed) / blob.layer_count / 4 * 4;
-  LayerStream* streams[detail::max_layers] = {};
-  uint16_t* tags[detail::max_layers] = {};
-  detail::BandStore stores[detail::max_layers];
-  detail::ActiveSet sets[detail::max_layers];
-  uint8_t* at = ws + pad_of(ws) + scratch;
-  for (int l = 0; l < blob.layer_count; ++l) {
-    streams[l] = reinterpret_cast<LayerStream*>(at);
-    uint8_t* ring = at + align8(sizeof(LayerStream));
-    const size_t ring_bytes = align8(compressed_ring_bytes(blob, l));
-    s = streams[l]->decoder.begin(blob, l, ring, ring_bytes);
-    if (s != Status::ok) return s;
-    tags[l] = reinterpret_cast<uint16_t*>(ring + ring_bytes);
-    streams[l]->decoder.keep_tags(tags[l]);
-    streams[l]->remaining = blob.layers[l].triangle_count;
-    streams[l]->has_held = false;
-    at = ring + ring_bytes + align8(compressed_tag_bytes(blob, l));
-  }
-  for (int l = 0; l < blob.layer_count; ++l) {
-    stores[l].init(at + size_t(l) * share, share, blob.values_per_vertex, gradients, &view.layers[l], tags[l],
-                   uint32_t(compressed_tag_bytes(blob, l) / 2));
-    sets[l].layer = &view.layers[l];
-  }
-  const detail::TileRenderer draw = detail::tile_renderer<detail::BandStoreRecords>(r.format);
-  detail::TileBuffers tiles(buffers);
-  for (int32_t by = r.view.y0; by < r.view.y1; by += r.tile_h) {
-    const int32_t by1 = by + r.tile_h < r.view.y1 ? by + r.tile_h : r.view.y1;
-    for (int l = 0; l < blob.layer_count; ++l) {
-      s = advance(*streams[l], stores[l], r.map, by, by1 - 1);
-      if (s != Status::ok) {
-        if (error && s != Status::workspace_too_small) error->offset = streams[l]->decoder.offset();
-        return s;
-      }
-      // The bitmap's place and size follow the store's triangles, band by band.
-      sets[l].words = stores[l].mark_all_live();
-      if (!sets[l].words) return Status::workspace_too_small;
-      sets[l].capacity = uint32_t(detail::bitmap_bytes(stores[l].count()) * 8);
-      sets[l].base = 0;
-      sets[l].cursor = stores[l].count();
-    }
-    s = detail::draw_band(draw, view, params, r, sets, by, by1, scratch_ptr, &tiles, sink, context);
-    if (s != Status::ok) return s;
-  }
-  return Status::ok;
+  StreamLayers layers(blob, error);
+  return detail::render_frame(layers, params, buffers, sink, context);
 }
 
 Status render(const CompressedBlob& blob, const RenderParams& params, void* tile_buffer, size_t tile_buffer_bytes,

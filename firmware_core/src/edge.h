@@ -13,9 +13,7 @@
 #include <stdint.h>
 
 #include "tristream/config.h"
-#if TS_USE_SSE2
-#include <emmintrin.h>
-#endif
+#include "tuning.h"
 #include "arith.h"
 #include "tristream/fixed_point.h"
 
@@ -38,16 +36,6 @@ template <typename Int>
 constexpr bool inclusive_edge(Int dx, Int dy, bool boundary) {
   return boundary | (dy > 0) | ((dy == 0) & (dx < 0));
 }
-
-#if TS_USE_SSE2
-// inclusive_edge in int32 lanes: all ones where inclusive, 0 elsewhere (boundary: all ones or 0).
-inline __m128i inclusive_edge_lanes(__m128i dx, __m128i dy, __m128i boundary) {
-  const __m128i zero = _mm_setzero_si128();
-  return _mm_or_si128(
-      _mm_or_si128(_mm_cmpgt_epi32(dy, zero), _mm_and_si128(_mm_cmpeq_epi32(dy, zero), _mm_cmpgt_epi32(zero, dx))),
-      boundary);
-}
-#endif
 
 inline Edge make_edge(int32_t px, int32_t py, int32_t qx, int32_t qy, bool boundary) {
   const int64_t dx = int64_t(qx) - px;
@@ -81,7 +69,7 @@ struct FloorStepper {
   }
   // Without a branch: whether the remainder wraps follows the slope's fraction, which a branch
   // predictor guesses badly.
-  __attribute__((always_inline)) void next_row() {
+  TS_INLINE void next_row() {
     r += r_step;
     const int32_t wrap = r >= den;
     q += q_step + wrap;
@@ -127,23 +115,17 @@ struct SpanStepper {
       const int64_t den = e.a > 0 ? e.a : -e.a;
       bound[2].init(e.b * y0 + e.c, e.b, den);
     }
-#if TS_USE_SSE2
-    q_ = _mm_setr_epi32(bound[0].q, bound[1].q, bound[2].q, 0);
-    r_ = _mm_setr_epi32(bound[0].r, bound[1].r, bound[2].r, 0);
-    den_ = _mm_setr_epi32(bound[0].den, bound[1].den, bound[2].den, 1);
-    q_step_ = _mm_setr_epi32(bound[0].q_step, bound[1].q_step, bound[2].q_step, 0);
-    r_step_ = _mm_setr_epi32(bound[0].r_step, bound[1].r_step, bound[2].r_step, 0);
-#endif
   }
   // Columns [*x0, *x1] (inclusive; empty when *x0 > *x1) of the current row.
-  __attribute__((always_inline)) void span(int32_t* x0, int32_t* x1) const {
-#if TS_USE_SSE2
-    const int32_t q0 = _mm_cvtsi128_si32(q_), q1 = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 1));
-    const int32_t v = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 2));
-#else
-    const int32_t q0 = bound[0].q, q1 = bound[1].q;
-    const int32_t v = bound[2].q;
-#endif
+  TS_INLINE void span(int32_t* x0, int32_t* x1) const { columns(bound[0].q, bound[1].q, bound[2].q, third_left, x0, x1); }
+  TS_INLINE void next_row() {
+    bound[0].next_row();
+    bound[1].next_row();
+    bound[2].next_row();
+  }
+  // A row's columns from the bounds' quotients q0 (left), q1 (right) and v (the third, on the left
+  // when third_left).
+  TS_INLINE static void columns(int32_t q0, int32_t q1, int32_t v, bool third_left, int32_t* x0, int32_t* x1) {
     // The third bound applies to one side; the other side takes a bound that never wins. Bit
     // operations on a mask, not a branch (compilers keep the ternary form as a jump here).
     const int32_t left_mask = -int32_t(third_left);
@@ -152,26 +134,6 @@ struct SpanStepper {
     *x0 = max2(-q0, third_lo);
     *x1 = min2(q1, third_hi);
   }
-  __attribute__((always_inline)) void next_row() {
-#if TS_USE_SSE2
-    // FloorStepper::next_row in lanes 0..2 (lane 3 idle): r < 2 den < 2^31, so the signed compare
-    // r > den - 1 is r >= den; a wrap is -1 in its lane.
-    r_ = _mm_add_epi32(r_, r_step_);
-    const __m128i wrap = _mm_cmpgt_epi32(r_, _mm_sub_epi32(den_, _mm_set1_epi32(1)));
-    q_ = _mm_sub_epi32(_mm_add_epi32(q_, q_step_), wrap);
-    r_ = _mm_sub_epi32(r_, _mm_and_si128(den_, wrap));
-#else
-    bound[0].next_row();
-    bound[1].next_row();
-    bound[2].next_row();
-#endif
-  }
-
-#if TS_USE_SSE2
- private:
-  // The three bounds' q, r, den, q_step and r_step in lanes 0..2 (bound[] only sets them up).
-  __m128i q_, r_, den_, q_step_, r_step_;
-#endif
 };
 
 // The same spans from two bounds per row instead of three (Cortex-M: two steppers stay in
@@ -229,11 +191,11 @@ struct SplitSpanStepper {
     init_bound(&shortb, e[switch_pending ? upper : lower], y0);
   }
   // Called on every row y (the row the steppers are at) before span or next_row.
-  __attribute__((always_inline)) void begin_row(int32_t y) {
+  TS_INLINE void begin_row(int32_t y) {
     if (__builtin_expect(y == split, 0) && switch_pending) switch_to_lower(y);
   }
   // Columns [*x0, *x1] (inclusive; empty when *x0 > *x1) of row y.
-  __attribute__((always_inline)) void span(int32_t y, int32_t* x0, int32_t* x1) const {
+  TS_INLINE void span(int32_t y, int32_t* x0, int32_t* x1) const {
     const int32_t l = long_left ? longb.q : shortb.q;
     const int32_t r = long_left ? shortb.q : longb.q;
     *x0 = -l;
@@ -247,7 +209,7 @@ struct SplitSpanStepper {
       }
     }
   }
-  __attribute__((always_inline)) void next_row() {
+  TS_INLINE void next_row() {
     longb.next_row();
     shortb.next_row();
   }
@@ -255,7 +217,7 @@ struct SplitSpanStepper {
  private:
   int32_t mid_row = INT32_MIN;  // `split` once the switch there saw a row through m
   int32_t upper_q = INT32_MAX;  // the upper short edge's bound on that row
-  __attribute__((noinline)) void switch_to_lower(int32_t y) {
+  TS_NOINLINE void switch_to_lower(int32_t y) {
     upper_q = shortb.q;
     if (exact) mid_row = y;
     init_bound(&shortb, edges[lower], y);

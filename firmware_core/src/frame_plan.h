@@ -7,7 +7,8 @@
 #include "output_mapping.h"
 #include "tristream/blob.h"
 #include "tristream/config.h"
-#include "tristream/render.h"
+#include "tristream/render_params.h"
+#include "tristream/status.h"
 
 namespace tristream::core::detail {
 namespace {

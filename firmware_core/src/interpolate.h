@@ -7,7 +7,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "tuning.h"
 #include "arith.h"
+#include "arm/zienkiewicz_eval.h"
 #include "edge.h"
 #include "tristream/fixed_point.h"
 
@@ -59,7 +61,7 @@ struct BilinearChannel {
                              (a[1] >> S) * ox + (b[1] >> S) * oy};
     }
   };
-  __attribute__((always_inline)) void setup_from_vertex0(const VertexZeroEdges& e, const Mod32RoundingDivider& by_area2,
+  TS_INLINE void setup_from_vertex0(const VertexZeroEdges& e, const Mod32RoundingDivider& by_area2,
                                                          const int32_t* values) {
     static_assert(q16_16::frac_bits - q8_8::frac_bits == 8, "Mod32RoundingDivider divides m 2^8");
     const int32_t u = values[2] - values[1], w = values[0] - values[1];
@@ -71,7 +73,7 @@ struct BilinearChannel {
   // RoundingDivider): |a|, |b| < 2^20 (detail/edge.h), so |p|, |q| < 2^21 and every product fits
   // int64; the roundings are those of setup (2^8 v_0 is a whole quotient).
   template <typename Divider>
-  __attribute__((always_inline)) void setup_from_vertex0(const VertexZeroEdges& e, const Divider& by_area2,
+  TS_INLINE void setup_from_vertex0(const VertexZeroEdges& e, const Divider& by_area2,
                                                          const int32_t* values) {
     constexpr int shift = q16_16::frac_bits - q8_8::frac_bits;
     const int64_t u = values[2] - values[1], w = values[0] - values[1];
@@ -88,26 +90,13 @@ struct BilinearChannel {
   uint32_t step() const { return dvdx; }
 };
 
-// Out of line on Cortex-M: CubicSteps::skip (rows cut by a tile's left edge take it; inlined, its
-// binomials were formed for every restart) and ZienkiewiczChannel::setup_rows_within (called for
-// every channel of a triangle; its frame is the deepest of the zienkiewicz render there). It is
-// inlined elsewhere (x86-64: GCC left it out of line, +1.3 % instructions of a 4,000-triangle
-// frame).
-#if TS_USE_INT128
-#define TS_CUBIC_SKIP_ATTRIBUTES
-#define TS_SETUP_ROWS_ATTRIBUTES __attribute__((always_inline))
-#else
-#define TS_CUBIC_SKIP_ATTRIBUTES __attribute__((noinline))
-#define TS_SETUP_ROWS_ATTRIBUTES __attribute__((noinline))
-#endif
-
 // Forward differences of a cubic along a row (ZienkiewiczChannel::setup_rows, steps_at): the
 // value and its first three differences in 2^-18 grey, modulo 2^32 (a value read as int32 is
 // exact whenever it fits, see ZienkiewiczChannel::max_fd_sum).
 struct CubicSteps {
   uint32_t v, d1, d2, d3;  // no initializers: arrays of them are filled by steps_at, not zeroed first
 
-  __attribute__((always_inline)) void step() {
+  TS_INLINE void step() {
     v += d1;
     d1 += d2;
     d2 += d3;
@@ -129,15 +118,6 @@ struct CubicSteps {
 // Cortex-M). On 64-bit hosts the 64-bit forms are as fast and the checks that choose would only
 // cost.
 constexpr bool zienkiewicz_narrow_forms = !TS_USE_INT128;
-
-// ZienkiewiczChannel::setup inlined into each shader's begin (its loads and the triangle's edges
-// then stay in registers: 2.5 % of the cycles of a 40,000-triangle frame on Cortex-M4, 5 % of the
-// x86-64 instructions), except where the code is optimized for size (-Os: one copy).
-#if defined(__OPTIMIZE_SIZE__)
-#define TS_ZIENKIEWICZ_SETUP_INLINE inline
-#else
-#define TS_ZIENKIEWICZ_SETUP_INLINE inline __attribute__((always_inline))
-#endif
 
 // Zienkiewicz (docs/CONVENTIONS.md) as a cubic polynomial in the barycentric weights (a, b) of vertices
 // 0 and 1: f = sum p[i][j] a^i b^j, coefficients in q24_8 from the vertex values and the edge
@@ -209,7 +189,7 @@ struct ZienkiewiczChannel {
   // Inlined (-Os would call it, and the readers, once per product).
   static constexpr int derivative_shift = config::subpixel_bits + config::gradient_frac_bits - q24_8::frac_bits;
   template <typename Gradients>
-  __attribute__((always_inline)) static int64_t derivative(const int32_t* edge_dx, const int32_t* edge_dy,
+  TS_INLINE static int64_t derivative(const int32_t* edge_dx, const int32_t* edge_dy,
                                                            const Gradients& gradients, int edge, int vertex) {
     constexpr int shift = derivative_shift;
     static_assert(shift >= 1, "edge derivative needs at least one bit to round away");
@@ -217,7 +197,7 @@ struct ZienkiewiczChannel {
   }
   // derivative before its rounding: edge . gradient in 2^-(shift + 8) grey.
   template <typename Gradients>
-  __attribute__((always_inline)) static int64_t derivative_sum(const int32_t* edge_dx, const int32_t* edge_dy,
+  TS_INLINE static int64_t derivative_sum(const int32_t* edge_dx, const int32_t* edge_dy,
                                                                const Gradients& gradients, int edge, int vertex) {
     return int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
   }
@@ -247,7 +227,7 @@ struct ZienkiewiczChannel {
     constexpr int shift = derivative_shift;
     if constexpr (shift + 19 >= 32) {
       // (Configurations with many fraction bits.) The derivatives in int64, then tested.
-      auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
+      auto u = [&](int edge, int vertex) TS_INLINE {
         return derivative(edge_dx, edge_dy, gradients, edge, vertex);
       };
       const int64_t u2 = u(0, 0), u3 = u(0, 1), u5 = u(1, 1), u6 = u(1, 2), u8 = u(2, 2), u9 = u(2, 0);
@@ -258,10 +238,10 @@ struct ZienkiewiczChannel {
     }
     // derivative's rounded sum lifted by max 2^shift: u is in [-max, max) exactly when that is in
     // [0, 2 max 2^shift) (its high word 0, its low word below the bound), and u is then the low
-    // word shifted, less max: no 64-bit shift or test (-50 modelled Cortex-M4 cycles a triangle).
+    // word shifted, less max: no 64-bit shift or test.
     constexpr int64_t lift = (int64_t(1) << (shift - 1)) + (int64_t(max_narrow_derivative) << shift);
     uint32_t high = 0, low = 0;
-    auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
+    auto u = [&](int edge, int vertex) TS_INLINE {
       const int64_t d = derivative_sum(edge_dx, edge_dy, gradients, edge, vertex) + lift;
       high |= uint32_t(uint64_t(d) >> 32);
       low |= uint32_t(d);
@@ -276,18 +256,18 @@ struct ZienkiewiczChannel {
   }
   // setup's 64-bit expansion out of line where 64-bit arithmetic is several instructions
   // (Cortex-M, where setup takes it only for large derivatives), the derivatives formed again
-  // there: inlined into setup it costs the deepest stack 56 bytes and 1 % to 4 % modelled cycles
-  // at -O2; called with the nine int64 inputs it costs the caller's frame their 64 bytes.
+  // there: inlined into setup it would add its frame to the deepest stack and slow setup's common
+  // path; called with the nine int64 inputs it would cost the caller's frame their 64 bytes.
   template <typename Values, typename Gradients>
-  __attribute__((noinline)) bool setup_wide(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
+  TS_NOINLINE bool setup_wide(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
                                             const Gradients& gradients) {
     return expand_wide(edge_dx, edge_dy, values, gradients);
   }
   // setup_wide's body, for a caller that has it inline.
   template <typename Values, typename Gradients>
-  __attribute__((always_inline)) bool expand_wide(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
+  TS_INLINE bool expand_wide(const int32_t* edge_dx, const int32_t* edge_dy, const Values& values,
                                                   const Gradients& gradients) {
-    auto u = [&](int edge, int vertex) __attribute__((always_inline)) {
+    auto u = [&](int edge, int vertex) TS_INLINE {
       return derivative(edge_dx, edge_dy, gradients, edge, vertex);
     };
     expand<int64_t>(values[0], u(0, 0), u(0, 1), values[1], u(1, 1), u(1, 2), values[2], u(2, 2), u(2, 0));
@@ -295,7 +275,7 @@ struct ZienkiewiczChannel {
   }
   // Whether every edge derivative is in [-max_narrow_derivative, max_narrow_derivative): each
   // u + max in [0, 2 max), so their bitwise or below 2 max.
-  __attribute__((always_inline)) static bool narrow_derivatives(int64_t u2, int64_t u3, int64_t u5, int64_t u6,
+  TS_INLINE static bool narrow_derivatives(int64_t u2, int64_t u3, int64_t u5, int64_t u6,
                                                                 int64_t u8, int64_t u9) {
     constexpr uint64_t lift = uint64_t(max_narrow_derivative);
     auto o = [](int64_t v) { return uint64_t(v) + lift; };
@@ -344,7 +324,7 @@ struct ZienkiewiczChannel {
   // The coefficients p stored scaled, s = p 4^(i + j) (|p| < 2^52 from any inputs: |u| < 2^47; in
   // int32 within the narrow budget, |p| <= 2^23).
   template <typename T>
-  __attribute__((always_inline)) void store(T q00, T q01, T q02, T q03, T q10, T q11, T q12, T q20, T q21, T q30) {
+  TS_INLINE void store(T q00, T q01, T q02, T q03, T q10, T q11, T q12, T q20, T q21, T q30) {
 #if !TS_USE_INT128
     if constexpr (sizeof(T) > sizeof(int32_t)) {
       // Whether each scaled coefficient fits int32 (wide_mark itself goes wide: any value that large
@@ -377,14 +357,14 @@ struct ZienkiewiczChannel {
   struct Weights {
 #if TS_USE_INT128
     uint64_t a, b;
-    __attribute__((always_inline)) static Weights of(uint32_t a, uint32_t b) {
+    TS_INLINE static Weights of(uint32_t a, uint32_t b) {
       return {uint64_t(a) << 32, uint64_t(b) << 32};
     }
 #else
     uint32_t a, b;
-    __attribute__((always_inline)) static Weights of(uint32_t a, uint32_t b) { return {a, b}; }
+    TS_INLINE static Weights of(uint32_t a, uint32_t b) { return {a, b}; }
 #endif
-    __attribute__((always_inline)) void step(const Weights& d) { a += d.a, b += d.b; }
+    TS_INLINE void step(const Weights& d) { a += d.a, b += d.b; }
   };
   // The q24_8 value at the barycentric weights a, b (q2_30) plus rounding_bias, unclamped (below
   // 2^60 in magnitude: |s| < 2^58).
@@ -399,20 +379,20 @@ struct ZienkiewiczChannel {
   // word of W t: one multiply a step, as cheap as a 64-bit product and exact for every t (so every
   // triangle takes it: narrow_always); elsewhere mul_q32.
   template <typename C>
-  __attribute__((always_inline)) static int64_t horner(const C& c, int32_t a, int32_t b) {
+  TS_INLINE static int64_t horner(const C& c, int32_t a, int32_t b) {
     return horner(c, Weights::of(uint32_t(a), uint32_t(b)));
   }
   template <typename C>
-  __attribute__((always_inline)) static int64_t horner(const C& c, Weights w) {
+  TS_INLINE static int64_t horner(const C& c, Weights w) {
 #if TS_USE_INT128
     __extension__ typedef __int128 i128;
     const int64_t wa = int64_t(w.a), wb = int64_t(w.b);
-    auto h = [](int64_t v, int64_t t, int64_t s) __attribute__((always_inline)) {
+    auto h = [](int64_t v, int64_t t, int64_t s) TS_INLINE {
       return s + int64_t((i128(v) * t) >> 64);
     };
 #else
     const int32_t wa = int32_t(w.a), wb = int32_t(w.b);
-    auto h = [](int32_t v, int64_t t, int64_t s) __attribute__((always_inline)) { return s + mul_q32(t, v); };
+    auto h = [](int32_t v, int64_t t, int64_t s) TS_INLINE { return s + mul_q32(t, v); };
 #endif
     const int64_t pb = h(wb, h(wb, h(wb, c.s03, c.s02), c.s01), c.s00);
     const int64_t pa = h(wa, h(wa, c.s30, h(wb, c.s21, c.s20)), h(wb, h(wb, c.s12, c.s11), c.s10));
@@ -433,7 +413,7 @@ struct ZienkiewiczChannel {
   static constexpr int32_t max_narrow_coefficient = int32_t(1) << 29;
   static constexpr int64_t narrow_eval_bound(int64_t s) { return 13 * s / 4 + 5; }
   // Every s in [-S, S): each s + S in [0, 2 S), so their bitwise or below 2 S.
-  __attribute__((always_inline)) bool fits_narrow() const {
+  TS_INLINE bool fits_narrow() const {
 #if TS_USE_INT128
     using U = uint64_t;
 #else
@@ -451,37 +431,18 @@ struct ZienkiewiczChannel {
   // more (narrow_always), else eval32. The value plus rounding_bias: int32 in eval32's budget.
 #if TS_USE_INT128
   using NarrowValue = int64_t;
-  __attribute__((always_inline)) int64_t eval_narrow(int32_t a, int32_t b) const { return horner(*this, a, b); }
-  __attribute__((always_inline)) int64_t eval_narrow(Weights w) const { return horner(*this, w); }
+  TS_INLINE int64_t eval_narrow(int32_t a, int32_t b) const { return horner(*this, a, b); }
+  TS_INLINE int64_t eval_narrow(Weights w) const { return horner(*this, w); }
 #else
   using NarrowValue = int32_t;
-  __attribute__((always_inline)) int32_t eval_narrow(int32_t a, int32_t b) const { return eval32(a, b); }
-  __attribute__((always_inline)) int32_t eval_narrow(Weights w) const { return eval32(int32_t(w.a), int32_t(w.b)); }
+  TS_INLINE int32_t eval_narrow(int32_t a, int32_t b) const { return eval32(a, b); }
+  TS_INLINE int32_t eval_narrow(Weights w) const { return eval32(int32_t(w.a), int32_t(w.b)); }
 #endif
-  __attribute__((always_inline)) int32_t eval32(int32_t a, int32_t b) const {
-#if defined(__ARM_FEATURE_DSP) && defined(__thumb2__)
-    // The same ten steps as the C below, the coefficients read in three runs of loads (on
-    // Cortex-M4 a load right after a load takes one cycle, interleaved with the products two):
-    // 87 modelled cycles a pixel of three channels against 97. GCC interleaves them (and a
-    // barrier on the loaded values costs register copies).
-    // One base register (s00's address) and the coefficients' offsets from it (s00 .. s30 in
-    // their declaration's order, 4 bytes apart: static_assert below the class), the ten words one
-    // memory operand: an operand a coefficient takes an address register each where the compiler
-    // does not share them (-O0, clang), more than there are.
-    int32_t v, t0, t1, t2, t3;
-    __asm__(
-        "ldr %[t3], [%[p], #12]\n\tldr %[t2], [%[p], #8]\n\tldr %[t1], [%[p], #4]\n\tldr %[t0], [%[p]]\n\t"
-        "smmla %[t3], %[b], %[t3], %[t2]\n\tsmmla %[t3], %[b], %[t3], %[t1]\n\tsmmla %[v], %[b], %[t3], %[t0]\n\t"
-        "ldr %[t2], [%[p], #36]\n\tldr %[t1], [%[p], #32]\n\tldr %[t0], [%[p], #28]\n\t"
-        "smmla %[t1], %[b], %[t1], %[t0]\n\tsmmla %[t2], %[a], %[t2], %[t1]\n\t"
-        "ldr %[t3], [%[p], #24]\n\tldr %[t1], [%[p], #20]\n\tldr %[t0], [%[p], #16]\n\t"
-        "smmla %[t3], %[b], %[t3], %[t1]\n\tsmmla %[t3], %[b], %[t3], %[t0]\n\t"
-        "smmla %[t2], %[a], %[t2], %[t3]\n\tsmmla %[v], %[a], %[t2], %[v]"
-        : [v] "=&r"(v), [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3)
-        : [a] "r"(a), [b] "r"(b), [p] "r"(&s00), "m"(*reinterpret_cast<const int32_t(*)[10]>(&s00)));
-    return v;
+  TS_INLINE int32_t eval32(int32_t a, int32_t b) const {
+#if TS_ARM_SMMLA
+    return arm::eval32(&s00, a, b);  // the same steps in assembly (arm/zienkiewicz_eval.h)
 #else
-    auto h = [](int32_t w, int32_t t, int32_t s) __attribute__((always_inline)) { return mla_high(w, t, s); };
+    auto h = [](int32_t w, int32_t t, int32_t s) TS_INLINE { return mla_high(w, t, s); };
     const int32_t pb = h(b, h(b, h(b, int32_t(s03), int32_t(s02)), int32_t(s01)), int32_t(s00));
     const int32_t pa = h(a, h(a, int32_t(s30), h(b, int32_t(s21), int32_t(s20))),
                          h(b, h(b, int32_t(s12), int32_t(s11)), int32_t(s10)));
@@ -490,7 +451,7 @@ struct ZienkiewiczChannel {
   }
   // p + the high word of the 64-bit product w t (modulo 2^32; eval_narrow's sums fit): what one
   // SMMLA computes, the instruction of eval32's and steps_at's assembly on Cortex-M4.
-  __attribute__((always_inline)) static int32_t mla_high(int32_t w, int32_t t, int32_t p) {
+  TS_INLINE static int32_t mla_high(int32_t w, int32_t t, int32_t p) {
     return int32_t(uint32_t(p) + uint32_t(int32_t((int64_t(w) * t) >> 32)));
   }
 
@@ -513,7 +474,7 @@ struct ZienkiewiczChannel {
   // in 2^-8 times q2_30): c1 exact, c2 and c3 from floor(x w / 2^30) products (mul_q30; below 2
   // and 3 units of 2^-38 off), then each coefficient rounded once to 2^-18.
   // (The shader tests the steps once for its channels, then calls setup_rows_within.)
-  __attribute__((always_inline)) bool setup_rows(int32_t da, int32_t db) {
+  TS_INLINE bool setup_rows(int32_t da, int32_t db) {
     // No row of 5 pixels or more, and the bounds below rest on the steps' budget.
     return steps_fit_rows(da, db) && setup_rows_within(da, db);
   }
@@ -534,7 +495,7 @@ struct ZienkiewiczChannel {
 #else
     using U = uint32_t;  // the int32 coefficients
 #endif
-    auto within = [&](int bits) __attribute__((always_inline)) {
+    auto within = [&](int bits) TS_INLINE {
       const U lift = U(1) << bits;
       auto o = [lift](auto c) { return U(c) + lift; };
       return (o(p00) | o(p01) | o(p02) | o(p03) | o(p10) | o(p11) | o(p12) | o(p20) | o(p21) | o(p30)) < 2 * lift;
@@ -542,7 +503,7 @@ struct ZienkiewiczChannel {
     static_assert(10 * (int64_t(1) << 17) < max_fd_sum, "ten coefficients below 2^17 sum to below max_fd_sum");
     if (!within(17)) {
       if (!within(21)) return false;
-      auto mag = [](auto c) __attribute__((always_inline)) { return uint32_t(c < 0 ? -c : c); };
+      auto mag = [](auto c) TS_INLINE { return uint32_t(c < 0 ? -c : c); };
       if (mag(p00) + mag(p01) + mag(p02) + mag(p03) + mag(p10) + mag(p11) + mag(p12) + mag(p20) + mag(p21) + mag(p30) >=
           uint32_t(max_fd_sum))
         return false;
@@ -567,18 +528,18 @@ struct ZienkiewiczChannel {
     // (D2's terms are the steps times D1's: |h| below 1.6 2^26); its check is kept so that steps_at's
     // bound does not rest on that derivation. Each coefficient stored as soon as it is formed (fd is
     // undefined when the budget fails), those of the cubic terms first, the products that share
-    // them in a row (c3 kept for h00, g00): few values live at once (the deepest Cortex-M4 frame:
-    // 28 bytes less than in the order c3, c2_00, c2_10, c2_01, and -0.03 % to -0.6 % cycles).
+    // them in a row (c3 kept for h00, g00): few values live at once (the deepest Cortex-M4 frame
+    // is this one).
     constexpr uint32_t g_lift = uint32_t(1) << 26, h_lift = uint32_t(1) << 28;
     uint32_t g_or = 0, h_or = 0;
     auto x4 = [](int32_t v) { return int32_t(uint32_t(v) << 2); };
     RowCoefficients& f = fd;
-    auto g = [&](int64_t sum, int32_t * to, bool lifted) __attribute__((always_inline)) {
+    auto g = [&](int64_t sum, int32_t * to, bool lifted) TS_INLINE {
       const int32_t v = round_down(sum);
       g_or |= uint32_t(v) + g_lift;
       *to = lifted ? x4(v) : v;
     };
-    auto h = [&](int64_t sum, int32_t * to, bool lifted) __attribute__((always_inline)) {
+    auto h = [&](int64_t sum, int32_t * to, bool lifted) TS_INLINE {
       const int32_t v = round_down(sum);
       h_or |= uint32_t(v) + h_lift;
       *to = lifted ? x4(v) : v;
@@ -617,50 +578,22 @@ struct ZienkiewiczChannel {
   // The value, D1 and D2 at weights a, b (q2_30, a covered pixel's) in 2^-18 grey by Horner's rule
   // with floor(w t / 2^30) (mla_high): the value's in 2^-14 grey (below 9 units of error from
   // its nine floors), then times 16; D1's and D2's below 5 and 2 units. D3.
-  __attribute__((always_inline)) CubicSteps steps_at(int32_t a, int32_t b) const {
+  TS_INLINE CubicSteps steps_at(int32_t a, int32_t b) const {
     const RowCoefficients& r = fd;
     CubicSteps s;
     // The value's partial sums: at most the sum of the ten |e| < 2^27 (weights a little beyond
     // [0, 1]), so times 4 within int32.
-#if defined(__ARM_FEATURE_DSP) && defined(__thumb2__)
-    // The same steps as the C below (m's multiplicand shifted left by 2 first), the coefficients
-    // read in runs of loads as in eval32 (-0.5 % to -0.9 % modelled Cortex-M4 cycles, forward-
-    // differenced rows of 7 to 11 pixels on average).
-    // By one base register and the fields' offsets, as eval32 (static_assert below the class).
-    const auto& words = *reinterpret_cast<const int32_t(*)[20]>(&r);
-    int32_t d1, d2, v, t0, t1, t2, t3;
-    __asm__(
-        "ldr %[t0], [%[p], #56]\n\tldr %[t1], [%[p], #48]\n\tldr %[t2], [%[p], #60]\n\tldr %[t3], [%[p], #52]\n\t"
-        "smmla %[t0], %[b], %[t0], %[t1]\n\tsmmla %[t2], %[a], %[t2], %[t0]\n\t"
-        "ldr %[t1], [%[p], #44]\n\tldr %[t0], [%[p], #40]\n\t"
-        "smmla %[t3], %[b], %[t3], %[t1]\n\tlsl %[t3], %[t3], #2\n\tsmmla %[t3], %[b], %[t3], %[t0]\n\t"
-        "lsl %[t2], %[t2], #2\n\tsmmla %[d1], %[a], %[t2], %[t3]"
-        : [d1] "=&r"(d1), [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3)
-        : [a] "r"(a), [b] "r"(b), [p] "r"(&r), "m"(words));
-    __asm__(
-        "ldr %[t0], [%[p], #68]\n\tldr %[t1], [%[p], #64]\n\tldr %[t2], [%[p], #72]\n\t"
-        "smmla %[t0], %[b], %[t0], %[t1]\n\tsmmla %[d2], %[a], %[t2], %[t0]"
-        : [d2] "=&r"(d2), [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2)
-        : [a] "r"(a), [b] "r"(b), [p] "r"(&r), "m"(words));
-    __asm__(
-        "ldr %[t0], [%[p], #24]\n\tldr %[t1], [%[p], #8]\n\tldr %[t2], [%[p], #4]\n\tldr %[t3], [%[p]]\n\t"
-        "smmla %[t0], %[b], %[t0], %[t1]\n\tlsl %[t0], %[t0], #2\n\tsmmla %[t0], %[b], %[t0], %[t2]\n\t"
-        "lsl %[t0], %[t0], #2\n\tsmmla %[v], %[b], %[t0], %[t3]\n\t"
-        "ldr %[t0], [%[p], #32]\n\tldr %[t1], [%[p], #20]\n\tldr %[t2], [%[p], #36]\n\t"
-        "smmla %[t0], %[b], %[t0], %[t1]\n\tsmmla %[t2], %[a], %[t2], %[t0]\n\t"
-        "ldr %[t0], [%[p], #28]\n\tldr %[t1], [%[p], #16]\n\tldr %[t3], [%[p], #12]\n\t"
-        "smmla %[t0], %[b], %[t0], %[t1]\n\tlsl %[t0], %[t0], #2\n\tsmmla %[t0], %[b], %[t0], %[t3]\n\t"
-        "lsl %[t2], %[t2], #2\n\tsmmla %[t2], %[a], %[t2], %[t0]\n\t"
-        "lsl %[t2], %[t2], #2\n\tsmmla %[v], %[a], %[t2], %[v]"
-        : [v] "=&r"(v), [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3)
-        : [a] "r"(a), [b] "r"(b), [p] "r"(&r), "m"(words));
+#if TS_ARM_SMMLA
+    // The same steps in assembly (arm/zienkiewicz_eval.h).
+    int32_t v, d1, d2;
+    arm::steps_at(&r.e00, a, b, &v, &d1, &d2);
     s.d1 = uint32_t(d1);
     s.d2 = uint32_t(d2);
     s.d3 = uint32_t(r.d3);
     s.v = uint32_t(v) << (value_frac_bits - value_horner_frac_bits);
 #else
-    auto m4 = [](int32_t w, int32_t t4, int32_t p) __attribute__((always_inline)) { return mla_high(w, t4, p); };
-    auto m = [](int32_t w, int32_t t, int32_t p) __attribute__((always_inline)) {
+    auto m4 = [](int32_t w, int32_t t4, int32_t p) TS_INLINE { return mla_high(w, t4, p); };
+    auto m = [](int32_t w, int32_t t, int32_t p) TS_INLINE {
       return mla_high(w, int32_t(uint32_t(t) << 2), p);
     };
     s.d1 = uint32_t(m(a, m4(a, r.g20x4, m4(b, r.g11x4, r.g10)), m(b, m4(b, r.g02x4, r.g01), r.g00)));
@@ -674,8 +607,9 @@ struct ZienkiewiczChannel {
   }
 };
 
-#if defined(__ARM_FEATURE_DSP) && defined(__thumb2__)
-// The offsets eval32's and steps_at's assembly reads the coefficients at.
+#if !TS_USE_INT128
+// The offsets at which arm/zienkiewicz_eval.h reads the coefficients (the 32-bit layout: every
+// target without 128-bit integers checks them).
 #define TS_OFFSET_IS(type, base, field, bytes) (offsetof(type, field) - offsetof(type, base) == (bytes))
 static_assert(TS_OFFSET_IS(ZienkiewiczChannel, s00, s01, 4) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s02, 8) &&
                   TS_OFFSET_IS(ZienkiewiczChannel, s00, s03, 12) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s10, 16) &&
@@ -734,7 +668,7 @@ static_assert(zienkiewicz_fd_value_bound_tenths + zienkiewicz_fd_bound_tenths(zi
 // on the triangle, the row and n (the chunk [n - n % R, ...] it lies in restarts from integers),
 // never on n0.
 template <int Channels, typename Chunk>
-__attribute__((always_inline)) inline void zienkiewicz_row_chunks(const ZienkiewiczChannel* ch, uint32_t a, uint32_t b,
+TS_INLINE inline void zienkiewicz_row_chunks(const ZienkiewiczChannel* ch, uint32_t a, uint32_t b,
                                                                   uint32_t da, uint32_t db, int32_t n0, int32_t n1,
                                                                   uint32_t bias, Chunk&& chunk) {
   constexpr int32_t R = zienkiewicz_fd_restart;
@@ -777,14 +711,14 @@ struct BarycentricStepper {
   // Inlined (each divider's is called from one place, ZienkiewiczTriangle::begin_steps; out of
   // line on Cortex-M its frame was on top of that caller's, in the deepest stack).
   template <typename Divider>
-  __attribute__((always_inline)) void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref,
+  TS_INLINE void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref,
                                             const Divider& by_area2, int32_t x_ref, int32_t y_ref) {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
     xr = x_ref;
     yr = y_ref;
-#if defined(__OPTIMIZE_SIZE__)
-    // A loop: one copy of the divider's quotient (inlined; written out it costs 0.5 KB of flash).
-    // Each numerator picked in the loop, not staged in an array (48 bytes of the deepest frame).
+#if TS_SIZE
+    // A loop: one copy of the divider's quotient (inlined). Each numerator picked in the loop, not
+    // staged in an array (which would be in the deepest frame).
     uint32_t q[6];
     for (int i = 0; i < 6; ++i) {
       const int64_t n = i < 2 ? a[i + 1] : (i < 4 ? b[i - 1] : e_ref[i - 3]);
@@ -802,7 +736,7 @@ struct BarycentricStepper {
   }
   // Weights at pixel (x, y) (the first covered pixel of a row: independent of tiling). Inlined
   // (-Os would call it once a row).
-  __attribute__((always_inline)) void at(int32_t x, int32_t y, uint32_t* a, uint32_t* b) const {
+  TS_INLINE void at(int32_t x, int32_t y, uint32_t* a, uint32_t* b) const {
     *a = a_ref + dadx * uint32_t(x - xr) + dady * uint32_t(y - yr);
     *b = b_ref + dbdx * uint32_t(x - xr) + dbdy * uint32_t(y - yr);
   }

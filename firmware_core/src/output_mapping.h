@@ -5,7 +5,8 @@
 #include <stdint.h>
 
 #include "tristream/config.h"
-#include "tristream/render.h"
+#include "tuning.h"
+#include "tristream/render_params.h"
 #include "tristream/tile.h"
 
 namespace tristream::core::detail {
@@ -23,12 +24,11 @@ struct Mapping {
   uint32_t bx = 0, by = 0;  // r + 2^S k d
   bool identity = true;     // v' = v on both axes (n = d, k = 0)
 
-  // Always inlined: at -Os a call per position cost 4 % to 9 % of the modelled Cortex-M4 cycles
-  // (bilinear, 24 bytes of flash).
-  __attribute__((always_inline)) int32_t x(int32_t v) const {
+  // Always inlined (a few instructions, used per vertex position): -Os would call them.
+  TS_INLINE int32_t x(int32_t v) const {
     return identity ? v : int32_t((uint32_t(v) * nx + bx) / dx);
   }
-  __attribute__((always_inline)) int32_t y(int32_t v) const {
+  TS_INLINE int32_t y(int32_t v) const {
     return identity ? v : int32_t((uint32_t(v) * ny + by) / dy);
   }
   // The smallest raw v >= 0 whose mapped y is at least t >= 0: floor((v n + b) / d) >= t exactly

@@ -5,6 +5,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "tuning.h"
 #include "tristream/pixel_format.h"
 
 namespace tristream::core::detail {
@@ -41,14 +42,14 @@ inline uint8_t luma(uint8_t r, uint8_t g, uint8_t b) {
 
 // 4x4 Bayer thresholds scaled to [8, 248]: the rounding offset of an 8-bit to n-bit conversion.
 inline constexpr uint8_t bayer_matrix[4][4] = {{0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
-__attribute__((always_inline)) constexpr uint32_t bayer_offset(int32_t x, int32_t y) {
+TS_INLINE constexpr uint32_t bayer_offset(int32_t x, int32_t y) {
   return uint32_t(bayer_matrix[y & 3][x & 3]) * 16u + 8u;
 }
 
 // n-bit value of an 8-bit one: round(v * max / 255) without dithering (offset 127).
 constexpr uint32_t reduce(uint32_t v, uint32_t max, uint32_t offset) { return (v * max + offset) / 255u; }
 
-__attribute__((always_inline)) inline uint16_t pack565(uint8_t r, uint8_t g, uint8_t b, uint32_t offset) {
+TS_INLINE inline uint16_t pack565(uint8_t r, uint8_t g, uint8_t b, uint32_t offset) {
   return uint16_t((reduce(r, 31, offset) << 11) | (reduce(g, 63, offset) << 5) | reduce(b, 31, offset));
 }
 
@@ -62,7 +63,7 @@ inline constexpr uint32_t dither_k31 = 31u * dither_scale, dither_k63 = 63u * di
 // in_register). t < 2^28 for 31 and 2^29 for 63, so t >> 23 fits its field: the fields are joined
 // by shifted ORs, ((R << 6 | G) << 5) | B, with no mask (a mask constant is one more register in a
 // pixel loop that has none to spare).
-__attribute__((always_inline)) inline uint16_t pack565_dithered(uint32_t r, uint32_t g, uint32_t b, uint32_t o_scaled,
+TS_INLINE inline uint16_t pack565_dithered(uint32_t r, uint32_t g, uint32_t b, uint32_t o_scaled,
                                                                 uint32_t k31 = dither_k31, uint32_t k63 = dither_k63) {
   const uint32_t tr = r * k31 + o_scaled, tg = g * k63 + o_scaled, tb = b * k31 + o_scaled;
   return uint16_t(((tr >> 23) << 6 | (tg >> 23)) << 5 | (tb >> 23));
@@ -81,27 +82,27 @@ constexpr DitherOffsets make_dither_offsets() {
   return t;
 }
 inline constexpr DitherOffsets dither_offsets = make_dither_offsets();
-__attribute__((always_inline)) inline uint32_t dither_offset_scaled(int32_t x, int32_t y) {
+TS_INLINE inline uint32_t dither_offset_scaled(int32_t x, int32_t y) {
   return dither_offsets.v[8 * (y & 3) + (x & 3)];
 }
 // The offsets of a span of row y whose pixel x0 is at address p0, by pixel address: the pixel of
 // address p (2 bytes per pixel, any alignment) takes o[(p >> 1) & 3]. floor(p / 2) grows by one a
 // pixel, so x & 3 = ((p >> 1) + x0 - (p0 >> 1)) & 3, and the row's entry s + i (s, i < 4) is its
 // entry (s + i) & 3: the pixel loop needs no column count.
-__attribute__((always_inline)) inline const uint32_t* dither_span_offsets(int32_t y, int32_t x0, const uint8_t* p0) {
+TS_INLINE inline const uint32_t* dither_span_offsets(int32_t y, int32_t x0, const uint8_t* p0) {
   const uint32_t s = (uint32_t(x0) - uint32_t(reinterpret_cast<uintptr_t>(p0) >> 1)) & 3u;
   const uint32_t* o = dither_offsets.v + 8 * (y & 3) + s;
   __asm__("" : "+r"(o));  // one pointer in a register, not the table's address and an index
   return o;
 }
-__attribute__((always_inline)) inline uint32_t dither_index(const uint8_t* p) {
+TS_INLINE inline uint32_t dither_index(const uint8_t* p) {
   return uint32_t(reinterpret_cast<uintptr_t>(p) >> 1) & 3u;
 }
 
 // v unchanged, but opaque to the optimizer: a constant multiplier kept in a register for a
 // multiply-add (GCC expands a multiplication by a constant into shifts and adds: four instructions
 // where the Cortex-M4's MLA is one).
-__attribute__((always_inline)) inline uint32_t in_register(uint32_t v) {
+TS_INLINE inline uint32_t in_register(uint32_t v) {
   __asm__("" : "+r"(v));
   return v;
 }
@@ -146,7 +147,7 @@ inline constexpr Rgb565Table rgb565_table = make_rgb565_table<F>();
 // pack565_nearest by the table, in the format's byte order (rgb565_bytes), for r and b in [0, 255]
 // and g256 = g + 256 (g in [0, 255]).
 template <PixelFormat F>
-__attribute__((always_inline)) inline uint16_t pack565_bytes_by_table_biased(uint32_t r, uint32_t g256, uint32_t b,
+TS_INLINE inline uint16_t pack565_bytes_by_table_biased(uint32_t r, uint32_t g256, uint32_t b,
                                                                             const uint16_t* t = rgb565_table<F>.v) {
   const uint32_t blue = F == PixelFormat::rgb565_be ? uint32_t(t[b]) << 5 : uint32_t(t[b]) >> 11;
   return uint16_t(t[r] | t[g256] | blue);
@@ -154,13 +155,13 @@ __attribute__((always_inline)) inline uint16_t pack565_bytes_by_table_biased(uin
 
 // The same for values r, g, b in [0, 255].
 template <PixelFormat F>
-__attribute__((always_inline)) inline uint16_t pack565_bytes_by_table(uint32_t r, uint32_t g, uint32_t b) {
+TS_INLINE inline uint16_t pack565_bytes_by_table(uint32_t r, uint32_t g, uint32_t b) {
   return pack565_bytes_by_table_biased<F>(r, g + 256, b);
 }
 
 // Stores a halfword made by rgb565_bytes or pack565_bytes_by_table: its two bytes in the
 // little-endian order of their bits, whatever the host's order.
-__attribute__((always_inline)) inline void store565_bytes(uint8_t* p, uint16_t h) {
+TS_INLINE inline void store565_bytes(uint8_t* p, uint16_t h) {
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
   memcpy(p, &h, 2);  // one halfword store
 #else

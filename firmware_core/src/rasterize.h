@@ -10,8 +10,11 @@
 #include "triangle_view.h"
 #include "tristream/blob.h"
 #include "arith.h"
+#include "backend.h"
 #include "edge.h"
-#include "unroll.h"
+#include "portable/edges.h"
+#include "sse2/edges.h"
+#include "tuning.h"
 #include "tristream/fixed_point.h"
 #include "tristream/tile.h"
 
@@ -90,22 +93,13 @@ bool rasterize(const TriangleView& tv, const Rect& clip, Shader& shader) {
     }
   }
   if (first > last) return done;
-#if TS_USE_SSE2
-  SpanStepper spans;  // three bounds in lanes
-  spans.init(edges, first);
-#else
-  SplitSpanStepper spans;  // two bounds per row in registers
+  backend::RowSpans spans;  // portable/edges.h, sse2/edges.h
   spans.init(edges, tv.y, first);
-#endif
   bool started = false;
   for (int32_t y = first; y <= last; ++y, spans.next_row()) {
     int32_t xs = 1, xe = 0;
-#if TS_USE_SSE2
-    if (y >= r0 && y <= r1) spans.span(&xs, &xe);
-#else
     spans.begin_row(y);
     if (y >= r0 && y <= r1) spans.span(y, &xs, &xe);
-#endif
     for (int k = 0; k < corner_count; ++k) {
       const Corner& c = corners[k];
       if (c.y != y) continue;

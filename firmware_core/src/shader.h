@@ -14,15 +14,8 @@
 #include <stdint.h>
 
 #include "tristream/config.h"
+#include "tuning.h"
 
-// A shader's span inlined into the rasterizer's row loops when optimizing for speed (no call per
-// row: -3 % to -6 % modelled Cortex-M4 cycles at -O2), called when optimizing for size (inlined
-// at its call sites it costs 6.5 KB of flash and, at -Os, cycles too).
-#if defined(__OPTIMIZE_SIZE__)
-#define TS_SPAN_INLINE
-#else
-#define TS_SPAN_INLINE __attribute__((always_inline))
-#endif
 
 namespace tristream::core::detail {
 namespace {
@@ -34,7 +27,7 @@ namespace {
 // explicit corner. With SSE2 a row of a 16-column box costs about as much as the span steppers'
 // row, without their setup. Elsewhere the column scan pays per column, but the set-up it saves
 // costs more: 15, the largest box whose bilinear set-up divides in 32 bits (Mod32RoundingDivider,
-// 2d <= 2^17; 12 -> 15: -0.3 % to -2.8 % modelled Cortex-M4 cycles, bilinear).
+// 2d <= 2^17).
 constexpr int32_t scan_max_extent = TS_USE_SSE2 ? 16 : 15;
 
 struct TriangleSetup {

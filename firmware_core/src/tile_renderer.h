@@ -17,8 +17,9 @@
 #include "zienkiewicz_shader.h"
 #include "tristream/blob.h"
 #include "tristream/config.h"
+#include "tuning.h"
 #include "pixel_conversion.h"
-#include "tristream/render.h"
+#include "tristream/render_params.h"
 
 namespace tristream::core::detail {
 namespace {
@@ -45,8 +46,8 @@ void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, bool cull_
       const bool packed = layer.vertex_count <= store_packed_slots;
       uint32_t hits = live;
       if (cull_columns)
-        hits = packed ? columns.meeting<PackedStoreRecords>(layer, t, live, span)
-                      : columns.meeting<StoreRecords>(layer, t, live, span);
+        hits = packed ? backend::meeting<PackedStoreRecords>(columns, layer, t, live, span)
+                      : backend::meeting<StoreRecords>(columns, layer, t, live, span);
       for (; hits; hits &= hits - 1) {
         const uint32_t i = uint32_t(__builtin_ctz(hits));
         TriangleView tv;
@@ -58,7 +59,7 @@ void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, bool cull_
         done |= uint32_t(rasterize(tv, rect, shader)) << i;
       }
     } else {
-      for (uint32_t hits = cull_columns ? columns.meeting<Records>(*set.layer, t, live, span) : live; hits;
+      for (uint32_t hits = cull_columns ? backend::meeting<Records>(columns, *set.layer, t, live, span) : live; hits;
            hits &= hits - 1) {
         const uint32_t i = uint32_t(__builtin_ctz(hits));
         TriangleView tv;
@@ -77,7 +78,7 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& 
   // Only the methods compiled in (plan_frame rejects the others before any tile is drawn).
   if (blob.method == Method::bilinear) {
     if constexpr (config::methods & 1) {
-      BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0};
+      BilinearShader<Channels, Writer> s{layer, blob.values_per_vertex, first_channel, writer, step, {}, 0, 0, {}};
       draw_layer<Records>(list, map, rect, cull_columns, s);
     }
   } else {
@@ -91,7 +92,7 @@ void draw_with(const Blob& blob, int layer_index, int first_channel, ActiveSet& 
 
 // Bytes [have, all) of p as copies of [0, have): doubling copies, [0, n) to [n, 2n) (never
 // overlapping), then the rest. Out of line: one copy of the loop for rows and blocks of rows.
-__attribute__((noinline)) inline void repeat_prefix(uint8_t* p, size_t have, size_t all) {
+TS_NOINLINE inline void repeat_prefix(uint8_t* p, size_t have, size_t all) {
   while (have < all) {
     const size_t n = have < all - have ? have : all - have;
     memcpy(p + have, p, n);
@@ -108,10 +109,8 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
   const bool dithered = p.dither && (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be);
   const int32_t period = dithered ? 4 : 1;
   // Rows back to back (the stride is a row), on Cortex-M: the first `period` rows, then the rest
-  // of the tile as copies of them, a few long copies instead of one a row (32x32 tiles -0.3 % to
-  // -0.9 % modelled cycles; dithered -0.1 %). Not on x86-64, where copies beyond 2 KiB take glibc's
-  // `rep movsb` (counted per byte by tests/core/callgrind_core.sh: full frames +1 % to +8 %
-  // instructions).
+  // of the tile as copies of them, a few long copies instead of one a row. Not on x86-64, where
+  // copies beyond 2 KiB take glibc's `rep movsb` (counted per byte by tests/core/callgrind_core.sh).
   const bool contiguous = !TS_USE_SSE2 && size_t(stride) == size_t(rect.width()) * bpp;
   const size_t row_bytes = size_t(rect.width()) * bpp;
   const int32_t rows = contiguous && rect.height() > period ? period : rect.height();
@@ -140,18 +139,15 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
 
 // fill_background out of line where zienkiewicz is compiled in on Cortex-M (no SSE2), and in
 // builds for size: its registers then are not saved in render_tile's frame, under the tile
-// function (-48 bytes of the deepest Cortex-M4 zienkiewicz stack; -Os bilinear 1,132 bytes, 1,148
-// with the fill inlined). On x86-64, render_tile's code then does not change with the fill's
-// (inlined, a change of the fill had cost zienkiewicz +0.2 % instructions in render_tile; out of
-// line it costs +0.01 %). Inlined otherwise (out of line it cost Cortex-M4 bilinear up to 2 % of
-// the modelled cycles at -O2).
-#if defined(__OPTIMIZE_SIZE__)
+// function (the deepest stack). On x86-64, render_tile's code then does not change with the
+// fill's. Inlined otherwise (Cortex-M4 bilinear at -O2: a call per tile costs more than it saves).
+#if TS_SIZE
 inline constexpr bool fill_apart = true;
 #else
 inline constexpr bool fill_apart = (config::methods & 2) != 0 || TS_USE_SSE2;
 #endif
 template <PixelFormat F>
-__attribute__((noinline)) void fill_background_apart(uint8_t* base, int32_t stride, const Rect& rect,
+TS_NOINLINE void fill_background_apart(uint8_t* base, int32_t stride, const Rect& rect,
                                                      const RenderParams& p, bool grey) {
   fill_background<F>(base, stride, rect, p, grey);
 }

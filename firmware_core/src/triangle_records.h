@@ -6,6 +6,7 @@
 // band's vertex slots fit 10 bits.
 #include <stdint.h>
 
+#include "tuning.h"
 #include "tristream/blob.h"
 #include "bytes.h"
 
@@ -32,11 +33,11 @@ struct StoreRecords {
   static constexpr uint32_t guard_bytes = 2;
   static constexpr bool has_flag_records = true;
   // Inlined where the code is optimized for size too (as PackedStoreRecords').
-  __attribute__((always_inline)) static uint32_t vertex(const uint8_t* p, int k) { return load_u16(p + 2 * k); }
-  __attribute__((always_inline)) static bool is_flag_record(const uint8_t* p) {
+  TS_INLINE static uint32_t vertex(const uint8_t* p, int k) { return load_u16(p + 2 * k); }
+  TS_INLINE static bool is_flag_record(const uint8_t* p) {
     return load_u16(p) == store_flag_marker;
   }
-  __attribute__((always_inline)) static uint16_t flags(const uint8_t* p) {
+  TS_INLINE static uint16_t flags(const uint8_t* p) {
     return is_flag_record(p + stride) ? load_u16(p + stride + 2) : 0;
   }
 };
@@ -53,16 +54,16 @@ struct PackedStoreRecords {
   static constexpr bool has_flag_records = true;
   static_assert(store_packed_slots == 1u << slot_bits, "a slot in 10 bits");
   static uint32_t pack(uint32_t v0, uint32_t v1, uint32_t v2) { return v0 | v1 << slot_bits | v2 << 2 * slot_bits; }
-  // The readers inlined where the code is optimized for size too (-Os called them: +19 % modelled
-  // Cortex-M4 cycles of a compressed blob's render).
-  __attribute__((always_inline)) static uint32_t word(const uint8_t* p) {
+  // The readers inlined where the code is optimized for size too (-Os would call them, once per
+  // vertex read of a compressed blob's render).
+  TS_INLINE static uint32_t word(const uint8_t* p) {
     return uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24);
   }
-  __attribute__((always_inline)) static uint32_t vertex(const uint8_t* p, int k) {
+  TS_INLINE static uint32_t vertex(const uint8_t* p, int k) {
     return (word(p) >> (slot_bits * k)) & (store_packed_slots - 1);
   }
-  __attribute__((always_inline)) static bool is_flag_record(const uint8_t* p) { return word(p) >= packed_flag_marker; }
-  __attribute__((always_inline)) static uint16_t flags(const uint8_t* p) {
+  TS_INLINE static bool is_flag_record(const uint8_t* p) { return word(p) >= packed_flag_marker; }
+  TS_INLINE static uint16_t flags(const uint8_t* p) {
     const uint32_t next = word(p + stride);
     return next >= packed_flag_marker ? uint16_t(next) : 0;  // flags fit 16 bits (blob.h: 9 defined)
   }

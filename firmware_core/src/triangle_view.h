@@ -10,7 +10,7 @@
 #include "tristream/blob.h"
 #include "arith.h"
 #include "bytes.h"
-#include "unroll.h"
+#include "tuning.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {
@@ -39,7 +39,7 @@ inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map
 }
 
 // The domain (unmapped) y of triangle t's vertices (of a v1 blob's layer).
-__attribute__((always_inline)) inline void raw_ys(const BlobLayer& layer, uint32_t t, int32_t y[3]) {
+TS_INLINE inline void raw_ys(const BlobLayer& layer, uint32_t t, int32_t y[3]) {
   const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
   y[0] = load_u16(layer.positions + 4 * size_t(load_u16(p)) + 2);
   y[1] = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)) + 2);

@@ -9,21 +9,22 @@
 #include "shader.h"
 #include "triangle_view.h"
 #include "tristream/config.h"
-#if TS_USE_SSE2
-#include <emmintrin.h>
-#endif
+#include "tuning.h"
 #include "arith.h"
+#include "backend.h"
 #include "bytes.h"
 #include "interpolate.h"
+#include "portable/zienkiewicz_shader.h"
+#include "sse2/zienkiewicz_shader.h"
 #include "tristream/fixed_point.h"
 
 namespace tristream::core::detail {
 namespace {
 
 // The blob's little-endian int32 at p: on Cortex-M always inlined (optimized for size load_i32
-// is a call there: 6 % of the zienkiewicz cycles of small triangles at -Os); elsewhere load_i32
-// (inlined, the bytes' expression cost x86-64 0.4 % more set-up instructions).
-__attribute__((always_inline)) inline int32_t read_i32(const uint8_t* p) {
+// is a call there, per gradient read); elsewhere load_i32 (one unaligned load on x86-64, where the
+// bytes' expression is not merged into one).
+TS_INLINE inline int32_t read_i32(const uint8_t* p) {
 #if TS_USE_INT128
   return load_i32(p);
 #else
@@ -31,7 +32,7 @@ __attribute__((always_inline)) inline int32_t read_i32(const uint8_t* p) {
 #endif
 }
 
-#if defined(__OPTIMIZE_SIZE__)
+#if TS_SIZE
 // Optimized for size, RGB565 without dithering is packed as with it, by pack565_dithered's fields
 // with these offsets: those of pack565_nearest (the same values: t <= 16313 there too), no tables.
 constexpr uint32_t nearest_offsets[4] = {127 * dither_scale, 127 * dither_scale, 127 * dither_scale,
@@ -44,12 +45,12 @@ constexpr uint32_t nearest_offsets[4] = {127 * dither_scale, 127 * dither_scale,
 struct VertexValues {
   const uint8_t* const* vertex;
   int offset;
-  __attribute__((always_inline)) int32_t operator[](int k) const { return load_u16(vertex[k] + offset); }
+  TS_INLINE int32_t operator[](int k) const { return load_u16(vertex[k] + offset); }
 };
 struct VertexGradients {
   const uint8_t* const* vertex;
   int offset;
-  __attribute__((always_inline)) int32_t operator[](int j) const {
+  TS_INLINE int32_t operator[](int j) const {
     return read_i32(vertex[j >> 1] + offset + 4 * (j & 1));
   }
 };
@@ -66,23 +67,14 @@ struct DirectRgb565<DirectWriter<F, 3, false>> {
   static constexpr PixelFormat format = F;
 };
 
-// ZienkiewiczTriangle::begin's parts: out of line where the 32-bit forms are used (Cortex-M, where
-// each then has its own frame on top of the tile function's, not their sum: see begin), inlined
-// elsewhere (x86-64: begin's code as one function, as before the split).
-#if TS_USE_INT128
-#define TS_ZIENKIEWICZ_BEGIN_PART inline __attribute__((always_inline))
-#else
-#define TS_ZIENKIEWICZ_BEGIN_PART __attribute__((noinline))
-#endif
-
 // The writer-independent part of ZienkiewiczShader: a triangle's stepper and coefficients, and
 // their set-up (begin), so that the writers of one channel count share one copy of begin in the
-// code (-2.7 KB of Cortex-M4 flash at -O2, -0.3 KB at -Os).
+// code.
 template <int Channels>
 struct ZienkiewiczTriangle {
   const BlobLayer* layer;
   // Bytes, in one word beside the blob's layer: the shader lives in the frame of the tile
-  // function, the largest of the deepest Cortex-M4 stack (16 bytes less than as ints after steps).
+  // function, the largest of the deepest Cortex-M4 stack.
   uint8_t per_vertex;
   uint8_t first_channel;
   int8_t fd_state = 0;  // forward differencing of this triangle: 0 not set up yet, 1 ready, -1 out of budget
@@ -119,7 +111,7 @@ struct ZienkiewiczTriangle {
     const uint8_t* values[3];
     const uint8_t* gradients[3];
   };
-  __attribute__((always_inline)) void inputs(const TriangleView& tv, Inputs* in) const {
+  TS_INLINE void inputs(const TriangleView& tv, Inputs* in) const {
 #pragma GCC unroll 3
     for (int k = 0; k < 3; ++k) {
       edge(tv, k, &in->dx[k], &in->dy[k]);
@@ -129,7 +121,7 @@ struct ZienkiewiczTriangle {
     }
   }
   // Edge k of tv (from vertex k to the next) in domain space.
-  __attribute__((always_inline)) void edge(const TriangleView& tv, int k, int32_t* dx, int32_t* dy) const {
+  TS_INLINE void edge(const TriangleView& tv, int k, int32_t* dx, int32_t* dy) const {
     const uint8_t* pk = layer->positions + 4 * size_t(tv.v[k]);
     const uint8_t* pn = layer->positions + 4 * size_t(tv.v[k == 2 ? 0 : k + 1]);
     *dx = int32_t(load_u16(pn)) - int32_t(load_u16(pk));
@@ -145,8 +137,7 @@ struct ZienkiewiczTriangle {
     fd_state = area2 >= zienkiewicz_fd_min_area2 ? 0 : -1;
     if constexpr (zienkiewicz_narrow_forms) {
       uint32_t wide = 0;
-      // Unrolled (the blob's addresses in registers, not stepped on the stack): -1 % to -2.5 %
-      // modelled Cortex-M4 cycles for 0.9 KB of flash.
+      // Unrolled: the blob's addresses stay in registers, not stepped on the stack.
 #pragma GCC unroll 3
       for (int c = 0; c < Channels; ++c)
         if (!ch[c].setup_narrow(in.dx, in.dy, VertexValues{in.values, 2 * c}, VertexGradients{in.gradients, 8 * c}))
@@ -155,7 +146,7 @@ struct ZienkiewiczTriangle {
       if (wide) begin_wide(tv, wide);
     } else {
       bool fits = true;
-#pragma GCC unroll 3  // as above (x86-64: 0.1 % to 0.5 % of the instructions)
+#pragma GCC unroll 3  // as above
       for (int c = 0; c < Channels; ++c)
         fits &= ch[c].setup(in.dx, in.dy, VertexValues{in.values, 2 * c}, VertexGradients{in.gradients, 8 * c});
       narrow = fits;
@@ -164,7 +155,7 @@ struct ZienkiewiczTriangle {
   // Forward differencing set up (fd_state 1, or -1 outside its budget). The steps read again for
   // each channel, not kept across the calls: on Cortex-M the caller's frame (first_long_row's) is
   // below the set-up's, the deepest of the render.
-  __attribute__((always_inline)) bool set_up_rows() {
+  TS_INLINE bool set_up_rows() {
     fd_state = -1;
     if (!ZienkiewiczChannel::steps_fit_rows(int32_t(steps.dadx), int32_t(steps.dbdx))) return false;
 #pragma GCC unroll 3
@@ -180,7 +171,7 @@ struct ZienkiewiczTriangle {
   // The channels of the mask `wide` by the 64-bit expansion; narrow when their coefficients fit
   // the 32-bit evaluation all the same. A channel a call (wide_channel): only one channel's
   // 64-bit temporaries on the stack.
-  __attribute__((noinline)) void begin_wide(const TriangleView& tv, uint32_t wide) {
+  TS_NOINLINE void begin_wide(const TriangleView& tv, uint32_t wide) {
     bool fits = true;
     for (int c = 0; c < Channels; ++c)
       if (wide >> c & 1) fits &= wide_channel(tv, c);
@@ -205,20 +196,23 @@ struct ZienkiewiczTriangle {
   size_t first_value(const TriangleView& tv, int k, int c) const {
     return size_t(tv.v[k]) * per_vertex + first_channel + c;
   }
-  __attribute__((noinline)) bool wide_channel(const TriangleView& tv, int c) {
+  TS_NOINLINE bool wide_channel(const TriangleView& tv, int c) {
     int32_t dx[3], dy[3];
     for (int k = 0; k < 3; ++k) edge(tv, k, &dx[k], &dy[k]);
     return ch[c].expand_wide(dx, dy, IndexedValues{this, &tv, c}, IndexedGradients{this, &tv, c});
   }
 };
 
+// Forward-differenced rows with the channels in vector lanes where the platform has them:
+// backend::ZienkiewiczLanes (portable/zienkiewicz_shader.h, sse2/zienkiewicz_shader.h).
 template <int Channels, typename Writer>
 struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
+  using Lanes = backend::ZienkiewiczLanes<Channels, Writer>;
 #if TS_USE_SSE2
   Writer writer;
 #else
   // The caller's writer (draw_with's argument, alive for the shader's life): not copied into the
-  // frame that holds the shader, the deepest of the render on Cortex-M4 (-24 bytes of stack).
+  // frame that holds the shader, the deepest of the render on Cortex-M4.
   const Writer& writer;
 #endif
   int bpp;
@@ -230,16 +224,15 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
 #if TS_USE_SSE2
   // Forward differencing set up on the first row that uses it; false for a small triangle or one
   // outside the budget (then every row is evaluated per pixel).
-  __attribute__((noinline)) bool rows_ready_slow() { return this->set_up_rows(); }
+  TS_NOINLINE bool rows_ready_slow() { return this->set_up_rows(); }
 #else
   // The first row of at least zienkiewicz_fd_min_length pixels in the tile (without SSE2):
   // forward differencing set up, then the row drawn by it (a tail call) or, out of its budget
   // (fd_state now -1), by span per pixel (span reads xe only for the row's length: xs for it).
-  // Out of span: the set-up's frames are not below span's. Set up here, not in begin: 18 % and
-  // 20 % of begin's set-ups had drawn no such row (kodim23 and scene4k in 16-row bands; -0.1 % to
-  // -2.8 % modelled Cortex-M4 cycles). The row's end not kept across the set-up: this frame, below
-  // the set-up's, 32 bytes.
-  __attribute__((noinline)) void first_long_row(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
+  // Out of span: the set-up's frames are not below span's. Set up here, not in begin: many
+  // triangles large enough for it draw no such row in a tile or band. The row's end is not kept
+  // across the set-up, so this frame, below the set-up's, stays small.
+  TS_NOINLINE void first_long_row(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
     if (this->set_up_rows()) {
       forward_differenced_row(y, xs, x0, x1);
     } else {
@@ -251,10 +244,10 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   // zienkiewicz_fd_min_length pixels (of large enough triangles) are forward-differenced, others
   // evaluated per pixel: the choice depends on the whole row, not on the tile. Out of line (both
   // loops): their code generation then does not depend on the rest of the tile function (inlined,
-  // changes elsewhere in it swung its speed by 20%).
-  __attribute__((noinline)) void span(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
+  // unrelated changes there swing its speed).
+  TS_NOINLINE void span(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
 #if TS_USE_SSE2
-    // The set-up called from here, as before first_long_row (which cost x86-64 up to +0.3 % instructions).
+    // The set-up called from here (a first_long_row as on Cortex-M costs x86-64 more than it saves).
     if (xe - xs + 1 >= zienkiewicz_fd_min_length && (fd_state == 0 ? rows_ready_slow() : fd_state > 0)) {
       forward_differenced_row(y, xs, x0, x1);
       return;
@@ -288,11 +281,11 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     if constexpr (Narrow && DirectRgb565<Writer>::value) {
       // RGB565 by eval_narrow: the dither flag read once a row, not a pixel, and each pixel
       // packed as put_rounded packs it (put_span_in_range's loops: the tables without dithering,
-      // the row's offsets with it); the same pixels. -2 % to -5 % modelled Cortex-M4 cycles at -O2.
+      // the row's offsets with it); the same pixels.
       // Optimized for size one loop, by the offsets (without dithering those of pack565_nearest,
       // as forward_differenced): no tables.
       constexpr PixelFormat F = DirectRgb565<Writer>::format;
-#if defined(__OPTIMIZE_SIZE__)
+#if TS_SIZE
       const uint32_t* const offset = writer.dither ? dither_span_offsets(y, x0, p) : nearest_offsets;
 #else
       const uint32_t* const offset = writer.dither ? dither_span_offsets(y, x0, p) : nullptr;
@@ -303,7 +296,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
           store565_bytes(q, rgb565_bytes<F>(pack565_dithered(r, g, bl, offset[dither_index(q)], k31, k63)));
         });
       } else {
-#if !defined(__OPTIMIZE_SIZE__)
+#if !TS_SIZE
         const uint16_t* table = rgb565_table<F>.v;
         __asm__("" : "+r"(table));  // the table's address in a register (see put_span_in_range)
         rgb565_pixels(p, x1 - x0 + 1, a, b, [&](uint8_t* q, uint32_t r, uint32_t g, uint32_t bl) {
@@ -323,9 +316,9 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
         // unit included: see ZienkiewiczChannel; the q8 writers below take the value without it
         // and round it themselves); the writer's clamp then folds away, and values are rarely out
         // of range. The channels written out, not a loop (as a loop the values go through the
-        // stack): -2 % to -3 % modelled Cortex-M4 cycles at -O2, -4 % to -7 % at -Os.
+        // stack).
         int32_t r[Channels];
-        auto one = [&](int c) __attribute__((always_inline)) { r[c] = int32_t(rounded(ch[c].eval_narrow(w))); };
+        auto one = [&](int c) TS_INLINE { r[c] = int32_t(rounded(ch[c].eval_narrow(w))); };
         static_assert(Channels == 1 || Channels == 3, "grey or three channels");
         one(0);
         if constexpr (Channels == 3) {
@@ -364,7 +357,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   // [0, 255] (as to_u8 of the int32-clamped value plus the bias's extra unit, what put_rounded
   // takes).
   using NarrowValue = ZienkiewiczChannel::NarrowValue;
-  __attribute__((always_inline)) static uint32_t rounded(NarrowValue biased) {
+  TS_INLINE static uint32_t rounded(NarrowValue biased) {
     NarrowValue v = biased >> q24_8::frac_bits;
 #if defined(__ARM_FEATURE_SAT)
     return uint32_t(v < 0 ? 0 : (v > 255 ? 255 : v));  // one USAT
@@ -377,7 +370,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   // Three channels rounded: out(rounded(v0), rounded(v1), rounded(v2)); without USAT one test for
   // the three (all in range when their bitwise or is below 2^16: x86-64 5 instructions a pixel less).
   template <typename Out>
-  __attribute__((always_inline)) static void rounded3(NarrowValue v0, NarrowValue v1, NarrowValue v2, const Out& out) {
+  TS_INLINE static void rounded3(NarrowValue v0, NarrowValue v1, NarrowValue v2, const Out& out) {
 #if !defined(__ARM_FEATURE_SAT)
     constexpr int f = q24_8::frac_bits;
     if (uint64_t(v0 | v1 | v2) < (uint64_t(256) << f)) {
@@ -390,7 +383,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   // per_pixel's RGB565 loop by eval_narrow: `count` pixels from p (2 bytes each) from the
   // weights a, b, each channel rounded and clamped as put_rounded takes it, then store(pixel, r, g, b).
   template <typename Store>
-  __attribute__((always_inline)) void rgb565_pixels(uint8_t* p, int32_t count, uint32_t a, uint32_t b,
+  TS_INLINE void rgb565_pixels(uint8_t* p, int32_t count, uint32_t a, uint32_t b,
                                                     const Store& store) const {
     using Weights = ZienkiewiczChannel::Weights;
     Weights w = Weights::of(a, b);
@@ -401,12 +394,12 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     }
   }
   // A forward-differenced row, as span and first_long_row draw it: without SSE2 in RGB565 the row
-  // loops themselves (tail calls, no forward_differenced call between: -0.3 % modelled Cortex-M4
-  // cycles; optimized for size one loop, by the offsets), else forward_differenced.
-  __attribute__((always_inline)) void forward_differenced_row(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
+  // loops themselves (tail calls, no forward_differenced call between; optimized for size one
+  // loop, by the offsets), else forward_differenced.
+  TS_INLINE void forward_differenced_row(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
 #if !TS_USE_SSE2
     if constexpr (DirectRgb565<Writer>::value) {
-#if defined(__OPTIMIZE_SIZE__)
+#if TS_SIZE
       rgb565_rows<true>(y, xs, x0, x1);
 #else
       if (writer.dither) {
@@ -421,7 +414,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     forward_differenced(y, xs, x0, x1);
   }
   // Pixels x0..x1 of row y by forward differencing from the weights at xs.
-  __attribute__((noinline)) void forward_differenced(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
+  TS_NOINLINE void forward_differenced(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
     constexpr int vf = ZienkiewiczChannel::value_frac_bits;
     constexpr uint32_t half = uint32_t(1) << (vf - 1);
     uint32_t a, b;
@@ -429,29 +422,10 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     auto* p = writer.at(x0, y);
     const int step = bpp;  // a local: the pixel stores could alias the member
     const uint32_t da = steps.dadx, db = steps.dbdx;
-#if TS_USE_SSE2
-    if constexpr (Writer::takes_rounded && Channels == 3) {
-      // Rounding to nearest folded into the values. The three channels in 32-bit lanes: three
-      // additions a pixel, the rounded values the lanes shifted down.
-      const int32_t last = x1 - xs;
-      zienkiewicz_row_chunks<3>(ch, a, b, da, db, x0 - xs, last, half, [&](int32_t n, int32_t end, CubicSteps* s) {
-        // The three channels' (v, d1, d2, d3) transposed into a vector of each.
-        static_assert(sizeof(CubicSteps) == 16, "four words a channel");
-        auto row = [&](int c) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(&s[c])); };
-        const __m128i r0 = row(0), r1 = row(1), r2 = row(2), zero = _mm_setzero_si128();
-        const __m128i t0 = _mm_unpacklo_epi32(r0, r1), t1 = _mm_unpacklo_epi32(r2, zero);
-        const __m128i t2 = _mm_unpackhi_epi32(r0, r1), t3 = _mm_unpackhi_epi32(r2, zero);
-        __m128i v = _mm_unpacklo_epi64(t0, t1), d1 = _mm_unpackhi_epi64(t0, t1), d2 = _mm_unpacklo_epi64(t2, t3);
-        const __m128i d3 = _mm_unpackhi_epi64(t2, t3);
-        for (; n <= end; ++n) {
-          writer.put_lanes(p, Writer::ordered(_mm_srai_epi32(v, vf)), xs + n, y, n != last);
-          p += step;
-          v = _mm_add_epi32(v, d1), d1 = _mm_add_epi32(d1, d2), d2 = _mm_add_epi32(d2, d3);
-        }
-      });
+    if constexpr (Lanes::active) {
+      Lanes::row(writer, ch, a, b, da, db, xs, x0, x1, y, p, step);
       return;
     }
-#endif
     if constexpr (Writer::takes_rounded) {
       // Rounding to nearest folded into the values; clamped here (rarely needed: the writer's
       // clamp then folds away).
@@ -488,11 +462,11 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   // the three channels stepped together a pixel (nine words of differences in registers, the
   // three D3 reloaded), each pixel packed as put_rounded packs it: by the tables, or ByOffsets by
   // the row's Bayer offsets when dithering (optimized for size also without, by nearest_offsets:
-  // no tables). One channel at a time into its bit field cost three calls a chunk: -2 % to -8 %
-  // modelled Cortex-M4 cycles at -O2. Its own frame, not below forward_differenced's (the deepest
+  // no tables). One channel at a time into its bit field would cost three calls a chunk. Its own
+  // frame, not below forward_differenced's (the deepest
   // zienkiewicz stack stays that of the set-up).
   template <bool ByOffsets>
-  __attribute__((noinline)) void rgb565_rows(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
+  TS_NOINLINE void rgb565_rows(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
     constexpr PixelFormat F = DirectRgb565<Writer>::format;
     constexpr int vf = ZienkiewiczChannel::value_frac_bits;
     uint32_t a, b;
@@ -500,7 +474,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     uint8_t* const p = writer.at(x0, y);
     [[maybe_unused]] const uint32_t* offset = nullptr;
     if constexpr (ByOffsets) {
-#if defined(__OPTIMIZE_SIZE__)
+#if TS_SIZE
       offset = writer.dither ? dither_span_offsets(y, x0, p) : nearest_offsets;
 #else
       offset = dither_span_offsets(y, x0, p);
@@ -531,14 +505,13 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
           } else {
             const uint16_t* table = rgb565_table<F>.v;
             __asm__("" : "+r"(table));  // the table's address in a register
-            auto pixel = [&](uint8_t * at) __attribute__((always_inline)) {
+            auto pixel = [&](uint8_t * at) TS_INLINE {
               store565_bytes(at, pack565_bytes_by_table_biased<F>(u8(r), u8(g) + 256, u8(bl), table));
               r += r1, r1 += r2, r2 += r3;
               g += g1, g1 += g2, g2 += g3;
               bl += b1, b1 += b2, b2 += b3;
             };
-            // Two pixels an iteration, one loop test for both: 23 modelled Cortex-M4 cycles a pixel
-            // against 29.
+            // Two pixels an iteration, one loop test for both.
             for (; stop - q >= 4; q += 4) {
               pixel(q);
               pixel(q + 2);

@@ -26,6 +26,8 @@ cp "$here/library.properties" "$root/LICENSE" "$lib/"
 cp "$here/tristream.h" "$lib/src/"
 cp -R "$root/firmware_core/include/tristream" "$lib/src/tristream"
 cp "$root"/firmware_core/src/*.cpp "$root"/firmware_core/src/*.h "$lib/src/core/"
+# The platform forms of the kernels (firmware_core/src/backend.h), in their folders.
+for d in "$root"/firmware_core/src/*/; do cp -R "$d" "$lib/src/core/"; done
 cp -R "$here/examples/." "$lib/examples/"
 sketch="$lib/examples/TristreamBands"
 "$tripack" "$root/data/demo/kodim23.rgb.tri" -o "$sketch/photo.c" --symbol photo --width 320 --height 240 \

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The span bounds of the span path: SplitSpanStepper (two bounds per row, the Cortex-M form) and
-// SpanStepper (three) must give, on every row of a triangle and from any first row (a band's
+// The span bounds of the span path: SplitSpanStepper (two bounds per row, the Cortex-M form),
+// SpanStepper (three) and, with SSE2, sse2::RowSpans (three in lanes, the x86-64 form) must give, on every row of a triangle and from any first row (a band's
 // clip), exactly the covered columns that testing every sample point against the three edges
 // gives. Triangles: random, with vertices on whole pixels (every encoder mesh), flat tops and
 // bottoms, the middle vertex on a row and off it, boundary edges, slivers.
@@ -12,6 +12,7 @@
 
 #include "tristream/config.h"
 #include "edge.h"
+#include "sse2/edges.h"
 
 using namespace tristream::core;
 using namespace tristream::core::detail;
@@ -53,13 +54,27 @@ void check_triangle(const int32_t* xs, const int32_t* ys, int flags, int32_t max
     three.init(e, first);
     SplitSpanStepper two;
     two.init(e, ys, first);
+#if TS_USE_SSE2
+    sse2::RowSpans lanes;
+    lanes.init(e, ys, first);
+#endif
     for (int32_t y = first; y <= bottom; ++y, three.next_row(), two.next_row()) {
       two.begin_row(y);
+#if TS_USE_SSE2
+      lanes.begin_row(y);
+      if (y > first) lanes.next_row();
+#endif
       if (y < r0 || y > r1) continue;
       const Covered want = brute(e, y, max_x);
       Covered got3{}, got2{};
       three.span(&got3.x0, &got3.x1);
       two.span(y, &got2.x0, &got2.x1);
+#if TS_USE_SSE2
+      Covered got_lanes{};
+      lanes.span(y, &got_lanes.x0, &got_lanes.x1);
+      CHECK(((got_lanes.x0 > got_lanes.x1 && got3.x0 > got3.x1) ||
+             (got_lanes.x0 == got3.x0 && got_lanes.x1 == got3.x1)));
+#endif
       INFO("triangle (" << xs[0] << "," << ys[0] << ") (" << xs[1] << "," << ys[1] << ") (" << xs[2] << ","
                         << ys[2] << ") flags " << flags << ", first row " << first << ", row " << y);
       if (want.x0 > want.x1) {

@@ -1,0 +1,81 @@
+/* SPDX-License-Identifier: MIT */
+#pragma once
+// The core's code-generation switches, in one place: inlining, placement (out of line) and
+// unrolling. None changes a pixel; each trades speed, flash or stack on the targets named. The
+// measured effect of each, as of a version, is in docs/MCU_BENCH.md; the reasons are here.
+//
+// The targets: Cortex-M (no SSE2, no 128-bit integers; speed at -O2 or size at -Os) and 64-bit
+// hosts (x86-64 with SSE2 and 128-bit integers). TS_SIZE is 1 where the code is optimized for size.
+#include "tristream/config.h"
+
+#if defined(__OPTIMIZE_SIZE__)
+#define TS_SIZE 1
+#else
+#define TS_SIZE 0
+#endif
+
+// Always inlined: a step of a per-pixel or per-row loop, or a small accessor whose values must stay
+// in the caller's registers. GCC at -Os, and at -O2 in large callers, would otherwise call it.
+#define TS_INLINE __attribute__((always_inline))
+
+// Never inlined: a rare path kept out of the hot loop's code, or a function whose frame must not
+// add to its caller's (the deepest stack is one frame of the two, not their sum).
+#define TS_NOINLINE __attribute__((noinline))
+
+// Before a loop of a fixed small count (a triangle's three vertices or edges, its channels): GCC
+// keeps such loops rolled when their bodies select by index (k == 2 ? 0 : k + 1) or store through
+// it, and then keeps their values in memory. Unrolled on Cortex-M; on x86-64 (SSE2) left to the
+// compiler, which unrolls them where it pays. TS_UNROLL_FAST: the same, but not at -Os (where the
+// flash it costs buys less).
+#if !defined(__GNUC__) || TS_USE_SSE2
+#define TS_UNROLL
+#else
+#define TS_UNROLL _Pragma("GCC unroll 4")
+#endif
+#if TS_SIZE
+#define TS_UNROLL_FAST
+#else
+#define TS_UNROLL_FAST TS_UNROLL
+#endif
+
+// A shader's span (shader.h): inlined into the rasterizer's row loops at -O2 (no call per row);
+// called at -Os, where a copy at every call site costs several KB of flash and cycles too.
+#if TS_SIZE
+#define TS_SPAN_INLINE
+#else
+#define TS_SPAN_INLINE TS_INLINE
+#endif
+
+// ZienkiewiczChannel::setup (interpolate.h): inlined into each shader's begin at -O2 (its loads
+// and the triangle's edges stay in registers), one copy at -Os.
+#if TS_SIZE
+#define TS_ZIENKIEWICZ_SETUP_INLINE inline
+#else
+#define TS_ZIENKIEWICZ_SETUP_INLINE inline TS_INLINE
+#endif
+
+// Where the 32-bit forms of the zienkiewicz set-up are used (no 128-bit integers: Cortex-M):
+// - CubicSteps::skip out of line (inlined, its binomials were formed on every restart of a row cut
+//   by a tile's left edge) and ZienkiewiczChannel::setup_rows_within out of line (called per
+//   channel; its frame would otherwise be the deepest of the zienkiewicz render);
+// - ZienkiewiczTriangle::begin's parts out of line, one called after another, so the deepest stack
+//   is one part's frame, not their sum.
+// On 64-bit hosts all inlined: GCC would leave setup_rows_within out of line, and begin is one
+// function there.
+#if TS_USE_INT128
+#define TS_CUBIC_SKIP_ATTRIBUTES
+#define TS_SETUP_ROWS_ATTRIBUTES TS_INLINE
+#define TS_ZIENKIEWICZ_BEGIN_PART inline TS_INLINE
+#else
+#define TS_CUBIC_SKIP_ATTRIBUTES TS_NOINLINE
+#define TS_SETUP_ROWS_ATTRIBUTES TS_NOINLINE
+#define TS_ZIENKIEWICZ_BEGIN_PART TS_NOINLINE
+#endif
+
+// BilinearShader::begin out of line with SSE2: inlined at one of rasterize's call sites it makes
+// rasterize's bilinear RGB888 loop slower on x86-64. Elsewhere as the compiler chooses.
+#if TS_USE_SSE2
+#define TS_BILINEAR_BEGIN TS_NOINLINE
+#else
+#define TS_BILINEAR_BEGIN
+#endif
