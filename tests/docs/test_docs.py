@@ -56,6 +56,44 @@ class NoMergeMarkers(unittest.TestCase):
         self.assertEqual(marked, [], "merge conflict markers left in these files")
 
 
+def tracked(*prefixes):
+    """Tracked files under these folders (git ls-files), as paths relative to ROOT."""
+    out = subprocess.run(["git", "-C", str(ROOT), "ls-files", "-z", "--", *prefixes], capture_output=True,
+                         check=True).stdout.decode().split("\0")
+    return [name for name in out if name and (ROOT / name).is_file()]
+
+
+class ArchitectureMap(unittest.TestCase):
+    def test_every_core_file_is_on_the_map(self):
+        """docs/ARCHITECTURE.md names every source and header of firmware_core (src/ and include/)."""
+        text = read("docs/ARCHITECTURE.md")
+        def shown(name):  # src/ files by their path under src/, headers as they are included
+            rel = Path(name).relative_to("firmware_core")
+            return "/".join(rel.parts[1:])
+        missing = [name for name in tracked("firmware_core/src", "firmware_core/include")
+                   if f"`{shown(name)}`" not in text]
+        self.assertEqual(missing, [], "docs/ARCHITECTURE.md does not name these core files")
+
+
+class NoDevelopmentLog(unittest.TestCase):
+    """The core's comments and docs/ state what is true now and why: no session numbers or commit
+    hashes (figures go to docs/MCU_BENCH.md, stated as of a version)."""
+
+    def test_no_session_numbers_or_commit_hashes(self):
+        session = re.compile(r"\bsessions? \d+|\bsession's\b", re.I)
+        commit = re.compile(r"(?<![0-9A-Za-z_])(?=[0-9a-f]*[a-f])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}(?![0-9A-Za-z_])")
+        found = []
+        for name in tracked("firmware_core", "docs"):
+            try:
+                text = (ROOT / name).read_text(encoding="utf-8")
+            except UnicodeDecodeError:
+                continue
+            for number, line in enumerate(text.splitlines(), 1):
+                if session.search(line) or (commit.search(line) and "0x" not in line):
+                    found.append(f"{name}:{number}: {line.strip()[:80]}")
+        self.assertEqual(found, [], "development history in the core or docs/")
+
+
 class PathsExist(unittest.TestCase):
     def test_every_quoted_repository_path_exists(self):
         missing = []

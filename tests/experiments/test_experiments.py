@@ -20,7 +20,7 @@ import findings  # noqa: E402
 import trifile  # noqa: E402
 from execute import luma  # noqa: E402
 from pictures import neighbour_contrast  # noqa: E402
-from plan import scaled  # noqa: E402
+from plan import make_plan, scaled  # noqa: E402
 from runner import Cache, key_of  # noqa: E402
 
 BIN = Path(os.environ.get("TRISTREAM_BIN", REPO / "build/bin"))
@@ -188,6 +188,82 @@ class ToolsTest(unittest.TestCase):
                            text=True)
         self.assertEqual(p.returncode, 66)
         self.assertIn("/nonexistent-bin/trisim", p.stderr)
+
+
+class PlanTest(unittest.TestCase):
+    """The full set takes every image of --images DIR, says which, and refuses an empty one."""
+
+    @staticmethod
+    def write(path, mode, size=(40, 30)):
+        from PIL import Image
+        path.parent.mkdir(parents=True, exist_ok=True)
+        rng = np.random.default_rng(1)
+        shape = (size[1], size[0]) + ({"RGB": (3,), "RGBA": (4,)}.get(mode, ()))
+        Image.fromarray(rng.integers(0, 256, shape, dtype=np.uint8), mode).save(path)
+
+    def test_every_image_of_the_folder_is_used(self):
+        with tempfile.TemporaryDirectory() as d:
+            root = Path(d)
+            self.write(root / "kodak/kodim05.png", "RGB")
+            self.write(root / "grey/boat.png", "L")
+            self.write(root / "mine.jpg", "RGB")
+            self.write(root / "colour/mine.png", "RGB")  # the same name as mine.jpg: named by path
+            plan = make_plan("full", REPO, root)
+            self.assertEqual(sorted(s.name for s in plan.grey_sources),
+                             ["boat", "colour/mine", "kodim05", "mine"])
+            self.assertEqual(sorted(s.name for s in plan.colour_sources), ["colour/mine", "kodim05", "mine"])
+            self.assertEqual([s.name for s in plan.time_sources], ["boat"])
+            self.assertNotIn("kodim23", {s.name for s in plan.grey_sources})
+            page = " ".join(plan.notes)
+            for name in ("boat", "kodim05", "colour/mine"):
+                self.assertIn(name, page)
+            self.assertNotIn("sailboat", page)
+
+    def test_an_unusable_image_is_named_and_the_rest_used(self):
+        with tempfile.TemporaryDirectory() as d:
+            root = Path(d)
+            self.write(root / "a.png", "RGB")
+            self.write(root / "b.png", "RGBA")
+            plan = make_plan("full", REPO, root)
+            self.assertEqual([s.name for s in plan.grey_sources], ["a"])
+            self.assertTrue(any("b.png" in n and "RGBA" in n for n in plan.notes), plan.notes)
+
+    def test_an_empty_selection_is_refused(self):
+        with tempfile.TemporaryDirectory() as d:
+            (Path(d) / "notes.txt").write_text("no pictures here")
+            with self.assertRaisesRegex(ValueError, "no usable image"):
+                make_plan("full", REPO, Path(d))
+            with self.assertRaisesRegex(ValueError, "no such folder"):
+                make_plan("full", REPO, Path(d) / "absent")
+
+    def test_the_driver_exits_65_on_an_empty_folder(self):
+        if not (BIN / "trisim").exists():
+            self.skipTest(f"{BIN}/trisim not built")
+        with tempfile.TemporaryDirectory() as d:
+            p = subprocess.run(["/usr/bin/python3", str(REPO / "tools/experiments/run_experiments.py"), str(BIN),
+                                str(Path(d) / "out"), "--set", "full", "--images", d], capture_output=True, text=True)
+            self.assertEqual(p.returncode, 65, p.stderr)
+            self.assertIn(f"{d}: no usable image", p.stderr)
+
+    def test_a_run_off_a_terminal_prints_a_line_per_case_and_names_its_images(self):
+        if not (BIN / "trisim").exists():
+            self.skipTest(f"{BIN}/trisim not built")
+        with tempfile.TemporaryDirectory() as d:
+            from PIL import Image
+            ramp = (np.add.outer(np.arange(24), np.arange(32)) * 4).astype(np.uint8)
+            (Path(d) / "img").mkdir()
+            Image.fromarray(ramp, "L").save(Path(d) / "img/ramp.png")
+            p = subprocess.run(["/usr/bin/python3", str(REPO / "tools/experiments/run_experiments.py"), str(BIN),
+                                str(Path(d) / "out"), "--set", "full", "--images", str(Path(d) / "img"), "--jobs", "2"],
+                               capture_output=True, text=True)
+            self.assertEqual(p.returncode, 0, p.stderr)
+            lines = [line for line in p.stderr.splitlines() if line.startswith("experiments (full): case ")]
+            total = int(lines[-1].split("/")[1].split()[0]) if lines else -1
+            self.assertEqual(len(lines), total, p.stderr[-2000:])
+            self.assertIn("grey ramp grey, 1,000 vertices", p.stderr)
+            page = (Path(d) / "out/index.html").read_text(encoding="utf-8")
+            self.assertIn("Greyscale: 1 image (ramp as they are)", page)
+            self.assertNotIn("kodim23", "".join(line for line in lines))
 
 
 if __name__ == "__main__":

@@ -20,11 +20,14 @@ YCBCR_SPLITS = [(3000, 1000), (3000, 20000), (7000, 1000), (7000, 20000)]
 TIME_COUNTS = [2000, 4000, 5000, 7000, 10000, 12000, 15000]
 # Methods whose 'thesis' variant (the thesis's step sampling) is run besides the default.
 THESIS_VARIANTS = ("bezier", "coons")
-# Kodak images of the full set's greyscale part (every fourth, plus the demo's kodim23).
-KODAK_GREY = ("kodim23",)
-# Colour images of the full set: the thesis's (Yacht = sailboat, Baboon = mandrill, Peppers, Airplane,
-# Fruits); Lena and Pool are not available.
-COLOUR_IMAGES = ("sailboat", "mandrill", "peppers", "airplane", "fruits")
+# The images the full set reads from --images DIR: every file of these types under DIR (its grey/,
+# colour/ and kodak/ folders, or any other layout), greyscale as it is, colour also as luma.
+IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg", ".bmp", ".pnm", ".pgm", ".ppm")
+# Figure 6.22's timing runs use these 512x512 greyscale photographs when present (the thesis's
+# Boat and Goldhill), else the first greyscale image of DIR, else a 512x512 crop of the demo image.
+TIMING_IMAGES = ("boat", "goldhill")
+# Colour images split by Y/Cb/Cr allocation (figure 6.13): the thesis's when present, else all.
+SPLIT_IMAGES = ("sailboat", "peppers", "mandrill")
 
 
 def scaled(n_nominal: int, width: int, height: int) -> int:
@@ -89,10 +92,9 @@ class Plan:
 def read_size(path: Path):
     from PIL import Image
     with Image.open(path) as im:
-        channels = 1 if im.mode in ("L", "I;16", "I", "1") else 3
         if im.mode not in ("L", "RGB"):
-            raise ValueError(f"{path}: expected an 8-bit greyscale or RGB PNG, found mode {im.mode}")
-        return im.size[0], im.size[1], channels
+            raise ValueError(f"{path}: expected an 8-bit greyscale or RGB image, found mode {im.mode}")
+        return im.size[0], im.size[1], 1 if im.mode == "L" else 3
 
 
 def source(name, path, group, crop=None):
@@ -102,25 +104,38 @@ def source(name, path, group, crop=None):
     return Source(name, Path(path), group, w, h, c, crop)
 
 
-def shared_sources(images_dir: Optional[Path], notes: List[str]):
-    """The photographs under images_dir (grey/, colour/, kodak/); empty lists with a note when absent."""
-    found = {"grey": [], "colour": [], "kodak": []}
-    if images_dir is None:
-        notes.append("No test photographs given (--images DIR or TRISTREAM_IMAGES): the experiments that use "
-                     "them were skipped.")
-        return found
+def shared_sources(images_dir: Path, notes: List[str]) -> List[Source]:
+    """Every image under images_dir (IMAGE_SUFFIXES, any depth), named by its file name without the
+    suffix (by its path under images_dir when two share a name), grouped by its first folder (kodak,
+    grey, colour, ...; "images" at the top). Images that cannot be used are listed in the notes.
+    ValueError when images_dir is not a folder or holds no usable image."""
     if not images_dir.is_dir():
-        notes.append(f"The shared test images ({images_dir}) are absent: the experiments that use them were "
-                     f"skipped.")
-        return found
-    for group in found:
-        folder = images_dir / group
-        if not folder.is_dir():
-            notes.append(f"{folder} is absent: its images were skipped.")
-            continue
-        for p in sorted(folder.glob("*.png")):
-            found[group].append(source(p.stem, p, group))
+        raise ValueError(f"{images_dir}: no such folder (--images DIR or TRISTREAM_IMAGES)")
+    files = sorted(p for p in images_dir.rglob("*") if p.is_file() and p.suffix.lower() in IMAGE_SUFFIXES)
+    stems = [p.stem for p in files]
+    found, skipped = [], []
+    for p in files:
+        rel = p.relative_to(images_dir)
+        name = p.stem if stems.count(p.stem) == 1 else rel.with_suffix("").as_posix()
+        group = rel.parts[0] if len(rel.parts) > 1 else "images"
+        try:
+            found.append(source(name, p, group))
+        except (OSError, ValueError) as exc:
+            skipped.append(f"{rel} ({exc.__class__.__name__}: {str(exc).replace(str(p) + ': ', '')})")
+    if skipped:
+        notes.append(f"Images of {images_dir} not used: {'; '.join(skipped)}.")
+    if not found:
+        raise ValueError(f"{images_dir}: no usable image ({', '.join(IMAGE_SUFFIXES)}; 8-bit greyscale or RGB) "
+                         f"in it or its folders" + (f"; skipped: {'; '.join(skipped)}" if skipped else ""))
     return found
+
+
+def names(sources: List[Source]) -> str:
+    return ", ".join(s.name for s in sources)
+
+
+def count(sources: List[Source]) -> str:
+    return f"{len(sources)} image" + ("" if len(sources) == 1 else "s")
 
 
 def make_plan(name: str, repo: Path, images_dir: Optional[Path]) -> Plan:
@@ -147,33 +162,38 @@ def make_plan(name: str, repo: Path, images_dir: Optional[Path]) -> Plan:
     if name != "full":
         raise ValueError(f"unknown set '{name}' (expected quick or full)")
     plan = Plan("full")
-    shared = shared_sources(images_dir, plan.notes)
-    kodak_grey = [s for s in shared["kodak"] if s.name in KODAK_GREY]
-    plan.grey_sources = shared["grey"] + shared["colour"] + kodak_grey
-    if kodak_grey:
-        plan.notes.append(f"Kodak images used as greyscale: {len(kodak_grey)} of {len(shared['kodak'])} "
-                          f"({', '.join(s.name for s in kodak_grey)}), to keep the full set within about an hour "
-                          f"on two shared cores; the other Kodak images can be added to KODAK_GREY in plan.py.")
-    if not plan.grey_sources:
-        plan.grey_sources = [demo]
-        plan.notes.append("The full set fell back on data/demo/kodim23.png for greyscale.")
+    crop = source("kodim23-crop512", demo.path, "demo", crop=(128, 0, 512, 512))
+    if images_dir is None:
+        plan.notes.append("No test photographs given (--images DIR or TRISTREAM_IMAGES): the full set ran on "
+                          "the shipped demo image (data/demo/kodim23.png) alone.")
+        shared = [demo]
+    else:
+        shared = shared_sources(images_dir, plan.notes)
+    grey = [s for s in shared if s.channels == 1]
+    colour = [s for s in shared if s.channels == 3]
+    plan.grey_sources = grey + colour
     plan.grey_counts = GREY_COUNTS
-    plan.colour_sources = [s for s in shared["colour"] if s.name in COLOUR_IMAGES] or [demo]
+    plan.notes.append(f"Greyscale: {count(plan.grey_sources)} ({names(grey) or 'none'} as they are"
+                      + (f"; {names(colour)} as luma" if colour else "") + ").")
+    plan.colour_sources = colour
     plan.colour_totals = COLOUR_TOTALS[:3]
-    plan.notes.append(f"Colour: the thesis's images that are available ({', '.join(COLOUR_IMAGES)}) at totals "
-                      f"{', '.join(f'{n:,}' for n in plan.colour_totals)} (thesis scale).")
     plan.cotri_thesis_totals = [15000]
-    plan.split_sources = [s for s in plan.colour_sources if s.name in ("sailboat", "peppers", "mandrill")] \
-        or [demo]
+    plan.split_sources = [s for s in colour if s.name in SPLIT_IMAGES] or colour
     plan.splits = YCBCR_SPLITS
-    timing = [s for s in shared["grey"] if s.name in ("boat", "goldhill")]
-    plan.time_sources = timing or [source("kodim23-crop512", demo.path, "demo", crop=(128, 0, 512, 512))]
+    if colour:
+        plan.notes.append(f"Colour: {count(colour)} ({names(colour)}) at totals "
+                          f"{', '.join(f'{n:,}' for n in plan.colour_totals)} (thesis scale); the Y/Cb/Cr "
+                          f"allocations on {names(plan.split_sources)}.")
+    else:
+        plan.notes.append("Colour: no colour image among the photographs, so no colour study.")
+    plan.time_sources = [s for s in grey if s.name in TIMING_IMAGES] or grey[:1] or [crop]
+    plan.notes.append(f"Time: {names(plan.time_sources)}.")
     plan.time_counts = TIME_COUNTS
     plan.time_repeats = 2
     # The thesis variants cost seconds per image (step sampling): run on the timing images only.
     plan.thesis_variants_for = [s.name for s in plan.time_sources]
-    names = {s.name for s in plan.grey_sources} | {s.name for s in plan.colour_sources}
     wanted = [("boat", "grey", 5000), ("fruits", "grey", 5000), ("peppers", "co-rgb", 15000),
               ("peppers", "separate-rgb", 15000), ("kodim23", "grey", 2000)]
-    plan.picture_cases = [c for c in wanted if c[0] in names] or [("kodim23", "grey", 2000)]
+    known = {s.name for s in plan.grey_sources} | {s.name for s in plan.colour_sources}
+    plan.picture_cases = [c for c in wanted if c[0] in known] or [(plan.grey_sources[0].name, "grey", 2000)]
     return plan

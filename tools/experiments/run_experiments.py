@@ -6,9 +6,9 @@ Usage: run_experiments.py BIN_DIR OUT_DIR [--set quick|full] [--force] [--jobs N
 
 Writes OUT_DIR/index.html (self-contained), CSV files and charts. Results are cached under
 OUT_DIR/cache keyed by their inputs (image bytes, options, tool binaries) and reused unless
---force. The full set reads the project's test photographs (--images DIR, default
-$TRISTREAM_IMAGES; folders grey/, colour/, kodak/) beside the shipped demo image and skips them
-with a note when they are absent; the quick set reads only data/demo/kodim23.png.
+--force. The full set reads every image under --images DIR (default $TRISTREAM_IMAGES; any
+layout), and refuses a DIR without one (exit 65); without DIR it runs on data/demo/kodim23.png alone.
+The quick set reads only data/demo/kodim23.png. On a terminal a progress bar, otherwise a line per case.
 """
 import argparse
 import os
@@ -17,7 +17,7 @@ import subprocess
 import sys
 import time
 from collections import defaultdict
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, as_completed
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # keep the source tree free of __pycache__
@@ -188,17 +188,33 @@ def main(argv):
     started = time.time()
     load_start = os.getloadavg()
     cache = Cache(out_dir / "cache", force=args.force, offline=args.report_only)
-    with tqdm(total=total, disable=None, file=sys.stderr, unit="item", dynamic_ncols=True,
+    # On a terminal a progress bar; otherwise (a log, CI) one line per case as it ends.
+    lines = not sys.stderr.isatty()
+    cases = len(work) + len(timing)
+    done = 0
+
+    def case_line(what):
+        nonlocal done
+        done += 1
+        if lines:
+            print(f"experiments ({plan.name}): case {done}/{cases} done after {time.time() - started:.0f} s: {what}",
+                  file=sys.stderr, flush=True)
+
+    with tqdm(total=total, disable=True if lines else None, file=sys.stderr, unit="item", dynamic_ncols=True,
               desc=f"experiments ({plan.name})") as bar:
         executor = Executor(tools, cache, bar)
         with ThreadPoolExecutor(max_workers=args.jobs) as pool:
-            futures = [pool.submit(executor.process, enc, runs) for enc, runs in work.items()]
-            for f in futures:
+            futures = {pool.submit(executor.process, enc, runs): (enc, runs) for enc, runs in work.items()}
+            for f in as_completed(futures):
                 f.result()
+                enc, runs = futures[f]
+                case_line(f"{enc.study} {enc.image} {enc.label}, {enc.nominal:,} vertices ({len(runs)} runs)")
         # Timing runs come last and one at a time, so that they do not compete with each other.
         for t in timing:
             executor.time_run(t)
             bar.update(1)
+            case_line(f"time {t.enc.image} {t.method}{' ' + t.variant if t.variant else ''} {t.engine}, "
+                      f"{t.enc.nominal:,} vertices")
     elapsed = time.time() - started
     from runner import file_sha256
     changed = [str(t) for t, sha in ((tools.trisim, tools.trisim_sha), (tools.triencode, tools.triencode_sha))
