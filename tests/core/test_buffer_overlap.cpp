@@ -22,7 +22,7 @@ namespace {
 
 struct Setup {
   std::vector<std::uint8_t> bytes = pack_blob(
-      single_mesh(random_lattice_mesh(40, 24, 30, 20, 0, 5), 40, 24, ColorSpace::rgb), core::Method::bilinear);
+      single_mesh(random_lattice_mesh(40, 24, 30, 20, 0, 3), 40, 24, ColorSpace::rgb), core::Method::bilinear);
   std::vector<std::uint8_t> stream = compress_blob(bytes, "small");
   ts_blob blob{};
   ts_compressed_blob compressed{};
