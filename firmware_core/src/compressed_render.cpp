@@ -53,14 +53,7 @@ uint8_t* stream_ring(LayerStream* s) { return reinterpret_cast<uint8_t*>(s) + al
 // The header fields of the compressed blob, no layers yet: what plan_frame and the tile path read.
 Blob header_view(const CompressedBlob& c) {
   Blob b;
-  b.bytes = c.bytes;
-  b.size = c.size;
-  b.width = c.width;
-  b.height = c.height;
-  b.space = c.space;
-  b.method = c.method;
-  b.layer_count = c.layer_count;
-  b.values_per_vertex = c.values_per_vertex;
+  static_cast<BlobInfo&>(b) = c;
   return b;
 }
 
