@@ -14,6 +14,7 @@
 #include "encoder/planes.h"
 #include "encoder/relocate.h"
 #include "geometry/delaunay.h"
+#include "io/limits.h"
 #include "model/color.h"
 
 namespace tristream {
@@ -143,6 +144,24 @@ void check_options(const Image& image, const EncodeOptions& o) {
 }
 
 }  // namespace
+
+EncodeResult encode(const Image& image, const EncodeOptions& options, const std::string& name) {
+  try {
+    return encode(image, options);
+  } catch (const DataError& e) {
+    throw DataError(name + ": " + e.what());
+  }
+}
+
+void check_encodable(const Image& image, const std::string& name) {
+  const std::string found = std::to_string(image.width) + "x" + std::to_string(image.height);
+  if (image.width > limits::max_image_side || image.height > limits::max_image_side)
+    throw DataError(name + ": expected an image of at most " + std::to_string(limits::max_image_side) +
+                    " pixels a side (the largest a .tri file holds), found " + found);
+  if (std::uint64_t(image.width) * std::uint64_t(image.height) > limits::max_encode_pixels)
+    throw DataError(name + ": expected an image of at most " + std::to_string(limits::max_encode_pixels) +
+                    " pixels (the limit for encoding), found " + found);
+}
 
 Image encoded_original(const Image& image, const Triangulation& tri) {
   return tri.channels() == 1 ? to_grey(image) : image;

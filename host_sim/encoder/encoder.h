@@ -3,6 +3,7 @@
 // The encoder: an image in, a triangulation out (greedy insertion, encoder/greedy.h).
 #include <cstddef>
 #include <functional>
+#include <string>
 
 #include "model/image.h"
 #include "model/triangulation.h"
@@ -63,6 +64,13 @@ struct EncodeResult {
 // triangulation. Deterministic. Throws UsageError for impossible options (no stop
 // criterion, fewer than 4 vertices, more vertices than pixels).
 EncodeResult encode(const Image& image, const EncodeOptions& options);
+
+// encode(), with a DataError's message prefixed by `name` (the input file's).
+EncodeResult encode(const Image& image, const EncodeOptions& options, const std::string& name);
+
+// Refuses an image the encoder does not take: more than limits::max_image_side pixels a side (the
+// largest a .tri file holds) or limits::max_encode_pixels pixels. Throws DataError naming `name`.
+void check_encodable(const Image& image, const std::string& name);
 
 // The image a triangulation encodes: luma for a grey triangulation of a colour image.
 Image encoded_original(const Image& image, const Triangulation& tri);

@@ -47,4 +47,29 @@ Image panel_image(const PanelPicture& p, std::uint8_t background) {
   return out;
 }
 
+PanelPicture picture_for_panel(const Image& image, int width, int height, Fit fit, const std::string& name) {
+  if (!width) {
+    PanelPicture panel;
+    panel.panel_width = image.width;
+    panel.panel_height = image.height;
+    panel.picture = image;
+    return panel;
+  }
+  if (image.width < 2 || image.height < 2)
+    throw DataError(name + ": expected an image of at least 2x2 pixels to resample, found " +
+                    std::to_string(image.width) + "x" + std::to_string(image.height));
+  return fit_to_panel(image, width, height, fit);
+}
+
+Triangulation on_panel(Triangulation tri, const PanelPicture& p) {
+  tri.width = p.panel_width;
+  tri.height = p.panel_height;
+  for (Mesh& m : tri.layers)
+    for (Point& q : m.points) {
+      q.x += p.x0;
+      q.y += p.y0;
+    }
+  return tri;
+}
+
 }  // namespace tristream

@@ -14,9 +14,8 @@
 #include "common/json_name.h"
 #include "common/name_list.h"
 #include "common/tool_main.h"
-#include "core_bridge/compress.h"
 #include "core_bridge/pack.h"
-#include "encoder/budget.h"
+#include "encoder/blob_budget.h"
 #include "encoder/encoder.h"
 #include "encoder/panel.h"
 #include "io/image_io.h"
@@ -50,18 +49,6 @@ class ProgressBar {
  private:
   int last_ = -1;
 };
-
-// An image triencode can encode: sides a .tri file can hold (limits::max_image_side) and at most
-// limits::max_encode_pixels pixels. Throws DataError naming the limit.
-void check_encodable(const std::string& path, const Image& image) {
-  const std::string found = std::to_string(image.width) + "x" + std::to_string(image.height);
-  if (image.width > limits::max_image_side || image.height > limits::max_image_side)
-    throw DataError(path + ": expected an image of at most " + std::to_string(limits::max_image_side) +
-                    " pixels a side (the largest a .tri file holds), found " + found);
-  if (std::uint64_t(image.width) * std::uint64_t(image.height) > limits::max_encode_pixels)
-    throw DataError(path + ": expected an image of at most " + std::to_string(limits::max_encode_pixels) +
-                    " pixels (the limit for encoding), found " + found);
-}
 
 // A validator of a finite number above `lo` (or at least `lo` when `inclusive`) and at most
 // `hi`; NaN and infinities are refused. The message states `expected` (not the bounds in full).
@@ -125,37 +112,6 @@ CLI::Validator panel_fit() {
         return expected;
       },
       name_list(fit_names(), "|", "|"));
-}
-
-// The triangulation of the picture on the panel: positions moved by the picture's offset, the size
-// the panel's (with --fit inside the border stays outside every triangle: the renderer's background).
-Triangulation on_panel(Triangulation tri, const PanelPicture& p) {
-  tri.width = p.panel_width;
-  tri.height = p.panel_height;
-  for (Mesh& m : tri.layers)
-    for (Point& q : m.points) {
-      q.x += p.x0;
-      q.y += p.y0;
-    }
-  return tri;
-}
-
-// What --max-bytes measures: the blob tripack -m <method> writes for `tri`, with --compress or
-// without (v1).
-std::size_t blob_bytes(const Triangulation& tri, core::Method method, bool compressed, const std::string& name) {
-  const std::vector<std::uint8_t> v1 = pack_blob(tri, method, name);
-  return compressed ? compress_blob(v1, name).size() : v1.size();
-}
-
-// A first guess of the bytes per vertex; the search measures the real slope after one step.
-// Compressed (docs/COMPRESSED_BLOB.md, measured on the demo): about 17 bits of positions,
-// connectivity and flags, 6.5 of values per channel and 32 of zienkiewicz gradients per channel.
-// v1 (tristream/blob.h): a vertex's position 4 bytes and 2 per value, about two triangles of 8 bytes,
-// zienkiewicz gradients 8 bytes per value.
-double bytes_per_vertex_guess(int channels, core::Method method, bool compressed) {
-  const bool z = method == core::Method::zienkiewicz;
-  if (compressed) return (17.0 + channels * (6.5 + (z ? 32.0 : 0.0))) / 8.0;
-  return 4.0 + 16.0 + channels * (2.0 + (z ? 8.0 : 0.0));
 }
 
 // The command line's values (the defaults are triencode's).
@@ -267,91 +223,17 @@ EncodeOptions encode_options(const CLI::App& app, const Command& c) {
   return o;
 }
 
-// The picture encoded: the image itself, or with --width and --height resampled for the panel.
-PanelPicture panel_picture(const Command& c, const Image& image) {
-  PanelPicture panel;
-  if (!c.panel_width) {
-    panel.panel_width = image.width;
-    panel.panel_height = image.height;
-    panel.picture = image;
-    return panel;
-  }
-  if (image.width < 2 || image.height < 2)
-    throw DataError(c.input + ": expected an image of at least 2x2 pixels to resample, found " +
-                    std::to_string(image.width) + "x" + std::to_string(image.height));
-  return fit_to_panel(image, c.panel_width, c.panel_height, parse_fit(c.fit));
-}
+// An encoding of the picture: the encoder's result and its triangulation placed on the panel (with
+// --max-bytes also the search that chose it).
+using Encoded = BudgetEncoding;
 
-// An encoding of the picture: the encoder's result and its triangulation placed on the panel.
-struct Encoded {
-  EncodeResult result;
-  Triangulation tri;
-  BudgetSearch search;  // --max-bytes: the trials and the one chosen
-  double seconds = 0;   // all encodes
-};
-
-// Encodes with the options' vertex count or error; a data error names the input.
-EncodeResult encode_picture(const Command& c, const Image& picture, const EncodeOptions& options) {
-  try {
-    return encode(picture, options);
-  } catch (const DataError& e) {
-    throw DataError(c.input + ": " + e.what());
-  }
-}
-
-// --max-bytes: the most vertices found whose blob fits, one encode per trial (the progress bar
-// shows the trial under way).
-Encoded encode_to_budget(const Command& c, const PanelPicture& panel, const EncodeOptions& o) {
-  const Image& picture = panel.picture;
-  const core::Method pack_method = parse_core_method(c.method);
-  const bool compressed = c.blob == "compressed";
-  if (panel.panel_width > core::config::max_dimension || panel.panel_height > core::config::max_dimension)
-    throw DataError(c.input + ": --max-bytes measures a blob for the core, which takes at most " +
-                    std::to_string(core::config::max_dimension) + " pixels a side, found " +
-                    std::to_string(panel.panel_width) + "x" + std::to_string(panel.panel_height) +
-                    " (--width and --height encode for a smaller panel)");
-  Encoded out;
-  BudgetOptions b;
+// --max-bytes: the budget as the options name it.
+BlobBudget blob_budget(const Command& c) {
+  BlobBudget b;
   b.max_bytes = std::size_t(c.max_bytes);
-  b.max_vertices =
-      std::min<std::size_t>(std::size_t(picture.width) * std::size_t(picture.height), core::blob_max_vertices);
-  b.bytes_per_vertex = bytes_per_vertex_guess(c.grey ? 1 : picture.channels, pack_method, compressed);
-  if (o.color == ColorMode::separate && !c.grey && picture.channels == 3) b.bytes_per_vertex *= 3;
-  std::size_t kept_vertices = 0;
-  out.search = search_vertex_budget(
-      [&](std::size_t n) {
-        EncodeOptions trial = o;
-        trial.vertices = n;
-        EncodeResult e = encode_picture(c, picture, trial);
-        out.seconds += e.seconds;
-        Triangulation placed = on_panel(e.triangulation, panel);
-        const std::size_t bytes = blob_bytes(placed, pack_method, compressed, c.input);
-        // Exhausted: the linear interpolant is exact, or every mesh stopped short of n; more
-        // vertices would only cost bytes.
-        bool exhausted = true;
-        for (const Mesh& m : e.triangulation.layers) exhausted = exhausted && m.vertex_count() < n;
-        exhausted = exhausted || std::isinf(e.psnr);
-        // The most vertices fitting the budget so far is the one kept (the search ends on it).
-        if (bytes <= b.max_bytes && (out.tri.layers.empty() || n > kept_vertices)) {
-          kept_vertices = n;
-          out.result = std::move(e);
-          out.tri = std::move(placed);
-        }
-        return BudgetTrial{n, bytes, exhausted};
-      },
-      b);
-  const BudgetSearch& search = out.search;
-  if (!search.found)
-    throw UsageError("--max-bytes " + std::to_string(c.max_bytes) + ": expected at least " +
-                     std::to_string(search.chosen.bytes) + " bytes, the smallest " + c.blob +
-                     " blob of this picture (its 4 corners, " + c.method + ")");
-  const bool complete = search.chosen.exhausted || search.chosen.vertices >= b.max_vertices;
-  if (double(search.chosen.bytes) < 0.85 * double(b.max_bytes) && !complete)
-    throw DataError(c.input + ": no vertex count found whose blob is within 0.85 to 1 times " +
-                    std::to_string(c.max_bytes) + " bytes in " + std::to_string(search.trials.size()) +
-                    " encodes (the largest that fits: " + std::to_string(search.chosen.vertices) + " vertices, " +
-                    std::to_string(search.chosen.bytes) + " bytes)");
-  return out;
+  b.method = parse_core_method(c.method);
+  b.compressed = c.blob == "compressed";
+  return b;
 }
 
 // The summary line, or with --json one object. `psnr_method` is the PSNR of the --method render
@@ -413,14 +295,14 @@ int encode_image(const CLI::App& app, const Command& c) {
   ProgressBar bar;
   if (!c.quiet && isatty(STDERR_FILENO)) o.progress = [&bar](double f) { bar(f); };
   const Image image = read_image(c.input, limits::max_encode_pixels);
-  check_encodable(c.input, image);
+  check_encodable(image, c.input);
   check_conflicts(app, c.grey || image.channels == 1);
-  const PanelPicture panel = panel_picture(c, image);
+  const PanelPicture panel = picture_for_panel(image, c.panel_width, c.panel_height, parse_fit(c.fit), c.input);
   Encoded e;
   if (c.max_bytes) {
-    e = encode_to_budget(c, panel, o);
+    e = encode_to_budget(panel, o, blob_budget(c), c.input);
   } else {
-    e.result = encode_picture(c, panel.picture, o);
+    e.result = encode(panel.picture, o, c.input);
     e.seconds = e.result.seconds;
     e.tri = on_panel(e.result.triangulation, panel);
   }
