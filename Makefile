@@ -2,14 +2,14 @@
 # tristream: every target installs what it needs first (tools/install-deps.sh), then builds.
 #   make run     build the tools only, then render the demo data with every method into out/ and print a table
 #   make test    build, then run every test through ctest
-# More: make build | tools | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | rd | clean
+# More: make build | tools | python | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | rd | clean
 
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
 FUZZ_TIME  ?= 60
 BENCH_MCU_ARGS ?=
 
-.PHONY: all deps build tools run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick rd
+.PHONY: all deps build tools python run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick rd
 
 all: build
 
@@ -25,12 +25,18 @@ tools: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j$(JOBS) --target tristream_tools
 
+# The Python module tristream (python/) into $(BUILD)/python/, and the tools its tests compare it with.
+python: deps
+	@bash tools/install-deps.sh python
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DTRISTREAM_PYTHON=ON
+	cmake --build $(BUILD) -j$(JOBS) --target tristream_python tristream_tools
+
 run: tools
 	bash tools/run-demo.sh $(BUILD)/bin out
 
 # The mcu group first: the build finds unicorn and capstone when it configures (bench_mcu tests).
 test: deps
-	@bash tools/install-deps.sh checks experiments mcu ecosystems
+	@bash tools/install-deps.sh checks experiments mcu ecosystems python
 	$(MAKE) build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 

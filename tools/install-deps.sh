@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Installs the Debian packages a task needs, and only those that are missing.
-# Usage: tools/install-deps.sh [build|checks|fuzz|cross|bench|mcu|experiments|ecosystems|browser|all]...   (default: build)
+# Usage: tools/install-deps.sh [build|checks|fuzz|cross|bench|mcu|experiments|ecosystems|python|browser|all]...   (default: build)
 # checks: universal-ctags, for the function-length check of make test (tests/tools/check_function_lengths.py).
+# python: pybind11 and Python's headers for the Python module (python/), numpy for it and its tests.
 # browser: headless Chromium, for the check of the report page (make experiments-quick).
 # ecosystems: the Cortex-M4 compiler, arduino-builder and PyYAML of tests/ecosystems (make test).
 set -euo pipefail
@@ -16,6 +17,7 @@ declare -A groups=(
   [mcu]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi libunicorn-dev libcapstone-dev pkg-config"
   [experiments]="python3 python3-numpy python3-scipy python3-matplotlib python3-pil python3-tqdm"
   [ecosystems]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi python3 python3-yaml arduino-builder"
+  [python]="python3 python3-dev python3-numpy pybind11-dev python3-pybind11"
   [browser]="chromium"
 )
 
@@ -26,7 +28,7 @@ for group in "${@:-build}"; do
   elif [ -n "${groups[$group]:-}" ]; then
     wanted+=(${groups[$group]})
   else
-    echo "install-deps: unknown group '$group' (expected build, checks, fuzz, cross, bench, mcu, experiments, ecosystems, browser or all)" >&2
+    echo "install-deps: unknown group '$group' (expected build, checks, fuzz, cross, bench, mcu, experiments, ecosystems, python, browser or all)" >&2
     exit 64
   fi
 done

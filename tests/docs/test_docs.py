@@ -13,7 +13,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 DOCS = [ROOT / "README.md", ROOT / "CONTRIBUTING.md", *sorted((ROOT / "docs").glob("*.md")),
         *sorted(ROOT.glob("tools/*/README.md")), ROOT / "tests/golden/README.md"]
-TOP_DIRS = ("host_sim/", "firmware_core/", "tools/", "tests/", "docs/", "data/", "cmake/", ".ci/", "ports/", "zephyr/")
+TOP_DIRS = ("host_sim/", "firmware_core/", "tools/", "tests/", "docs/", "data/", "cmake/", ".ci/", "ports/", "zephyr/", "python/", "examples/")
 
 
 def read(rel):

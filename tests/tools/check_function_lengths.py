@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """No host function over 120 lines: every C and C++ function definition (lambdas included) in
-host_sim/ and tools/, as universal-ctags finds it, from its first line to its last. The files of
+host_sim/, tools/ and python/ (the Python module), as universal-ctags finds it, from its first line to its last. The files of
 ALLOWED are left out while their long functions are rewritten; when one has none left, the check
 says so, and it leaves the list.
 
@@ -14,7 +14,7 @@ import subprocess
 import sys
 
 LIMIT = 120
-ROOTS = ["host_sim", "tools"]
+ROOTS = ["host_sim", "tools", "python"]
 ALLOWED = []  # every host function is within the limit
 
 
