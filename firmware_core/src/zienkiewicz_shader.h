@@ -260,7 +260,8 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       // Optimized for size one loop, by the offsets (without dithering those of pack565_nearest,
       // as forward_differenced): no tables.
       constexpr PixelFormat F = DirectRgb565<Writer>::format;
-      const uint32_t* const offset = writer.dither ? dither_span_offsets(y, x0, p) : (TS_SIZE ? nearest_offsets : nullptr);
+      const uint32_t* const offset =
+          writer.dither ? dither_span_offsets(y, x0, p) : (TS_SIZE ? nearest_offsets : nullptr);
       if (offset) {
         const uint32_t k31 = in_register(dither_k31), k63 = in_register(dither_k63);
         rgb565_pixels(p, x1 - x0 + 1, a, b, [&](uint8_t* q, uint32_t r, uint32_t g, uint32_t bl) {
