@@ -8,6 +8,23 @@
 
 namespace tristream::core::detail {
 
+// T, or the 64-bit integer of T's signedness when Wide (the layouts of 64-bit hosts beside those
+// of 32-bit targets).
+template <bool Wide, typename T>
+struct WiderIf {
+  using type = T;
+};
+template <>
+struct WiderIf<true, int32_t> {
+  using type = int64_t;
+};
+template <>
+struct WiderIf<true, uint32_t> {
+  using type = uint64_t;
+};
+template <bool Wide, typename T>
+using wider_if = typename WiderIf<Wide, T>::type;
+
 // floor(n / d) for d > 0.
 inline int64_t floor_div(int64_t n, int64_t d) {
   if (n == int64_t(int32_t(n)) && d == int64_t(int32_t(d))) {
@@ -265,6 +282,17 @@ TS_INLINE inline int64_t mul_q32(int64_t x, int32_t y) {
   return int64_t((i128(x) * y) >> 32);
 #else
   return SplitProduct(x, y).high;
+#endif
+}
+
+// floor(x y / 2^64) for signed x, y: the high word of their 128-bit product (one multiply on
+// 64-bit hosts; elsewhere mulhi_u64 with the sign corrections).
+TS_INLINE inline int64_t mulhi_i64(int64_t x, int64_t y) {
+#if TS_USE_INT128
+  __extension__ typedef __int128 i128;
+  return int64_t((i128(x) * y) >> 64);
+#else
+  return int64_t(mulhi_u64(uint64_t(x), uint64_t(y)) - (x < 0 ? uint64_t(y) : 0) - (y < 0 ? uint64_t(x) : 0));
 #endif
 }
 

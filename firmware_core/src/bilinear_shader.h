@@ -46,15 +46,11 @@ constexpr bool mod32_division_fits(int m, int s) {
 // no 64-bit arithmetic: fewer cycles than a reciprocal per triangle), and PreinvRoundingDivider
 // for the span path (RoundingDivider for
 // doubled areas of 2^31 or more, none in the default configuration).
-#if TS_USE_INT128
-constexpr bool bilinear_short_division = short_division_fits(scan_max_extent, config::subpixel_bits);
-constexpr bool bilinear_mod32_division = false;
-constexpr bool bilinear_preinv_division = false;
-#else
-constexpr bool bilinear_short_division = false;
-constexpr bool bilinear_mod32_division = mod32_division_fits(scan_max_extent, config::subpixel_bits);
-constexpr bool bilinear_preinv_division = true;
-#endif
+constexpr bool bilinear_short_division =
+    TS_USE_INT128 && short_division_fits(scan_max_extent, config::subpixel_bits);
+constexpr bool bilinear_mod32_division =
+    !TS_USE_INT128 && mod32_division_fits(scan_max_extent, config::subpixel_bits);
+constexpr bool bilinear_preinv_division = !TS_USE_INT128;
 static_assert(short_division_fits(16, 4), "the default configuration divides scan-path numerators without correction");
 static_assert(mod32_division_fits(15, 4), "the default configuration divides scan-path numerators in 32 bits");
 

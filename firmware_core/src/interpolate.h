@@ -151,19 +151,17 @@ struct ZienkiewiczChannel {
   struct ScaledCoefficients {
     int64_t s00, s01, s02, s03, s10, s11, s12, s20, s21, s30;
   };
-#if TS_USE_INT128
-  int64_t s00, s01, s02, s03, s10, s11, s12, s20, s21, s30;
-#else
-  // Where a 64-bit product is not one instruction (Cortex-M, zienkiewicz_narrow_forms): the
-  // scaled coefficients in int32 when every one fits (40 bytes a channel less of the stack, which
-  // holds three channels' for a triangle), else wide(): s30 is wide_mark and all ten are in `w`,
-  // in the place of the forward-difference polynomials: such a triangle is outside their budget
-  // (setup_rows), so they are never set for it. The mark in place of a flag: 8 bytes a channel
-  // less (the flag's padding). An int32 coefficient is never wide_mark (store sends it to `w`).
-  int32_t s00, s01, s02, s03, s10, s11, s12, s20, s21, s30;
+  // The scaled coefficients: in int64 where a 64-bit product is one instruction (64-bit hosts).
+  // Elsewhere (Cortex-M, zienkiewicz_narrow_forms) in int32 when every one fits (40 bytes a
+  // channel less of the stack, which holds three channels' for a triangle), else wide(): s30 is
+  // wide_mark and all ten are in `w`, in the place of the forward-difference polynomials: such a
+  // triangle is outside their budget (setup_rows), so they are never set for it. The mark in place
+  // of a flag: 8 bytes a channel less (the flag's padding). An int32 coefficient is never
+  // wide_mark (store sends it to `w`).
+  using Scaled = wider_if<!zienkiewicz_narrow_forms, int32_t>;
+  Scaled s00, s01, s02, s03, s10, s11, s12, s20, s21, s30;
   static constexpr int32_t wide_mark = INT32_MIN;
-  bool wide() const { return s30 == wide_mark; }
-#endif
+  bool wide() const { return zienkiewicz_narrow_forms && s30 == wide_mark; }
 
   // The forward-difference polynomials (set by setup_rows): P itself in 2^-14 grey (e = p 2^6),
   // D1 (quadratic), D2 (linear) and D3 in 2^-18 grey. The coefficients that Horner's rule
@@ -175,14 +173,10 @@ struct ZienkiewiczChannel {
     int32_t h00, h01x4, h10x4;
     int32_t d3;
   };
-#if TS_USE_INT128
-  RowCoefficients fd;
-#else
   union {
     RowCoefficients fd;    // when !wide()
     ScaledCoefficients w;  // when wide()
   };
-#endif
 
   // The edge derivative u = edge . gradient of a vertex in q24_8 (rounded): edge vectors in
   // position_fx, gradients q19_12 (gradients[2 k], gradients[2 k + 1]: gx, gy of vertex k).
@@ -212,11 +206,11 @@ struct ZienkiewiczChannel {
     if constexpr (Narrow) {
       if (setup_narrow(edge_dx, edge_dy, values, gradients)) return true;
     }
-#if TS_USE_INT128
-    return expand_wide(edge_dx, edge_dy, values, gradients);
-#else
-    return setup_wide(edge_dx, edge_dy, values, gradients);
-#endif
+    if constexpr (zienkiewicz_narrow_forms) {
+      return setup_wide(edge_dx, edge_dy, values, gradients);
+    } else {
+      return expand_wide(edge_dx, edge_dy, values, gradients);
+    }
   }
   // setup's 32-bit expansion alone: true with the coefficients set when every edge derivative is
   // within max_narrow_derivative (narrow_derivatives: the coefficients are then narrow), else false
@@ -305,9 +299,7 @@ struct ZienkiewiczChannel {
   }
   // The scaled coefficients in int64, from either layout.
   ScaledCoefficients scaled() const {
-#if !TS_USE_INT128
     if (wide()) return w;
-#endif
     return {s00, s01, s02, s03, s10, s11, s12, s20, s21, s30};
   }
   // All ten coefficients p in int64 (from either layout), and setting them as expand does (tests).
@@ -325,8 +317,7 @@ struct ZienkiewiczChannel {
   // int32 within the narrow budget, |p| <= 2^23).
   template <typename T>
   TS_INLINE void store(T q00, T q01, T q02, T q03, T q10, T q11, T q12, T q20, T q21, T q30) {
-#if !TS_USE_INT128
-    if constexpr (sizeof(T) > sizeof(int32_t)) {
+    if constexpr (zienkiewicz_narrow_forms && sizeof(T) > sizeof(int32_t)) {
       // Whether each scaled coefficient fits int32 (wide_mark itself goes wide: any value that large
       // is outside both 32-bit budgets), tested on p against the int32 bounds over 4^degree: the
       // int64 products only for a wide triangle.
@@ -342,10 +333,8 @@ struct ZienkiewiczChannel {
       }
       store<int32_t>(int32_t(q00), int32_t(q01), int32_t(q02), int32_t(q03), int32_t(q10), int32_t(q11), int32_t(q12),
                      int32_t(q20), int32_t(q21), int32_t(q30));
-    } else
-#endif
-    {
-      static_assert(TS_USE_INT128 || max_narrow_coefficient < -int64_t(INT32_MIN),
+    } else {
+      static_assert(!zienkiewicz_narrow_forms || max_narrow_coefficient < -int64_t(INT32_MIN),
                     "a narrow coefficient is never wide_mark");
       s30 = 64 * q30, s21 = 64 * q21, s20 = 16 * q20, s12 = 64 * q12, s11 = 16 * q11;
       s10 = 4 * q10, s03 = 64 * q03, s02 = 16 * q02, s01 = 4 * q01, s00 = q00 + rounding_bias;
@@ -355,23 +344,16 @@ struct ZienkiewiczChannel {
   // steps (step: modulo 2^32 in the high word): q2_30 in uint32, or where the 128-bit product is
   // used those times 2^32 in uint64 (its high word then the step's value, no shift a pixel).
   struct Weights {
-#if TS_USE_INT128
-    uint64_t a, b;
-    TS_INLINE static Weights of(uint32_t a, uint32_t b) {
-      return {uint64_t(a) << 32, uint64_t(b) << 32};
-    }
-#else
-    uint32_t a, b;
-    TS_INLINE static Weights of(uint32_t a, uint32_t b) { return {a, b}; }
-#endif
+    static constexpr int shift = zienkiewicz_narrow_forms ? 0 : 32;
+    using Word = wider_if<!zienkiewicz_narrow_forms, uint32_t>;
+    Word a, b;
+    TS_INLINE static Weights of(uint32_t a, uint32_t b) { return {Word(a) << shift, Word(b) << shift}; }
     TS_INLINE void step(const Weights& d) { a += d.a, b += d.b; }
   };
   // The q24_8 value at the barycentric weights a, b (q2_30) plus rounding_bias, unclamped (below
   // 2^60 in magnitude: |s| < 2^58).
   int64_t eval_wide(int32_t a, int32_t b) const {
-#if !TS_USE_INT128
     if (wide()) return horner(w, a, b);
-#endif
     return horner(*this, a, b);
   }
   // eval_wide of the scaled coefficients c.s00 .. c.s30: each step s + floor(w t / 2^32), exact.
@@ -384,16 +366,15 @@ struct ZienkiewiczChannel {
   }
   template <typename C>
   TS_INLINE static int64_t horner(const C& c, Weights w) {
-#if TS_USE_INT128
-    __extension__ typedef __int128 i128;
-    const int64_t wa = int64_t(w.a), wb = int64_t(w.b);
-    auto h = [](int64_t v, int64_t t, int64_t s) TS_INLINE {
-      return s + int64_t((i128(v) * t) >> 64);
+    using W = wider_if<!zienkiewicz_narrow_forms, int32_t>;
+    const W wa = W(w.a), wb = W(w.b);
+    auto h = [](W v, int64_t t, int64_t s) TS_INLINE {
+      if constexpr (zienkiewicz_narrow_forms) {
+        return s + mul_q32(t, v);
+      } else {
+        return s + mulhi_i64(v, t);
+      }
     };
-#else
-    const int32_t wa = int32_t(w.a), wb = int32_t(w.b);
-    auto h = [](int32_t v, int64_t t, int64_t s) TS_INLINE { return s + mul_q32(t, v); };
-#endif
     const int64_t pb = h(wb, h(wb, h(wb, c.s03, c.s02), c.s01), c.s00);
     const int64_t pa = h(wa, h(wa, c.s30, h(wb, c.s21, c.s20)), h(wb, h(wb, c.s12, c.s11), c.s10));
     return h(wa, pa, pb);
@@ -414,30 +395,32 @@ struct ZienkiewiczChannel {
   static constexpr int64_t narrow_eval_bound(int64_t s) { return 13 * s / 4 + 5; }
   // Every s in [-S, S): each s + S in [0, 2 S), so their bitwise or below 2 S.
   TS_INLINE bool fits_narrow() const {
-#if TS_USE_INT128
-    using U = uint64_t;
-#else
-    using U = uint32_t;  // the int32 fields
+    using U = wider_if<!zienkiewicz_narrow_forms, uint32_t>;  // as wide as the fields
     if (wide()) return false;
-#endif
     auto o = [](auto c) { return U(c) + U(max_narrow_coefficient); };
     return (o(s00) | o(s01) | o(s02) | o(s03) | o(s10) | o(s11) | o(s12) | o(s20) | o(s21) | o(s30)) <
            2 * U(max_narrow_coefficient);
   }
   // Whether eval_narrow is exact for every triangle (the 128-bit form of eval_wide), so that no
   // triangle needs fits_narrow.
-  static constexpr bool narrow_always = TS_USE_INT128;
+  static constexpr bool narrow_always = !zienkiewicz_narrow_forms;
   // The evaluation per pixel of a triangle that setup found narrow: eval_wide where it costs no
   // more (narrow_always), else eval32. The value plus rounding_bias: int32 in eval32's budget.
-#if TS_USE_INT128
-  using NarrowValue = int64_t;
-  TS_INLINE int64_t eval_narrow(int32_t a, int32_t b) const { return horner(*this, a, b); }
-  TS_INLINE int64_t eval_narrow(Weights w) const { return horner(*this, w); }
-#else
-  using NarrowValue = int32_t;
-  TS_INLINE int32_t eval_narrow(int32_t a, int32_t b) const { return eval32(a, b); }
-  TS_INLINE int32_t eval_narrow(Weights w) const { return eval32(int32_t(w.a), int32_t(w.b)); }
-#endif
+  using NarrowValue = wider_if<narrow_always, int32_t>;
+  TS_INLINE NarrowValue eval_narrow(int32_t a, int32_t b) const {
+    if constexpr (narrow_always) {
+      return horner(*this, a, b);
+    } else {
+      return eval32(a, b);
+    }
+  }
+  TS_INLINE NarrowValue eval_narrow(Weights w) const {
+    if constexpr (narrow_always) {
+      return horner(*this, w);
+    } else {
+      return eval32(int32_t(w.a), int32_t(w.b));
+    }
+  }
   TS_INLINE int32_t eval32(int32_t a, int32_t b) const {
 #if TS_ARM_SMMLA
     return arm::eval32(&s00, a, b);  // the same steps in assembly (arm/zienkiewicz_eval.h)
@@ -480,9 +463,7 @@ struct ZienkiewiczChannel {
   }
   // setup_rows for steps within steps_fit_rows.
   TS_SETUP_ROWS_ATTRIBUTES bool setup_rows_within(int32_t da, int32_t db) {
-#if !TS_USE_INT128
     if (wide()) return false;
-#endif
     // The coefficients p (exact shifts of the scaled ones).
     const auto p00 = s00 - rounding_bias, p01 = s01 >> 2, p02 = s02 >> 4, p03 = s03 >> 6, p10 = s10 >> 2,
                p11 = s11 >> 4;
@@ -490,11 +471,7 @@ struct ZienkiewiczChannel {
     // The sum of magnitudes below max_fd_sum: at once when every p is in [-2^17, 2^17) (ten of
     // them sum to below it; each p + 2^17 in [0, 2^18), so their bitwise or below 2^18), else
     // summed, in 32 bits after each p in [-2^21, 2^21) (implied by the sum's budget): below 2^25.
-#if TS_USE_INT128
-    using U = uint64_t;
-#else
-    using U = uint32_t;  // the int32 coefficients
-#endif
+    using U = wider_if<!zienkiewicz_narrow_forms, uint32_t>;  // as wide as the coefficients
     auto within = [&](int bits) TS_INLINE {
       const U lift = U(1) << bits;
       auto o = [lift](auto c) { return U(c) + lift; };
@@ -607,15 +584,15 @@ struct ZienkiewiczChannel {
   }
 };
 
-#if !TS_USE_INT128
-// The offsets at which arm/zienkiewicz_eval.h reads the coefficients (the 32-bit layout: every
-// target without 128-bit integers checks them).
+// The offsets at which arm/zienkiewicz_eval.h reads the coefficients (the 32-bit layout, checked
+// where it is used).
 #define TS_OFFSET_IS(type, base, field, bytes) (offsetof(type, field) - offsetof(type, base) == (bytes))
-static_assert(TS_OFFSET_IS(ZienkiewiczChannel, s00, s01, 4) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s02, 8) &&
+static_assert(!zienkiewicz_narrow_forms ||
+                  (TS_OFFSET_IS(ZienkiewiczChannel, s00, s01, 4) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s02, 8) &&
                   TS_OFFSET_IS(ZienkiewiczChannel, s00, s03, 12) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s10, 16) &&
                   TS_OFFSET_IS(ZienkiewiczChannel, s00, s11, 20) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s12, 24) &&
                   TS_OFFSET_IS(ZienkiewiczChannel, s00, s20, 28) && TS_OFFSET_IS(ZienkiewiczChannel, s00, s21, 32) &&
-                  TS_OFFSET_IS(ZienkiewiczChannel, s00, s30, 36),
+                  TS_OFFSET_IS(ZienkiewiczChannel, s00, s30, 36)),
               "eval32's offsets");
 using ZienkiewiczRows = ZienkiewiczChannel::RowCoefficients;
 static_assert(TS_OFFSET_IS(ZienkiewiczRows, e00, e01, 4) && TS_OFFSET_IS(ZienkiewiczRows, e00, e02, 8) &&
@@ -630,7 +607,6 @@ static_assert(TS_OFFSET_IS(ZienkiewiczRows, e00, e01, 4) && TS_OFFSET_IS(Zienkie
                   sizeof(ZienkiewiczRows) == 80,
               "steps_at's offsets");
 #undef TS_OFFSET_IS
-#endif
 static_assert(ZienkiewiczChannel::narrow_eval_bound(ZienkiewiczChannel::max_narrow_coefficient) <= INT32_MAX,
               "narrow evaluation: every partial sum fits int32");
 static_assert(20 * 64 * int64_t(ZienkiewiczChannel::max_narrow_derivative) <=
@@ -716,23 +692,23 @@ struct BarycentricStepper {
     constexpr int64_t one = int64_t(1) << q2_30::frac_bits;
     xr = x_ref;
     yr = y_ref;
-#if TS_SIZE
-    // A loop: one copy of the divider's quotient (inlined). Each numerator picked in the loop, not
-    // staged in an array (which would be in the deepest frame).
-    uint32_t q[6];
-    for (int i = 0; i < 6; ++i) {
-      const int64_t n = i < 2 ? a[i + 1] : (i < 4 ? b[i - 1] : e_ref[i - 3]);
-      q[i] = uint32_t(by_area2(n * one));
+    if constexpr (TS_SIZE) {
+      // A loop: one copy of the divider's quotient (inlined). Each numerator picked in the loop,
+      // not staged in an array (which would be in the deepest frame).
+      uint32_t q[6];
+      for (int i = 0; i < 6; ++i) {
+        const int64_t n = i < 2 ? a[i + 1] : (i < 4 ? b[i - 1] : e_ref[i - 3]);
+        q[i] = uint32_t(by_area2(n * one));
+      }
+      dadx = q[0], dbdx = q[1], dady = q[2], dbdy = q[3], a_ref = q[4], b_ref = q[5];
+    } else {
+      dadx = uint32_t(by_area2(a[1] * one));
+      dbdx = uint32_t(by_area2(a[2] * one));
+      dady = uint32_t(by_area2(b[1] * one));
+      dbdy = uint32_t(by_area2(b[2] * one));
+      a_ref = uint32_t(by_area2(e_ref[1] * one));
+      b_ref = uint32_t(by_area2(e_ref[2] * one));
     }
-    dadx = q[0], dbdx = q[1], dady = q[2], dbdy = q[3], a_ref = q[4], b_ref = q[5];
-#else
-    dadx = uint32_t(by_area2(a[1] * one));
-    dbdx = uint32_t(by_area2(a[2] * one));
-    dady = uint32_t(by_area2(b[1] * one));
-    dbdy = uint32_t(by_area2(b[2] * one));
-    a_ref = uint32_t(by_area2(e_ref[1] * one));
-    b_ref = uint32_t(by_area2(e_ref[2] * one));
-#endif
   }
   // Weights at pixel (x, y) (the first covered pixel of a row: independent of tiling). Inlined
   // (-Os would call it once a row).

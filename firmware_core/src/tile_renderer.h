@@ -141,11 +141,7 @@ void fill_background(uint8_t* base, int32_t stride, const Rect& rect, const Rend
 // builds for size: its registers then are not saved in render_tile's frame, under the tile
 // function (the deepest stack). On x86-64, render_tile's code then does not change with the
 // fill's. Inlined otherwise (Cortex-M4 bilinear at -O2: a call per tile costs more than it saves).
-#if TS_SIZE
-inline constexpr bool fill_apart = true;
-#else
-inline constexpr bool fill_apart = (config::methods & 2) != 0 || TS_USE_SSE2;
-#endif
+inline constexpr bool fill_apart = TS_SIZE || (config::methods & 2) != 0 || TS_USE_SSE2;
 template <PixelFormat F>
 TS_NOINLINE void fill_background_apart(uint8_t* base, int32_t stride, const Rect& rect,
                                                      const RenderParams& p, bool grey) {

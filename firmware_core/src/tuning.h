@@ -89,3 +89,36 @@
 #else
 #define TS_BAND_ADVANCE
 #endif
+
+namespace tristream::core::detail::tuning {
+
+// Whether a clamp to [0, 255] is one instruction (USAT: __ARM_FEATURE_SAT, Cortex-M3 and later).
+// Where it is, clamps are written as clamps; elsewhere as a rare branch, and three channels in
+// range are found by one test of their bitwise or (x86-64: fewer instructions a pixel than
+// conditional moves).
+#if defined(__ARM_FEATURE_SAT)
+constexpr bool saturates = true;
+#else
+constexpr bool saturates = false;
+#endif
+
+// ZienkiewiczShader's forward differencing: with SSE2 set up within span, on the first long row
+// (a separate call costs x86-64 more than it saves); elsewhere by first_long_row, a tail call from
+// span, so that span's frame is gone before the set-up's (the deepest stack on Cortex-M).
+constexpr bool zienkiewicz_set_up_in_span = TS_USE_SSE2;
+
+// ZienkiewiczShader's writer: the caller's (draw_with's argument, alive for the shader's life) by
+// reference where stack is scarce (not copied into the frame that holds the shader, the deepest of
+// the render on Cortex-M4); a copy with SSE2, where stack is plentiful.
+template <bool ByValue, typename Writer>
+struct WriterHold {
+  using type = const Writer&;
+};
+template <typename Writer>
+struct WriterHold<true, Writer> {
+  using type = Writer;
+};
+template <typename Writer>
+using ZienkiewiczWriter = typename WriterHold<TS_USE_SSE2, Writer>::type;
+
+}  // namespace tristream::core::detail::tuning

@@ -21,23 +21,10 @@
 namespace tristream::core::detail {
 namespace {
 
-// The blob's little-endian int32 at p: on Cortex-M always inlined (optimized for size load_i32
-// is a call there, per gradient read); elsewhere load_i32 (one unaligned load on x86-64, where the
-// bytes' expression is not merged into one).
-TS_INLINE inline int32_t read_i32(const uint8_t* p) {
-#if TS_USE_INT128
-  return load_i32(p);
-#else
-  return int32_t(uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24));
-#endif
-}
-
-#if TS_SIZE
 // Optimized for size, RGB565 without dithering is packed as with it, by pack565_dithered's fields
 // with these offsets: those of pack565_nearest (the same values: t <= 16313 there too), no tables.
 constexpr uint32_t nearest_offsets[4] = {127 * dither_scale, 127 * dither_scale, 127 * dither_scale,
                                          127 * dither_scale};
-#endif
 
 // A channel's q8_8 value of vertex k (at offset 2 c from the vertex's first) and its q19_12
 // gradient component j (gx, gy of vertex j / 2; offset 8 c), read in place for
@@ -51,7 +38,7 @@ struct VertexGradients {
   const uint8_t* const* vertex;
   int offset;
   TS_INLINE int32_t operator[](int j) const {
-    return read_i32(vertex[j >> 1] + offset + 4 * (j & 1));
+    return load_i32(vertex[j >> 1] + offset + 4 * (j & 1));
   }
 };
 
@@ -208,24 +195,16 @@ struct ZienkiewiczTriangle {
 template <int Channels, typename Writer>
 struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   using Lanes = backend::ZienkiewiczLanes<Channels, Writer>;
-#if TS_USE_SSE2
-  Writer writer;
-#else
-  // The caller's writer (draw_with's argument, alive for the shader's life): not copied into the
-  // frame that holds the shader, the deepest of the render on Cortex-M4.
-  const Writer& writer;
-#endif
+  tuning::ZienkiewiczWriter<Writer> writer;
   int bpp;
   using ZienkiewiczTriangle<Channels>::ch;
   using ZienkiewiczTriangle<Channels>::steps;
   using ZienkiewiczTriangle<Channels>::fd_state;
   using ZienkiewiczTriangle<Channels>::narrow;
 
-#if TS_USE_SSE2
   // Forward differencing set up on the first row that uses it; false for a small triangle or one
   // outside the budget (then every row is evaluated per pixel).
   TS_NOINLINE bool rows_ready_slow() { return this->set_up_rows(); }
-#else
   // The first row of at least zienkiewicz_fd_min_length pixels in the tile (without SSE2):
   // forward differencing set up, then the row drawn by it (a tail call) or, out of its budget
   // (fd_state now -1), by span per pixel (span reads xe only for the row's length: xs for it).
@@ -239,21 +218,18 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       span(y, xs, xs, x0, x1);  // per pixel (rare)
     }
   }
-#endif
   // Row y of the triangle covers [xs, xe]; pixels x0..x1 of it are in the tile. Rows of at least
   // zienkiewicz_fd_min_length pixels (of large enough triangles) are forward-differenced, others
   // evaluated per pixel: the choice depends on the whole row, not on the tile. Out of line (both
   // loops): their code generation then does not depend on the rest of the tile function (inlined,
   // unrelated changes there swing its speed).
   TS_NOINLINE void span(int32_t y, int32_t xs, int32_t xe, int32_t x0, int32_t x1) {
-#if TS_USE_SSE2
-    // The set-up called from here (a first_long_row as on Cortex-M costs x86-64 more than it saves).
-    if (xe - xs + 1 >= zienkiewicz_fd_min_length && (fd_state == 0 ? rows_ready_slow() : fd_state > 0)) {
-      forward_differenced_row(y, xs, x0, x1);
-      return;
-    }
-#else
-    if (xe - xs + 1 >= zienkiewicz_fd_min_length && fd_state >= 0) {
+    if constexpr (tuning::zienkiewicz_set_up_in_span) {
+      if (xe - xs + 1 >= zienkiewicz_fd_min_length && (fd_state == 0 ? rows_ready_slow() : fd_state > 0)) {
+        forward_differenced_row(y, xs, x0, x1);
+        return;
+      }
+    } else if (xe - xs + 1 >= zienkiewicz_fd_min_length && fd_state >= 0) {
       // Tail calls: this frame is gone before the forward differencing's and the set-up's.
       if (fd_state > 0) {
         forward_differenced_row(y, xs, x0, x1);
@@ -262,7 +238,6 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       }
       return;
     }
-#endif
     uint32_t a, b;
     // The weights at x0 directly: the same sums modulo 2^32 as at xs plus (x0 - xs) steps.
     steps.at(x0, y, &a, &b);
@@ -285,24 +260,21 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
       // Optimized for size one loop, by the offsets (without dithering those of pack565_nearest,
       // as forward_differenced): no tables.
       constexpr PixelFormat F = DirectRgb565<Writer>::format;
-#if TS_SIZE
-      const uint32_t* const offset = writer.dither ? dither_span_offsets(y, x0, p) : nearest_offsets;
-#else
-      const uint32_t* const offset = writer.dither ? dither_span_offsets(y, x0, p) : nullptr;
-#endif
+      const uint32_t* const offset =
+          writer.dither ? dither_span_offsets(y, x0, p) : (TS_SIZE ? nearest_offsets : nullptr);
       if (offset) {
         const uint32_t k31 = in_register(dither_k31), k63 = in_register(dither_k63);
         rgb565_pixels(p, x1 - x0 + 1, a, b, [&](uint8_t* q, uint32_t r, uint32_t g, uint32_t bl) {
           store565_bytes(q, rgb565_bytes<F>(pack565_dithered(r, g, bl, offset[dither_index(q)], k31, k63)));
         });
       } else {
-#if !TS_SIZE
-        const uint16_t* table = rgb565_table<F>.v;
-        __asm__("" : "+r"(table));  // the table's address in a register (see put_span_in_range)
-        rgb565_pixels(p, x1 - x0 + 1, a, b, [&](uint8_t* q, uint32_t r, uint32_t g, uint32_t bl) {
-          store565_bytes(q, pack565_bytes_by_table_biased<F>(r, g + 256, bl, table));
-        });
-#endif
+        if constexpr (!TS_SIZE) {
+          const uint16_t* table = rgb565_table<F>.v;
+          __asm__("" : "+r"(table));  // the table's address in a register (see put_span_in_range)
+          rgb565_pixels(p, x1 - x0 + 1, a, b, [&](uint8_t* q, uint32_t r, uint32_t g, uint32_t bl) {
+            store565_bytes(q, pack565_bytes_by_table_biased<F>(r, g + 256, bl, table));
+          });
+        }
       }
       return;
     }
@@ -359,25 +331,24 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   using NarrowValue = ZienkiewiczChannel::NarrowValue;
   TS_INLINE static uint32_t rounded(NarrowValue biased) {
     NarrowValue v = biased >> q24_8::frac_bits;
-#if defined(__ARM_FEATURE_SAT)
-    return uint32_t(v < 0 ? 0 : (v > 255 ? 255 : v));  // one USAT
-#else
-    // Rare: a branch (x86-64: 3 instructions a channel less than conditional moves).
-    if (uint64_t(int64_t(v)) > 255) v = v < 0 ? 0 : 255;
-    return uint32_t(v);
-#endif
+    if constexpr (tuning::saturates) {
+      return uint32_t(v < 0 ? 0 : (v > 255 ? 255 : v));  // one USAT
+    } else {
+      if (uint64_t(int64_t(v)) > 255) v = v < 0 ? 0 : 255;  // rare: a branch
+      return uint32_t(v);
+    }
   }
-  // Three channels rounded: out(rounded(v0), rounded(v1), rounded(v2)); without USAT one test for
-  // the three (all in range when their bitwise or is below 2^16: x86-64 5 instructions a pixel less).
+  // Three channels rounded: out(rounded(v0), rounded(v1), rounded(v2)); without a saturating
+  // instruction one test for the three (all in range when their bitwise or is below 2^16).
   template <typename Out>
   TS_INLINE static void rounded3(NarrowValue v0, NarrowValue v1, NarrowValue v2, const Out& out) {
-#if !defined(__ARM_FEATURE_SAT)
-    constexpr int f = q24_8::frac_bits;
-    if (uint64_t(v0 | v1 | v2) < (uint64_t(256) << f)) {
-      out(uint32_t(v0) >> f, uint32_t(v1) >> f, uint32_t(v2) >> f);
-      return;
+    if constexpr (!tuning::saturates) {
+      constexpr int f = q24_8::frac_bits;
+      if (uint64_t(v0 | v1 | v2) < (uint64_t(256) << f)) {
+        out(uint32_t(v0) >> f, uint32_t(v1) >> f, uint32_t(v2) >> f);
+        return;
+      }
     }
-#endif
     out(rounded(v0), rounded(v1), rounded(v2));
   }
   // per_pixel's RGB565 loop by eval_narrow: `count` pixels from p (2 bytes each) from the
@@ -397,20 +368,14 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   // loops themselves (tail calls, no forward_differenced call between; optimized for size one
   // loop, by the offsets), else forward_differenced.
   TS_INLINE void forward_differenced_row(int32_t y, int32_t xs, int32_t x0, int32_t x1) {
-#if !TS_USE_SSE2
-    if constexpr (DirectRgb565<Writer>::value) {
-#if TS_SIZE
-      rgb565_rows<true>(y, xs, x0, x1);
-#else
-      if (writer.dither) {
+    if constexpr (DirectRgb565<Writer>::value && !Lanes::active) {
+      if (TS_SIZE || writer.dither) {
         rgb565_rows<true>(y, xs, x0, x1);
       } else {
         rgb565_rows<false>(y, xs, x0, x1);
       }
-#endif
       return;
     }
-#endif
     forward_differenced(y, xs, x0, x1);
   }
   // Pixels x0..x1 of row y by forward differencing from the weights at xs.
@@ -474,11 +439,7 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
     uint8_t* const p = writer.at(x0, y);
     [[maybe_unused]] const uint32_t* offset = nullptr;
     if constexpr (ByOffsets) {
-#if TS_SIZE
-      offset = writer.dither ? dither_span_offsets(y, x0, p) : nearest_offsets;
-#else
-      offset = dither_span_offsets(y, x0, p);
-#endif
+      offset = TS_SIZE && !writer.dither ? nearest_offsets : dither_span_offsets(y, x0, p);
     }
     zienkiewicz_row_chunks<3>(
         ch, a, b, steps.dadx, steps.dbdx, x0 - xs, x1 - xs, uint32_t(1) << (vf - 1),

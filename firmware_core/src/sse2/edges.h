@@ -26,8 +26,10 @@ inline __m128i inclusive_edge_lanes(__m128i dx, __m128i dy, __m128i boundary) {
 class RowSpans {
  public:
   TS_INLINE void init(const Edge* edges, const int32_t* /*ys*/, int32_t y0) {
-    bounds_.init(edges, y0);
-    const FloorStepper* b = bounds_.bound;
+    SpanStepper bounds;
+    bounds.init(edges, y0);
+    const FloorStepper* b = bounds.bound;
+    left_mask_ = -int32_t(bounds.third_left);
     q_ = _mm_setr_epi32(b[0].q, b[1].q, b[2].q, 0);
     r_ = _mm_setr_epi32(b[0].r, b[1].r, b[2].r, 0);
     den_ = _mm_setr_epi32(b[0].den, b[1].den, b[2].den, 1);
@@ -38,7 +40,11 @@ class RowSpans {
   TS_INLINE void span(int32_t, int32_t* x0, int32_t* x1) const {
     const int32_t q0 = _mm_cvtsi128_si32(q_), q1 = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 1));
     const int32_t v = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 2));
-    SpanStepper::columns(q0, q1, v, bounds_.third_left, x0, x1);
+    // SpanStepper::columns with the third bound's side as a mask, set once a triangle.
+    const int32_t third_lo = (-v & left_mask_) | (INT32_MIN & ~left_mask_);
+    const int32_t third_hi = (INT32_MAX & left_mask_) | (v & ~left_mask_);
+    *x0 = max2(-q0, third_lo);
+    *x1 = min2(q1, third_hi);
   }
   TS_INLINE void next_row() {
     // r < 2 den < 2^31, so the signed compare r > den - 1 is r >= den; a wrap is -1 in its lane.
@@ -49,8 +55,8 @@ class RowSpans {
   }
 
  private:
-  SpanStepper bounds_;  // sets the lanes up; its third_left is read per row
   __m128i q_, r_, den_, q_step_, r_step_;
+  int32_t left_mask_;  // all ones when the third bound is a left one (SpanStepper::third_left)
 };
 
 }  // namespace tristream::core::detail::sse2
