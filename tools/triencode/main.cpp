@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -77,6 +78,25 @@ CLI::Validator finite_in(double lo, bool inclusive, double hi, const std::string
         }
         const bool ok = used == text.size() && std::isfinite(v) && (inclusive ? v >= lo : v > lo) && v <= hi;
         return ok ? std::string() : "expected " + expected + ", found '" + text + "'";
+      },
+      expected);
+}
+
+// A transform that takes a decimal integer in lo..hi, judged on the text as typed, and hands it
+// on without leading zeros: CLI11 reads integers with strtoll in base 0, which clamps a number past
+// 2^63 to 2^63 - 1 and reads "010" as octal 8. The message echoes the text and states `expected`.
+CLI::Validator decimal_in(long long lo, long long hi, const std::string& expected) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        const char* first = text.data() + (text.size() > 1 && text[0] == '+');
+        long long v = 0;
+        const auto [end, error] = std::from_chars(first, text.data() + text.size(), v);
+        if (error == std::errc::invalid_argument || end != text.data() + text.size())
+          return "expected " + expected + ", found '" + text + "' (not a decimal integer)";
+        if (error == std::errc::result_out_of_range || v < lo || v > hi)
+          return "expected " + expected + ", found '" + text + "' (out of range)";
+        text = std::to_string(v);
+        return std::string();
       },
       expected);
 }
@@ -176,7 +196,11 @@ void add_options(CLI::App& app, Command& c) {
   app.add_option("image", c.input, "Input image")->required();
   app.add_option("-o,--output", c.output, "Output triangulation file (.tri)")->required();
   app.add_option("-n,--vertices", c.vertices,
-                 "Vertices per triangulation, corners included (with --color separate: per channel)");
+                 "Vertices per triangulation, corners included (with --color separate: per channel)")
+      ->transform(decimal_in(4, std::int64_t(limits::max_encode_pixels),
+                             "at least 4 vertices (the corners) and at most " +
+                                 std::to_string(limits::max_encode_pixels) +
+                                 " (the pixels of the largest image encoded)"));
   app.add_option("-e,--error", c.max_rms,
                  "Stop when the RMS error of the linear interpolant (0-255 scale, encoding space) "
                  "is at most this")
