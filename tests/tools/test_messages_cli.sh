@@ -61,4 +61,12 @@ check "the clamped value is not echoed" bash -c "! grep -q 9223372036854775807 '
 expect 64 "found '0x10' (not a decimal integer)" "$bin/triencode" "$png" -n 0x10 -o "$tmp/x.tri"
 expect 0 "" "$bin/triencode" "$png" -n 010 -q -o "$tmp/x.tri"
 check "-n 010 encodes 10 vertices" grep -qx "vertices 10" "$tmp/x.tri"
+# The same for the other numbers whose CLI11 check misread or misprinted them: --max-bytes (an
+# integer of 64 bits, read as octal with a leading zero) and --max-mse (printed DBL_MAX in full).
+expect 64 "--max-bytes 10: expected at least" "$bin/triencode" "$png" --max-bytes 010 -o "$tmp/x.tri"
+expect 64 "--max-bytes: expected a number of bytes from 1 to 1099511627776, found '99999999999999999999' (out of range)" \
+  "$bin/triencode" "$png" --max-bytes 99999999999999999999 -o "$tmp/x.tri"
+expect 64 "--max-mse: expected a finite number of at least 0, found '1e999'" \
+  "$bin/trisim" metrics "$tmp/five.png" "$tmp/other.png" --max-mse 1e999
+check "the --max-mse message does not print DBL_MAX in full" bash -c "! grep -q 17976931348623157 '$tmp/err'"
 finish

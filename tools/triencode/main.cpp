@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "common/cli_validators.h"
 #include "common/errors.h"
 #include "common/json_name.h"
 #include "common/name_list.h"
@@ -62,43 +63,6 @@ void check_encodable(const std::string& path, const Image& image) {
   if (std::uint64_t(image.width) * std::uint64_t(image.height) > limits::max_encode_pixels)
     throw DataError(path + ": expected an image of at most " + std::to_string(limits::max_encode_pixels) +
                     " pixels (the limit for encoding), found " + found);
-}
-
-// A validator of a finite number above `lo` (or at least `lo` when `inclusive`) and at most
-// `hi`; NaN and infinities are refused. The message states `expected` (not the bounds in full).
-CLI::Validator finite_in(double lo, bool inclusive, double hi, const std::string& expected) {
-  return CLI::Validator(
-      [=](std::string& text) -> std::string {
-        double v = 0;
-        std::size_t used = 0;
-        try {
-          v = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        const bool ok = used == text.size() && std::isfinite(v) && (inclusive ? v >= lo : v > lo) && v <= hi;
-        return ok ? std::string() : "expected " + expected + ", found '" + text + "'";
-      },
-      expected);
-}
-
-// A transform that takes a decimal integer in lo..hi, judged on the text as typed, and hands it
-// on without leading zeros: CLI11 reads integers with strtoll in base 0, which clamps a number past
-// 2^63 to 2^63 - 1 and reads "010" as octal 8. The message echoes the text and states `expected`.
-CLI::Validator decimal_in(long long lo, long long hi, const std::string& expected) {
-  return CLI::Validator(
-      [=](std::string& text) -> std::string {
-        const char* first = text.data() + (text.size() > 1 && text[0] == '+');
-        long long v = 0;
-        const auto [end, error] = std::from_chars(first, text.data() + text.size(), v);
-        if (error == std::errc::invalid_argument || end != text.data() + text.size())
-          return "expected " + expected + ", found '" + text + "' (not a decimal integer)";
-        if (error == std::errc::result_out_of_range || v < lo || v > hi)
-          return "expected " + expected + ", found '" + text + "' (out of range)";
-        text = std::to_string(v);
-        return std::string();
-      },
-      expected);
 }
 
 // Options that would be ignored, or that contradict each other, are usage errors (`grey`: the
@@ -250,7 +214,7 @@ void add_options(CLI::App& app, Command& c) {
   app.add_option("--max-bytes", c.max_bytes,
                  "Choose the vertex count: the most found whose blob (--blob, as tripack -m METHOD writes it) is at "
                  "most this many bytes, and at least 0.85 times as many; prints the bytes and the PSNR reached")
-      ->check(CLI::Range(1LL, 1LL << 40));
+      ->transform(decimal_in(1, 1LL << 40, "a number of bytes from 1 to " + std::to_string(1LL << 40)));
   app.add_option("-m,--method", c.method,
                  "With --max-bytes: the interpolation method the blob is packed for (tripack -m; zienkiewicz adds "
                  "gradients, about 3.6 times the compressed bytes of bilinear) and the PSNR is of")

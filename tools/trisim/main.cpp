@@ -9,11 +9,13 @@
 #include <cstdio>
 #include <ctime>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "common/cli_validators.h"
 #include "common/errors.h"
 #include "common/tool_main.h"
 #include "core_bridge/pack.h"
@@ -217,7 +219,8 @@ CLI::App* add_metrics_command(CLI::App& app, MetricsCommand& c) {
       ->check(CLI::IsMember({"gaussian", "8x8"}))
       ->capture_default_str();
   cmd->add_flag("--json", c.json, "Print one JSON object");
-  cmd->add_option("--max-mse", c.max_mse, "Exit 1 unless the MSE is at most this")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-mse", c.max_mse, "Exit 1 unless the MSE is at most this")
+      ->check(finite_in(0, true, std::numeric_limits<double>::max(), "a finite number of at least 0"));
   cmd->add_option("--min-psnr", c.min_psnr, "Exit 1 unless the PSNR (dB; identical images: infinite) is at least this");
   return cmd;
 }
