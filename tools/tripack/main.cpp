@@ -199,7 +199,9 @@ int main(int argc, char** argv) {
                "-o x.bin writes the blob; -o x.c writes x.c (the bytes and a ts_blob_descriptor) and x.h, which\n"
                "refuses to compile against a core without the blob's method or the format, and defines\n"
                "<SYMBOL>_BYTES (the blob's size), <SYMBOL>_TILE_BUFFER_MAX_BYTES and <SYMBOL>_WORKSPACE_MAX_BYTES:\n"
-               "enough for any output up to --width x --height, any viewport of it and any tile up to the tile size."};
+               "enough for any output up to --width x --height, any viewport of it and any tile up to the tile size.\n"
+               "The two are written as one unit (both, or neither changed) and x.c refuses to compile beside an x.h\n"
+               "that was not written with it (<SYMBOL>_PAIR_HASH)."};
   Request req;
   add_options(app, req);
   return run_tool("tripack", app, argc, argv, [&] { return pack(req); });
