@@ -59,6 +59,21 @@ struct CBlobSpec {
 std::string blob_c_source(const std::vector<std::uint8_t>& bytes, const core::Blob& blob, const CBlobSpec& spec);
 std::string blob_c_header(const core::Blob& blob, const CBlobSpec& spec);
 
+// A header and its source, as tripack writes them (io/atomic_pair.h: both or neither).
+struct CPair {
+  std::string header, source;
+};
+// Ties a pair together: the header gets <SYMBOL>_PAIR_HASH, the CRC-32 of both texts as generated
+// (the blob's bytes, the descriptor, the bounds: anything that differs between two runs), and the
+// source includes the header by `header_name` (the file beside it) and stops with an #error unless
+// that hash is its own. A header left from another blob or other options therefore fails the
+// source's compilation instead of sizing buffers for something else. A `header_name` that cannot
+// be spelled in an #include (is_includable_name) gets no include and no check: a comment says so.
+void tie_c_pair(CPair& pair, const std::string& symbol, const std::string& header_name);
+// Printable ASCII without what an #include "..." leaves undefined or changes: a double quote, a
+// backslash, an apostrophe, "//", "/*" and "??" (trigraphs in C89).
+bool is_includable_name(std::string_view name);
+
 // Pieces both C forms (v1 and compressed) share.
 // The compile-time refusals: a core of another precision, without the blob's method, colour space
 // or layering, or without the descriptor's format.

@@ -2,6 +2,7 @@
 #include "core_bridge/pack.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -53,6 +54,24 @@ struct LayerData {
 
 LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const std::vector<std::int32_t>* gradients,
                        const std::string& where);
+
+// Triangle t collapses on the core's grid: named by the lines of its vertices when the mesh was
+// read from a file (the only way to find a triangle the reader computed), else by its index.
+std::string collapse_message(const Mesh& mesh, std::size_t t, const std::string& where) {
+  const std::string rounded =
+      " collapses when its vertices are rounded to 1/" + std::to_string(1 << S) + " pixel (the core's grid)";
+  if (mesh.vertex_lines.size() != mesh.vertex_count()) return where + ": triangle " + std::to_string(t) + rounded;
+  std::array<std::uint32_t, 3> lines{};
+  for (int k = 0; k < 3; ++k) lines[k] = mesh.vertex_lines[mesh.triangles[t].v[k]];
+  std::sort(lines.begin(), lines.end());
+  const std::string vertices = "vertices on lines " + std::to_string(lines[0]) + ", " + std::to_string(lines[1]) +
+                               " and " + std::to_string(lines[2]);
+  if (mesh.triangulated_by_reader)
+    return where + ": a triangle of the Delaunay triangulation the reader computed (the file lists no triangles), " +
+           vertices + "," + rounded + ": move those vertices apart";
+  return where + ": triangle " + std::to_string(t) + " of the triangles section (counting from 0), " + vertices + "," +
+         rounded + ": move those vertices apart";
+}
 
 LayerData build_layer(const Mesh& input, int width, int height, core::Method method,
                       const std::vector<std::int32_t>* gradients, const std::string& where) {
@@ -122,8 +141,7 @@ LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const
     const auto& v = mesh.triangles[t].v;
     const QPoint p[3] = {d.pos[v[0]], d.pos[v[1]], d.pos[v[2]]};
     if ((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x) <= 0)
-      throw DataError(where + ": triangle " + std::to_string(t) + " collapses when its vertices are rounded to 1/" +
-                      std::to_string(1 << S) + " pixel");
+      throw DataError(collapse_message(mesh, t, where));
     for (int e = 0; e < 3; ++e)
       if (topo.is_boundary_edge(std::uint32_t(t), e)) {
         flags[t] |= std::uint16_t(core::boundary_edge0 << e);

@@ -8,6 +8,7 @@
 #include "common/errors.h"
 #include "core_bridge/blob_error.h"
 #include "core_bridge/pack.h"
+#include "frame_plan.h"
 
 namespace tristream {
 
@@ -30,6 +31,27 @@ void collect(void* context, const core::Tile* tile) {
     std::memcpy(dst, src, row);
   }
   ++f.tiles;
+}
+
+// The core refuses, with bad_params alone, a fill whose picture reaches beyond its coordinate
+// budget (src/frame_plan.h, docs/FIXED_POINT.md): drawing positions below TS_MAX_DIMENSION pixels.
+// The same arithmetic here names the limit and the option.
+void check_coordinate_budget(const core::BlobInfo& blob, const core::RenderParams& p) {
+  namespace d = core::detail;
+  constexpr int max = core::config::max_dimension, S = core::config::subpixel_bits;
+  const int w = p.output_width ? p.output_width : blob.width, h = p.output_height ? p.output_height : blob.height;
+  if (p.fit != core::Fit::fill || w < 2 || h < 2 || w > max || h > max || blob.width < 2 || blob.height < 2) return;
+  const d::FitLayout f = d::fit_layout(blob.width, blob.height, w, h, p.fit);
+  const d::Mapping map = d::drawing_mapping(f, d::crop_shift(f.ox), d::crop_shift(f.oy));
+  constexpr std::int32_t budget = (max << S) - 1;
+  if (map.x((blob.width - 1) << S) <= budget && map.y((blob.height - 1) << S) <= budget) return;
+  const std::uint32_t pw = (blob.width - 1) * f.nx / f.dx + 1, ph = (blob.height - 1) * f.ny / f.dy + 1;
+  throw UsageError("--fit fill: the " + std::to_string(blob.width) + " x " + std::to_string(blob.height) +
+                   " picture filling " + std::to_string(w) + " x " + std::to_string(h) + " would be drawn " +
+                   std::to_string(pw) + " x " + std::to_string(ph) +
+                   " pixels, beyond the core's coordinate budget of " + std::to_string(max) +
+                   " pixels a side (TS_MAX_DIMENSION, docs/FIXED_POINT.md); use --fit inside "
+                   "or stretch, or a --width and --height closer to the picture's proportions");
 }
 
 }  // namespace
@@ -58,6 +80,7 @@ CoreRenderer::CoreRenderer(std::span<const std::uint8_t> blob, const CoreOptions
   params_.format = o.format;
   params_.dither = o.dither;
   for (int c = 0; c < 3; ++c) params_.background[c] = o.background.rgb[c];
+  check_coordinate_budget(blob_, params_);
   std::size_t tile_bytes = 0, work_bytes = 0;
   core::Status st = core::tile_buffer_size(blob_, params_, &tile_bytes);
   if (st == core::Status::ok && !compressed_) st = core::workspace_size(blob_, params_, &work_bytes);

@@ -62,15 +62,9 @@ void install_handlers() {
   }
 }
 
-// The temporary's name beside the target: the target's name, cut so that the suffix
-// ".tmp.XXXXXX" keeps it within NAME_MAX (a valid target name of up to NAME_MAX bytes can be
-// written), and never cut inside a UTF-8 sequence.
-std::string temporary_name(const std::string& target_name) {
-  constexpr std::size_t suffix = sizeof ".tmp.XXXXXX" - 1;
-  std::size_t keep = std::min(target_name.size(), std::size_t(NAME_MAX) - suffix);
-  while (keep > 0 && keep < target_name.size() && (static_cast<unsigned char>(target_name[keep]) & 0xC0) == 0x80) --keep;
-  return target_name.substr(0, keep) + ".tmp.XXXXXX";
-}
+// The temporary's name beside the target: the suffix ".tmp.XXXXXX" after the target's name, cut
+// to keep it within NAME_MAX (a valid target name of up to NAME_MAX bytes can be written).
+std::string temporary_name(const std::string& target_name) { return name_with_suffix(target_name, ".tmp.XXXXXX"); }
 
 int claim_slot(const std::string& tmp) {
   if (tmp.size() >= PATH_MAX) return -1;
@@ -99,6 +93,12 @@ bool write_all(int fd, std::string_view bytes, int& error) {
 }
 
 }  // namespace
+
+std::string name_with_suffix(const std::string& name, std::string_view suffix) {
+  std::size_t keep = std::min(name.size(), std::size_t(NAME_MAX) - std::min(suffix.size(), std::size_t(NAME_MAX)));
+  while (keep > 0 && keep < name.size() && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) --keep;
+  return name.substr(0, keep) + std::string(suffix);
+}
 
 AtomicFile::AtomicFile(const std::string& path) : path_(path), target_(path) {
   namespace fs = std::filesystem;

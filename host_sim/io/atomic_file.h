@@ -33,6 +33,10 @@ class AtomicFile {
 
   // The temporary file's name ("" when writing through to a non-regular destination).
   const std::string& temporary_path() const { return tmp_; }
+  // The file commit() replaces: the path given, or the target of a link there.
+  const std::string& target_path() const { return target_; }
+  // Whether the destination is a device or a FIFO, written directly (commit() renames nothing).
+  bool written_through() const { return through_; }
 
  private:
   [[noreturn]] void fail(const std::string& what, int error);  // discards, then throws OutputError
@@ -46,6 +50,10 @@ class AtomicFile {
   bool through_ = false;  // a non-regular destination, written directly
   bool committed_ = false;
 };
+
+// A file name followed by `suffix`, the name cut so that the whole stays within NAME_MAX bytes
+// (never inside a UTF-8 sequence): the names of the files written beside a target.
+std::string name_with_suffix(const std::string& name, std::string_view suffix);
 
 // AtomicFile(path), write(bytes), commit().
 void write_file_atomically(const std::string& path, std::string_view bytes);

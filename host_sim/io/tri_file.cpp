@@ -155,7 +155,7 @@ std::vector<std::string_view> layer_names(ColorSpace space) {
 // Rejects triangles whose interiors overlap and meshes that are not edge to edge
 // (geometry/mesh_check.h), naming the lines of the triangles and the vertex.
 void check_mesh(const Mesh& mesh, const std::vector<LineNumber>& triangle_lines,
-                const std::vector<LineNumber>& vertex_lines, const Parser& parser) {
+                const std::vector<std::uint32_t>& vertex_lines, const Parser& parser) {
   const auto defect = find_mesh_defect(mesh.points, mesh.triangles);
   if (!defect) return;
   if (defect->kind == MeshDefect::Kind::overlap) {
@@ -180,7 +180,7 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
   mesh.points.reserve(std::size_t(std::min(n, 1L << 20)));
   mesh.values.reserve(std::size_t(std::min(n, 1L << 20)) * value_count);
 
-  std::vector<LineNumber> vertex_lines;
+  std::vector<std::uint32_t>& vertex_lines = mesh.vertex_lines;  // a file of at most 1 GiB has fewer lines
   // Duplicate detection: position -> vertex. Exact bit patterns (-0 is folded into +0 on reading).
   struct PointHash {
     std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& k) const {
@@ -206,7 +206,7 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
       parser.fail(line.number, "distinct vertex positions",
                   "a duplicate of the vertex on line " + std::to_string(vertex_lines[same->second]));
     mesh.points.push_back(p);
-    vertex_lines.push_back(line.number);
+    vertex_lines.push_back(std::uint32_t(line.number));
     for (int c = 0; c < value_count; ++c)
       mesh.values.push_back(parser.number(tokens[2 + c], line.number, "a value", 0, 255));
   }
@@ -224,6 +224,7 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
     if (mesh.triangles.empty())
       parser.fail(triangles_line ? triangles_line : vertex_lines.back(),
                   "vertices that are not all collinear (for the Delaunay triangulation)", "collinear vertices");
+    mesh.triangulated_by_reader = true;
     return mesh;
   }
 

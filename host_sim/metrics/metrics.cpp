@@ -142,6 +142,8 @@ double psnr(const Image& a, const Image& b) { return psnr_from_mse(mse(a, b)); }
 
 bool is_identical_psnr(double psnr) { return std::isinf(psnr) && psnr > 0; }
 
+int ssim_window_side(const SsimOptions& options) { return options.window == SsimWindow::uniform8 ? 8 : 11; }
+
 double ssim(const Image& a, const Image& b, const SsimOptions& options) {
   switch (options.window) {
     case SsimWindow::uniform8: return ssim_uniform(a, b, 8, options);

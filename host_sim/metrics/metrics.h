@@ -54,6 +54,10 @@ struct SsimOptions {
 // Throws DataError when the sizes differ or the image is smaller than the window.
 double ssim(const Image& a, const Image& b, const SsimOptions& options = {});
 
+// The side of the window of `options` (11, or 8 for uniform8): SSIM needs images at least that
+// wide and high. Tools check it first, to name their files.
+int ssim_window_side(const SsimOptions& options);
+
 // SSIM with a uniform (box) window of any size k >= 1 (uniform8 is k = 8).
 double ssim_uniform(const Image& a, const Image& b, int k, const SsimOptions& options = {});
 

@@ -35,6 +35,11 @@ struct Mesh {
   std::vector<Point> points;
   std::vector<double> values;  // points.size() * value_count, each in [0, 255]
   std::vector<Triangle> triangles;
+  // Where the mesh was read from, for messages: each vertex's line in its .tri file (empty for a
+  // mesh made otherwise, e.g. by the encoder), and whether the reader computed the triangles (a
+  // file without them), so that triangle numbers are in no file.
+  std::vector<std::uint32_t> vertex_lines;
+  bool triangulated_by_reader = false;
 
   std::size_t vertex_count() const { return points.size(); }
   double value(std::size_t vertex, int c) const { return values[vertex * value_count + c]; }

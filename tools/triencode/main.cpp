@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "common/cli_validators.h"
 #include "common/errors.h"
 #include "common/json_name.h"
 #include "common/name_list.h"
@@ -49,24 +51,6 @@ class ProgressBar {
  private:
   int last_ = -1;
 };
-
-// A validator of a finite number above `lo` (or at least `lo` when `inclusive`) and at most
-// `hi`; NaN and infinities are refused. The message states `expected` (not the bounds in full).
-CLI::Validator finite_in(double lo, bool inclusive, double hi, const std::string& expected) {
-  return CLI::Validator(
-      [=](std::string& text) -> std::string {
-        double v = 0;
-        std::size_t used = 0;
-        try {
-          v = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        const bool ok = used == text.size() && std::isfinite(v) && (inclusive ? v >= lo : v > lo) && v <= hi;
-        return ok ? std::string() : "expected " + expected + ", found '" + text + "'";
-      },
-      expected);
-}
 
 // Options that would be ignored, or that contradict each other, are usage errors (`grey`: the
 // encoding is grey).
@@ -132,7 +116,11 @@ void add_options(CLI::App& app, Command& c) {
   app.add_option("image", c.input, "Input image")->required();
   app.add_option("-o,--output", c.output, "Output triangulation file (.tri)")->required();
   app.add_option("-n,--vertices", c.vertices,
-                 "Vertices per triangulation, corners included (with --color separate: per channel)");
+                 "Vertices per triangulation, corners included (with --color separate: per channel)")
+      ->transform(decimal_in(4, std::int64_t(limits::max_encode_pixels),
+                             "at least 4 vertices (the corners) and at most " +
+                                 std::to_string(limits::max_encode_pixels) +
+                                 " (the pixels of the largest image encoded)"));
   app.add_option("-e,--error", c.max_rms,
                  "Stop when the RMS error of the linear interpolant (0-255 scale, encoding space) "
                  "is at most this")
@@ -182,7 +170,7 @@ void add_options(CLI::App& app, Command& c) {
   app.add_option("--max-bytes", c.max_bytes,
                  "Choose the vertex count: the most found whose blob (--blob, as tripack -m METHOD writes it) is at "
                  "most this many bytes, and at least 0.85 times as many; prints the bytes and the PSNR reached")
-      ->check(CLI::Range(1LL, 1LL << 40));
+      ->transform(decimal_in(1, 1LL << 40, "a number of bytes from 1 to " + std::to_string(1LL << 40)));
   app.add_option("-m,--method", c.method,
                  "With --max-bytes: the interpolation method the blob is packed for (tripack -m; zienkiewicz adds "
                  "gradients, about 3.6 times the compressed bytes of bilinear) and the PSNR is of")

@@ -17,6 +17,7 @@
 #include "core_bridge/pixel_format_names.h"
 #include "core_bridge/render_core.h"
 #include "io/atomic_file.h"
+#include "io/atomic_pair.h"
 #include "io/tri_file.h"
 #include "report.h"
 
@@ -103,7 +104,8 @@ void write_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes
 }
 
 // Writes -o: the blob (.bin), or the C source and its header (.c), whose descriptor has the figures
-// of a render of the whole output in the tiles asked for. `compressed` and `stream` (its render
+// of a render of the whole output in the tiles asked for; the two as one unit (both or neither),
+// the source refusing to compile beside another header. `compressed` and `stream` (its render
 // from the streams) with --compress only.
 void write_outputs(const Request& req, const CoreOptions& o, const std::vector<std::uint8_t>& blob,
                    const CoreRenderer& sizes, const Compressed* compressed, const CoreRenderer* stream) {
@@ -118,18 +120,20 @@ void write_outputs(const Request& req, const CoreOptions& o, const std::vector<s
   spec.tile_width = o.tile_width;
   spec.tile_height = o.tile_height;
   const std::string header = std::filesystem::path(req.output).replace_extension(".h").string();
+  CPair pair;
   if (compressed) {
     spec.tile_buffer_bytes = stream->tile_buffer_bytes();
     spec.workspace_bytes = stream->workspace_bytes();
-    write_file_atomically(header, compressed_c_header(compressed->opened, sizes.blob(),
-                                                      stream->stream_workspace().decoders, spec));
-    write_file_atomically(req.output, compressed_c_source(compressed->bytes, sizes.blob(), spec));
+    pair.header = compressed_c_header(compressed->opened, sizes.blob(), stream->stream_workspace().decoders, spec);
+    pair.source = compressed_c_source(compressed->bytes, sizes.blob(), spec);
   } else {
     spec.tile_buffer_bytes = sizes.tile_buffer_bytes();
     spec.workspace_bytes = sizes.workspace_bytes();
-    write_file_atomically(header, blob_c_header(sizes.blob(), spec));
-    write_file_atomically(req.output, blob_c_source(blob, sizes.blob(), spec));
+    pair.header = blob_c_header(sizes.blob(), spec);
+    pair.source = blob_c_source(blob, sizes.blob(), spec);
   }
+  tie_c_pair(pair, spec.symbol, std::filesystem::path(header).filename().string());
+  write_pair_atomically(header, pair.header, req.output, pair.source);
 }
 
 PackReport report_of(const Request& req, const CoreOptions& o, const std::vector<std::uint8_t>& blob,
@@ -195,7 +199,9 @@ int main(int argc, char** argv) {
                "-o x.bin writes the blob; -o x.c writes x.c (the bytes and a ts_blob_descriptor) and x.h, which\n"
                "refuses to compile against a core without the blob's method or the format, and defines\n"
                "<SYMBOL>_BYTES (the blob's size), <SYMBOL>_TILE_BUFFER_MAX_BYTES and <SYMBOL>_WORKSPACE_MAX_BYTES:\n"
-               "enough for any output up to --width x --height, any viewport of it and any tile up to the tile size."};
+               "enough for any output up to --width x --height, any viewport of it and any tile up to the tile size.\n"
+               "The two are written as one unit (both, or neither changed) and x.c refuses to compile beside an x.h\n"
+               "that was not written with it (<SYMBOL>_PAIR_HASH)."};
   Request req;
   add_options(app, req);
   return run_tool("tripack", app, argc, argv, [&] { return pack(req); });

@@ -9,11 +9,13 @@
 #include <cstdio>
 #include <ctime>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "common/cli_validators.h"
 #include "common/errors.h"
 #include "common/tool_main.h"
 #include "core_bridge/pack.h"
@@ -133,6 +135,16 @@ SsimOptions ssim_options(const std::string& window) {
   return o;
 }
 
+// SSIM's window must fit the images: checked before measuring, so that the message names `files`.
+void check_ssim_size(int width, int height, const SsimOptions& so, const std::string& files) {
+  const int k = ssim_window_side(so);
+  if (width >= k && height >= k) return;
+  const std::string window = so.window == SsimWindow::uniform8 ? "8x8" : "gaussian";
+  throw DataError(files + ": too small for SSIM: expected images of at least " + std::to_string(k) + " x " +
+                  std::to_string(k) + " pixels (the window of --ssim-window " + window + "), found " +
+                  std::to_string(width) + " x " + std::to_string(height));
+}
+
 struct RenderCommand {
   CliRequest cli;
   std::string output;
@@ -207,7 +219,8 @@ CLI::App* add_metrics_command(CLI::App& app, MetricsCommand& c) {
       ->check(CLI::IsMember({"gaussian", "8x8"}))
       ->capture_default_str();
   cmd->add_flag("--json", c.json, "Print one JSON object");
-  cmd->add_option("--max-mse", c.max_mse, "Exit 1 unless the MSE is at most this")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-mse", c.max_mse, "Exit 1 unless the MSE is at most this")
+      ->check(finite_in(0, true, std::numeric_limits<double>::max(), "a finite number of at least 0"));
   cmd->add_option("--min-psnr", c.min_psnr, "Exit 1 unless the PSNR (dB; identical images: infinite) is at least this");
   return cmd;
 }
@@ -259,6 +272,7 @@ Comparison compare_method(const Input& in, const RenderRequest& req, const Compa
   const Image& image = out.render.image;
   if (!c.original.empty()) {
     if (original.pixels.empty()) original = load_original(c.original, in.tri, image.width, image.height);
+    check_ssim_size(original.width, original.height, so, c.original + " (and the render of its size)");
     out.metrics = compare_images(image, original, so);
     out.has_metrics = true;
   }
@@ -487,6 +501,7 @@ int run_metrics(const MetricsCommand& c) {
     throw DataError(c.b + ": expected an image of " + std::to_string(a2.width) + "x" + std::to_string(a2.height) +
                     " like " + c.a + ", found " + std::to_string(b.width) + "x" + std::to_string(b.height));
   const SsimOptions so = ssim_options(c.window);
+  check_ssim_size(b.width, b.height, so, c.a + " and " + c.b);
   const Metrics m = compare_images(a2, b, so);
   if (c.json) std::printf("%s\n", metrics_json(m, so).dump().c_str());
   else print_metrics(m, so);
