@@ -9,7 +9,7 @@
 set -euo pipefail
 
 declare -A groups=(
-  [build]="cmake make g++ pkg-config catch2 libstb-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev"
+  [build]="cmake make g++ pkg-config catch2 libstb-dev libpng-dev libjpeg62-turbo-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev"
   [checks]="universal-ctags python3"
   [fuzz]="clang-14 libclang-rt-14-dev"
   [cross]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-user file"

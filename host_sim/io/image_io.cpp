@@ -1,40 +1,48 @@
 // SPDX-License-Identifier: MIT
 #include "io/image_io.h"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
+#include <climits>
 #include <string>
 
 #include "common/activity.h"
 #include "common/errors.h"
 #include "io/atomic_file.h"
+#include "io/image_decoders.h"
+#include "io/image_format.h"
 #include "io/limits.h"
 
-// Implementations come from Debian's libstb (linked through pkg-config "stb").
-#include <stb/stb_image.h>
+// stb_image_write only writes (Debian's libstb, linked through pkg-config "stb"); no image is read through stb.
 #include <stb/stb_image_write.h>
 
 namespace tristream {
 
+void check_image_size(const std::string& path, std::uint64_t offset, std::uint64_t width, std::uint64_t height,
+                      std::uint64_t max_pixels) {
+  const std::string at = path + ": byte " + std::to_string(offset) + ": ";
+  if (width == 0 || height == 0)
+    throw DataError(at + "expected an image of at least 1x1 pixels, found " + std::to_string(width) + "x" +
+                    std::to_string(height));
+  // Either side above 2^32 would overflow the product; such a side is over every limit anyway.
+  if (width > UINT32_MAX || height > UINT32_MAX || width * height > max_pixels || width > INT_MAX || height > INT_MAX)
+    throw DataError(at + "expected an image of at most " + std::to_string(max_pixels) +
+                    " pixels (the limit for an image), found " + std::to_string(width) + "x" + std::to_string(height));
+}
+
+Image decode_image(std::string_view bytes, const std::string& path, std::uint64_t max_pixels) {
+  switch (detect_image_format(bytes)) {
+    case ImageFormat::png: return decode_png(bytes, path, max_pixels);
+    case ImageFormat::jpeg: return decode_jpeg(bytes, path, max_pixels);
+    case ImageFormat::bmp: return decode_bmp(bytes, path, max_pixels);
+    case ImageFormat::pnm: return decode_pnm(bytes, path, max_pixels);
+    case ImageFormat::unknown: break;
+  }
+  refuse_image_format(bytes, path);
+}
+
 Image read_image(const std::string& path, std::uint64_t max_pixels) {
   const Activity activity("reading " + path);
   const std::string bytes = read_file(path);
-  int w = 0, h = 0, n = 0;
-  if (!stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h, &n))
-    throw DataError(path + ": expected a PNG, JPEG, BMP or PNM image, found undecodable data (" +
-                    stbi_failure_reason() + ")");
-  if (std::uint64_t(w) * std::uint64_t(h) > max_pixels)
-    throw DataError(path + ": expected an image of at most " + std::to_string(max_pixels) +
-                    " pixels (the limit for an image), found " + std::to_string(w) + "x" + std::to_string(h));
-  const int want = (n <= 2) ? 1 : 3;
-  stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w,
-                                        &h, &n, want);
-  if (!data) throw DataError(path + ": cannot decode image (" + std::string(stbi_failure_reason()) + ")");
-  Image img(w, h, want);
-  std::memcpy(img.pixels.data(), data, img.pixels.size());
-  stbi_image_free(data);
-  return img;
+  return decode_image(bytes, path, max_pixels);
 }
 
 void write_png(const std::string& path, const Image& image) { write_file_atomically(path, encode_png(image, path)); }

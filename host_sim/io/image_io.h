@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
-// Image files through stb_image (PNG, JPEG, BMP, PGM/PPM in) and stb_image_write (PNG out).
+// Image files: PNG (libpng), JPEG (libjpeg-turbo), BMP and PNM (PGM and PPM; own decoders) in, told
+// apart by their first bytes; PNG out through stb_image_write.
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "io/limits.h"
 
@@ -10,11 +12,15 @@
 
 namespace tristream {
 
-// Grey and grey+alpha load as 1 channel, RGB and RGBA as 3 (alpha dropped).
-// Throws InputError when missing or unreadable, DataError when not a decodable image or larger than
-// `max_pixels` (checked before decoding; the message names the limit). stb does not check PNG CRCs: a PNG whose
-// chunks have wrong CRCs but decode is read without complaint.
+// Grey and grey+alpha load as 1 channel, RGB, RGBA, palette and CMYK as 3 (alpha dropped).
+// Throws InputError when missing or unreadable, DataError when not one of the formats read, damaged
+// (a PNG chunk's CRC, JPEG data that libjpeg reports as corrupt, a short file) or larger than
+// `max_pixels` (checked before the pixels are allocated; the message names the limit).
 Image read_image(const std::string& path, std::uint64_t max_pixels = limits::max_image_pixels);
+
+// The same from the file's bytes in memory; `path` names it in messages.
+Image decode_image(std::string_view bytes, const std::string& path,
+                   std::uint64_t max_pixels = limits::max_image_pixels);
 
 // Writes a PNG through a temporary file and a rename. Throws OutputError.
 void write_png(const std::string& path, const Image& image);

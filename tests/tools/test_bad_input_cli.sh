@@ -42,6 +42,14 @@ rm -f "$tmp/big.tri"
 printf '\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x75\x30\x00\x00\x75\x30\x08\x00\x00\x00\x00\x00\x00\x00\x00' >"$tmp/claims.png"
 expect 65 "the limit for" "$bin/triencode" "$tmp/claims.png" -n 10 -o "$tmp/x.tri"
 expect 65 "the limit for an image" "$bin/trisim" metrics "$tmp/claims.png" "$tmp/claims.png"
+# Images: a damaged JPEG says so (not another format's error), formats the README does not list
+# are refused naming those it does, whatever the file's name.
+printf '\xff\xd8\xff\xdb\x00\x43\x00\x01\x02\x03' >"$tmp/cut.jpg"
+expect 65 "cut.jpg: byte 10: not a valid JPEG: Premature end of JPEG file" "$bin/triencode" "$tmp/cut.jpg" -n 10 -o "$tmp/x.tri"
+check "triencode left a .tri for a damaged JPEG" test ! -e "$tmp/x.tri"
+printf 'GIF89a\x01\x00\x01\x00\x80\x00\x00\xff\x00\x00\x00\x00\x00,\x00\x00\x00\x00\x01\x00\x01\x00\x00\x02\x02\x44\x01\x00;' >"$tmp/one.png"
+expect 65 "one.png: byte 0: expected a PNG, JPEG, BMP or PNM (PGM or PPM) image, found a GIF image" \
+  "$bin/trisim" metrics "$tmp/one.png" "$tmp/one.png"
 # Inputs that are not regular files: a device read without end, a directory, a FIFO without writer.
 expect 66 "not a regular file" "$bin/tripack" /dev/zero -o "$tmp/x.bin"
 expect 66 "directory" "$bin/tripack" "$tmp" -o "$tmp/x.bin"
