@@ -685,7 +685,7 @@ struct BarycentricStepper {
   // by_area2: RoundingDivider, or PreinvRoundingDivider where the doubled area fits it (the same
   // quotients).
   // Inlined (each divider's is called from one place, ZienkiewiczTriangle::begin_steps; out of
-  // line on Cortex-M its frame was on top of that caller's, in the deepest stack).
+  // line on Cortex-M its frame would sit on top of that caller's, in the deepest stack).
   template <typename Divider>
   TS_INLINE void setup(const int32_t* a, const int32_t* b, const int64_t* e_ref,
                                             const Divider& by_area2, int32_t x_ref, int32_t y_ref) {

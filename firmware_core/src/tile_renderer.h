@@ -40,8 +40,8 @@ void draw_layer(ActiveSet& set, const Mapping& map, const Rect& rect, bool cull_
     if constexpr (IsBandStore<Records>::value) {
       // The band store's records in the layout of its slots (triangle_records.h): a test a word and
       // a triangle, one tile path for both layouts (rasterize keeps one call site, inlined). The
-      // loop of a single layout below is kept apart as it was: a helper choosing the layout for
-      // both loops changed the v1 render's Cortex-M4 code.
+      // loop of a single layout below is kept apart: a helper choosing the layout for both loops
+      // would change the v1 render's Cortex-M4 code.
       const BlobLayer& layer = *set.layer;
       const bool packed = layer.vertex_count <= store_packed_slots;
       uint32_t hits = live;
