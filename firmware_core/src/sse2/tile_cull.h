@@ -73,7 +73,7 @@ TS_INLINE inline uint32_t meeting8(const uint8_t* p, const uint8_t* positions, i
 // bytes one triangle at a time, as are eight records with a flag record among them (its fields
 // are no vertices).
 template <typename Records, typename Window>
-inline uint32_t meeting(const Window& window, const BlobLayer& layer, uint32_t t, uint32_t live, uint32_t span) {
+inline uint32_t meeting(const Window window, const BlobLayer& layer, uint32_t t, uint32_t live, uint32_t span) {
   const uint8_t* const triangles = layer.triangles + size_t(t) * Records::stride;
   const uint8_t* const positions = layer.positions;
   const int32_t low = window.lo, high = window.hi - 1;
