@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <numeric>
 #include <string>
@@ -73,6 +74,46 @@ std::string collapse_message(const Mesh& mesh, std::size_t t, const std::string&
          rounded + ": move those vertices apart";
 }
 
+// The shortest form that reads back to `v`, as the .tri writer prints it.
+std::string number(double v) {
+  char buf[32];
+  const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+  return std::string(buf, end);
+}
+
+// A vertex for messages: its line in the file (when the mesh was read from one) or its index, and
+// its position as given.
+std::string vertex_name(const Mesh& mesh, std::uint32_t v) {
+  const bool lines = mesh.vertex_lines.size() == mesh.vertex_count();
+  return (lines ? std::to_string(mesh.vertex_lines[v]) : std::to_string(v)) + " (" + number(mesh.points[v].x) + ", " +
+         number(mesh.points[v].y) + ")";
+}
+
+// Two vertices that triangles use must not round to one point of the core's grid: the core would
+// draw the pixel there from both (a vertex no triangle uses is never drawn, as in the .tri rules).
+// Sorting the rounded positions finds a pair in O(n log n).
+void check_distinct_on_grid(const std::vector<QPoint>& pos, const Mesh& mesh, const std::string& where) {
+  std::vector<char> used(mesh.vertex_count(), 0);
+  for (const Triangle& t : mesh.triangles)
+    for (std::uint32_t v : t.v) used[v] = 1;
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
+    if (used[v]) order.push_back(v);
+  auto key = [&](std::uint32_t v) { return std::array<std::int64_t, 3>{pos[v].x, pos[v].y, v}; };
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const std::uint32_t a = order[k - 1], b = order[k];
+    if (pos[a].x != pos[b].x || pos[a].y != pos[b].y) continue;
+    const double unit = 1.0 / double(1 << S);
+    const bool lines = mesh.vertex_lines.size() == mesh.vertex_count();
+    throw DataError(where + ": vertices " + (lines ? "on lines " : "") + vertex_name(mesh, a) + " and " +
+                    vertex_name(mesh, b) + " both round to (" + number(double(pos[a].x) * unit) + ", " +
+                    number(double(pos[a].y) * unit) + ") on the core's 1/" + std::to_string(1 << S) +
+                    "-pixel grid, where the core would draw one point with two vertices' values: move them apart (1/" +
+                    std::to_string(1 << S) + " pixel in x or y suffices)");
+  }
+}
+
 LayerData build_layer(const Mesh& input, int width, int height, core::Method method,
                       const std::vector<std::int32_t>* gradients, const std::string& where) {
   const Mesh& mesh = input;
@@ -101,7 +142,10 @@ LayerData build_layer(const Mesh& input, int width, int height, core::Method met
     const QPoint &a = d.pos[v[0]], &b = d.pos[v[1]], &c = d.pos[v[2]];
     if ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x) < 0) std::swap(v[1], v[2]);
   }
-  return finish_layer(std::move(d), oriented, method, gradients, where);
+  // finish_layer refuses a triangle that collapses first: two of its own vertices on one point say so.
+  LayerData out = finish_layer(std::move(d), oriented, method, gradients, where);
+  check_distinct_on_grid(out.pos, mesh, where);
+  return out;
 }
 
 LayerData finish_layer(LayerData d, const Mesh& mesh, core::Method method, const std::vector<std::int32_t>* gradients,

@@ -18,7 +18,9 @@ std::string_view to_string(core::Method method);
 // values to q8_8, zienkiewicz gradients (reference/gradients.h, the reference's estimate) to
 // q19_12; boundary edges flagged inclusive and every boundary vertex given exactly one owner
 // triangle; triangles sorted by top row. Throws DataError ("<name>: triangle N: ...") when the
-// triangulation exceeds the core's limits or a triangle collapses when rounded.
+// triangulation exceeds the core's limits, a triangle collapses when rounded, or two vertices that
+// triangles use round to one position ("<name>: vertices on lines A (x, y) and B (x, y) both round
+// to ...", indices for a mesh not read from a file).
 // `gradients`, when given (zienkiewicz only), replaces the estimate: per layer, per vertex and
 // value gx, gy in q19_12, the layout of the blob's section (unpack_blob returns it, so that a blob
 // read back packs to the same bytes); a count that does not match the mesh throws DataError.

@@ -8,7 +8,9 @@
 #include <cstring>
 
 #include "../support/blob_seal.h"
+#include "core_bridge/compress.h"
 #include "core_support.h"
+#include "tristream/compressed_blob.h"
 #include "tristream/tristream.h"
 
 using namespace tristream;
@@ -43,6 +45,35 @@ unsigned get32(const std::vector<std::uint8_t>& b, std::size_t at) {
 TEST_CASE("a packed blob opens") {
   for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz})
     CHECK(open(sample_blob(m)) == core::Status::ok);
+}
+
+TEST_CASE("bytes after the blob's total size are ignored (a blob in a larger flash section)") {
+  // The C API takes a pointer and a length, and firmware may give the length of a padded or
+  // aligned section; the header's total size says where the blob ends (docs/FORMAT.md).
+  const std::vector<std::uint8_t> blob = sample_blob(core::Method::bilinear);
+  std::vector<std::uint8_t> padded(blob);
+  padded.resize(blob.size() + 61, 0xFF);
+  core::Blob b;
+  REQUIRE(core::open_blob(padded.data(), padded.size(), &b) == core::Status::ok);
+  CHECK(b.size == blob.size());
+  ts_blob c;
+  CHECK(ts_open(padded.data(), padded.size(), &c, nullptr) == TS_OK);
+  std::vector<std::uint8_t> tstc = compress_blob(blob);
+  const std::size_t compressed = tstc.size();
+  tstc.resize(compressed + 61, 0xFF);
+  core::CompressedBlob cb;
+  CHECK(core::open_compressed_blob(tstc.data(), tstc.size(), &cb) == core::Status::ok);
+  ts_compressed_blob cc;
+  CHECK(ts_open_compressed(tstc.data(), tstc.size(), &cc, nullptr) == TS_OK);
+  // The streams end where the header says: the padded blob expands as the exact one does.
+  auto expand = [](const std::uint8_t* bytes, std::size_t size) {
+    core::CompressedBlob x;
+    REQUIRE(core::open_compressed_blob(bytes, size, &x) == core::Status::ok);
+    std::vector<std::uint8_t> out(core::expanded_blob_size(x)), ring(core::expand_workspace_size(x) + 1);
+    REQUIRE(core::expand_compressed_blob(x, out.data(), out.size(), ring.data(), ring.size()) == core::Status::ok);
+    return out;
+  };
+  CHECK(expand(tstc.data(), tstc.size()) == expand(tstc.data(), compressed));
 }
 
 TEST_CASE("damaged headers are named with their offset") {

@@ -245,3 +245,24 @@ TEST_CASE("every damaged byte is read back or refused with a DataError, never ou
   CHECK(refused > 0);
   CHECK(read > 0);  // values, gradients and padding may change without making the blob invalid
 }
+
+TEST_CASE("vertices of different triangles that round to one grid point are refused when packed") {
+  // An hourglass: two triangles whose tips are 0.01 pixel apart. No triangle collapses, but both
+  // tips round to (1, 1): the core would draw that point from two vertices, and unpack_blob refuses
+  // the blob, so pack_blob refuses the mesh.
+  Mesh m;
+  m.points = {{0, 0}, {2, 0}, {1, 1}, {1, 1.01}, {2, 2}, {0, 2}};
+  m.values = {10, 20, 30, 200, 40, 50};
+  m.triangles = {Triangle{{0, 1, 2}}, Triangle{{3, 4, 5}}};
+  for (core::Method method : {core::Method::bilinear, core::Method::zienkiewicz})
+    CHECK_THROWS_WITH(pack_blob(single_mesh(m, 3, 3), method, "h"),
+                      Catch::StartsWith("h: vertices 2 (1, 1) and 3 (1, 1.01) both round to (1, 1) on the core's "
+                                        "1/16-pixel grid"));
+  // 1/16 pixel apart in y: distinct on the grid, packed and read back.
+  m.points[3].y = 1.0625;
+  CHECK_NOTHROW(unpack_blob(pack_blob(single_mesh(m, 3, 3), core::Method::bilinear), "h"));
+  // A vertex no triangle uses is never drawn: it may round onto a used one.
+  m.points.push_back({1.01, 0.99});
+  m.values.push_back(99);
+  CHECK_NOTHROW(pack_blob(single_mesh(m, 3, 3), core::Method::bilinear));
+}

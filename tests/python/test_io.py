@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: MIT
 """read_tri, write_tri, read_image, write_png, pack and unpack: round trips, pack equals tripack's
-bytes, and bad files raise with a message naming the file and the problem (items: io, pack)."""
+bytes, and bad files raise with a message naming the file and the problem (items: io, pack); a
+mesh the core's grid would merge raises when packed."""
 import unittest
 
 import numpy as np
@@ -87,6 +88,18 @@ class PackEqualsTripack(ScratchTest):
             tristream.pack(tri, "bezier")
         with self.assertRaisesRegex(ValueError, r"mine\.bin: byte 4: unsupported blob version"):
             tristream.unpack(b"TSTB" + bytes(60), name="mine.bin")
+
+    def test_vertices_that_round_together_are_refused(self):
+        # Two triangles whose tips are 0.01 pixel apart: one point on the core's 1/16-pixel grid.
+        text = ("tri 1\nsize 3 3\nchannels grey\nvertices 6\n0 0 10\n2 0 20\n1 1 30\n1 1.01 200\n2 2 40\n"
+                "0 2 50\ntriangles 2\n0 1 2\n3 4 5\n")
+        tri = tristream.Triangulation.from_text(text)
+        message = r"vertices on lines 7 \(1, 1\) and 8 \(1, 1\.01\) both round to \(1, 1\)"
+        with self.assertRaisesRegex(tristream.DataError, message):
+            tristream.pack(tri)
+        with self.assertRaisesRegex(tristream.DataError, message):
+            tristream.render(tri, engine="core")
+        tristream.render(tri)  # the reference draws the geometry as given
 
 
 if __name__ == "__main__":

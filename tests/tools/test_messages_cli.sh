@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Messages that name what README promises (issue 44 item 9): the lines of a triangle that
-# collapses on the core's grid (also in a triangulation the reader computed), the coordinate
-# budget behind a refused --fit fill, the files too small for SSIM, and a vertex count out of
-# range as it was typed. Usage: test_messages_cli.sh BIN_DIR SOURCE_DIR
+# collapses on the core's grid (also in a triangulation the reader computed), the lines of two
+# vertices that round to one point of that grid (issue 44), the coordinate budget behind a refused
+# --fit fill, the files too small for SSIM, and a vertex count out of range as it was typed.
+# Usage: test_messages_cli.sh BIN_DIR SOURCE_DIR
 set -uo pipefail
 bin=$1
 src=$2
@@ -29,6 +30,37 @@ expect 65 "computed.tri: a triangle of the Delaunay triangulation the reader com
 expect 65 "listed.tri: triangle 3 of the triangles section (counting from 0), vertices on lines 5, 6 and 9, collapses" \
   "$bin/tripack" "$tmp/listed.tri" -o "$tmp/x.bin"
 check "nothing written for a collapsing triangle" test ! -e "$tmp/x.bin"
+
+# Two vertices of different triangles 0.01 pixel apart (an hourglass's tips): no triangle collapses,
+# but both round to one point of the grid, which the core would draw with two vertices' values
+# (170 levels off the reference at that pixel). Refused when packed, naming both lines and points.
+cat >"$tmp/hourglass.tri" <<'TRI'
+tri 1
+size 3 3
+channels grey
+# two triangles whose tips are 0.01 pixel apart
+vertices 6
+0 0 10
+2 0 20
+1 1 30
+1 1.01 200
+2 2 40
+0 2 50
+triangles 2
+0 1 2
+3 4 5
+TRI
+coincident="hourglass.tri: vertices on lines 8 (1, 1) and 9 (1, 1.01) both round to (1, 1) on the core's 1/16-pixel grid"
+expect 65 "$coincident" "$bin/tripack" "$tmp/hourglass.tri" -o "$tmp/x.bin"
+expect 65 "$coincident" "$bin/tripack" "$tmp/hourglass.tri" --compress -o "$tmp/x.bin"
+expect 65 "$coincident" "$bin/tripack" "$tmp/hourglass.tri" -m zienkiewicz -o "$tmp/x.c"
+check "nothing written for coincident vertices" test ! -e "$tmp/x.bin" -a ! -e "$tmp/x.c"
+expect 65 "$coincident" "$bin/trisim" render "$tmp/hourglass.tri" --engine core -o "$tmp/x.png"
+expect 65 "$coincident" "$bin/trisim" compare "$tmp/hourglass.tri" --engine core
+# The reference draws the file as it is; 1/16 pixel apart (distinct on the grid) packs.
+expect 0 "" "$bin/trisim" render "$tmp/hourglass.tri" -o "$tmp/x.png"
+sed 's/^1 1.01 200$/1 1.0625 200/' "$tmp/hourglass.tri" >"$tmp/apart.tri"
+expect 0 "" "$bin/tripack" "$tmp/apart.tri" -o "$tmp/x.bin"
 
 # --fit fill of the 768 x 512 demo on 1500 x 1500 draws it 2250 pixels wide: past the core's
 # coordinate budget. The message names the budget and the option, for a .tri, a blob and a

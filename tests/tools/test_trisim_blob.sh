@@ -4,8 +4,9 @@
 # blob's own bytes (the same pixels as the .tri packed for that method), compare measures it
 # against the reference of the mesh read back and against an original, bad blobs exit 65 naming
 # the byte (a damaged v1 blob: its checksum at byte 36; one of version 1, from before the checksum:
-# what to do). A compressed blob (tripack --compress) is expanded by the core and then draws the v1
-# blob's pixels; a damaged one exits 65 with the byte offset the decoder reports.
+# what to do; a file with bytes after its blob: where the blob ends). A compressed blob (tripack
+# --compress) is expanded by the core and then draws the v1 blob's pixels; a damaged one exits 65
+# with the byte offset the decoder reports.
 # Usage: test_trisim_blob.sh BIN_DIR SOURCE_DIR
 set -uo pipefail
 bin=$1
@@ -169,6 +170,25 @@ for at in 100 1000 5000 $(($(wc -c <"$tmp/grey-c.bin") - 100)); do
   offset=$(sed -n 's/.*flip-c\.bin: byte \([0-9]*\):.*/\1/p' "$tmp/err")
   check "damage at $at reported at byte $offset, from $at to the end" \
     test -n "$offset" -a "${offset:-0}" -ge "$at" -a "${offset:-0}" -le "$(wc -c <"$tmp/grey-c.bin")"
+done
+
+# A blob file with bytes after the blob (its total size, at byte 8): refused, naming where the
+# blob ends and the file's length, for a v1 and a compressed blob. The core itself ignores them
+# (a blob in a larger flash section; docs/FORMAT.md).
+for blob in grey grey-c; do
+  size=$(wc -c <"$tmp/$blob.bin")
+  { cat "$tmp/$blob.bin"; printf '\377\377\377\377\377\377\377\377'; } >"$tmp/padded.bin"
+  for cmd in render compare bench; do
+    out=(-o "$tmp/x.png")
+    [ $cmd = render ] || out=()
+    expect 65 "padded.bin: byte $size: expected the end of the file, where the blob ends (its total size at byte 8), found 8 bytes more (a file of $((size + 8)) bytes)" \
+      "$bin/trisim" $cmd "$tmp/padded.bin" "${out[@]}"
+  done
+  expect 65 "padded.bin: byte $size: expected the end of the file" \
+    "$bin/trisim" render "$tmp/padded.bin" --engine reference -o "$tmp/x.png"
+  head -c "$size" "$tmp/padded.bin" >"$tmp/cut.bin"
+  expect 0 "" "$bin/trisim" render "$tmp/cut.bin" -o "$tmp/cut.png"
+  rm -f "$tmp/x.png" "$tmp/cut.png"
 done
 
 # A vertex pushed outside the domain (the first x of the positions, which follow the 64-byte

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "common/errors.h"
+#include "core_bridge/blob_file.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/pixel_format_names.h"
 #include "core_bridge/unpack.h"
@@ -83,6 +84,7 @@ Input read_input(const std::string& path, bool need_mesh) {
   // Offsets of the checks below are in the file, or for a compressed blob in its expansion.
   const std::string name = in.compressed ? path + " (expanded to v1)" : path;
   const core::Blob blob = open_blob_or_throw(in.blob, name);
+  check_blob_file_length(bytes, path);  // the core opened it: its total size is the file's at most
   in.blob_method = blob.method;
   if (need_mesh) {
     in.tri = unpack_blob(blob, name).tri;

@@ -98,7 +98,8 @@ struct BlobError {
 };
 
 // Checks everything (header, checksum, table, sections, every vertex and triangle) and fills `out`.
-// Never reads outside [bytes, bytes + size). Returns Status::ok or the first problem found;
+// Never reads outside [bytes, bytes + size), nor past the header's total size, which may be less
+// than `size` (a blob in a larger flash section). Returns Status::ok or the first problem found;
 // `error`, when not null, receives its byte offset. The order: the magic (bad_magic, offset 0),
 // the version (bad_version, 4), the header size (bad_header, 6) and the total size (truncated, 8),
 // which locate the checksum; then the checksum over [0, total size) (bad_checksum, offset

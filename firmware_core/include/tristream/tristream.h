@@ -143,8 +143,9 @@ typedef struct ts_params {
 #define TS_PARAMS_INIT {0, 0, {0, 0, 0, 0}, 0, 0, TS_FORMAT_UNSET, 0, {0, 0, 0}, 0, TS_FIT_STRETCH, 0, NULL}
 void ts_params_init(ts_params* params);
 
-/* Validates `size` bytes and fills `blob`. On failure *error_offset (if not null) is the byte
-   offset of the offending field. Returns TS_OK or a status code: TS_BAD_CHECKSUM for bytes that
+/* Validates the blob at `bytes` and fills `blob`. `size` may be more than the blob (the total size
+   its header records; a padded flash section): the bytes after it are not read. On failure
+   *error_offset (if not null) is the byte offset of the offending field. Returns TS_OK or a status code: TS_BAD_CHECKSUM for bytes that
    do not match the blob's CRC-32, TS_BAD_VERSION for a blob of version 1 (no checksum: pack it
    again with tripack). It reads every byte of the blob, twice (its CRC-32, then its fields;
    docs/FORMAT.md has the cost): call it once, not once a frame, and keep `blob` for every frame.
@@ -171,7 +172,8 @@ typedef struct ts_compressed_blob {
   uint64_t storage[24];
 } ts_compressed_blob;
 
-/* Checks the header and the layer table (the streams are checked as they are decoded). */
+/* Checks the header and the layer table (the streams are checked as they are decoded). As for
+   ts_open, `size` may be more than the blob: the bytes after its total size are not read. */
 ts_status ts_open_compressed(const void* bytes, size_t size, ts_compressed_blob* blob, uint32_t* error_offset);
 ts_status ts_compressed_tile_buffer_size(const ts_compressed_blob* blob, const ts_params* params, size_t* bytes);
 /* Bytes of scratch ts_compressed_workspace_size needs (its measure decodes every stream once). */
