@@ -3,19 +3,17 @@
 // Little-endian loads and stores of unaligned bytes, the only ones of the core and of the host's
 // packer and unpacker (wire_layout.h names where they go). Compilers turn the loads into single
 // loads; the stores are one memcpy each on a little-endian target, which compilers do not always
-// make of the byte stores. The loads always inlined: a call would cost more than the load.
+// make of the byte stores.
 #include <stdint.h>
 #include <string.h>
 
-#include "tuning.h"
-
 namespace tristream::core::detail {
 
-TS_INLINE inline uint16_t load_u16(const uint8_t* p) { return uint16_t(p[0] | (p[1] << 8)); }
-TS_INLINE inline uint32_t load_u32(const uint8_t* p) {
+inline uint16_t load_u16(const uint8_t* p) { return uint16_t(p[0] | (p[1] << 8)); }
+inline uint32_t load_u32(const uint8_t* p) {
   return uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24);
 }
-TS_INLINE inline int32_t load_i32(const uint8_t* p) { return int32_t(load_u32(p)); }
+inline int32_t load_i32(const uint8_t* p) { return int32_t(load_u32(p)); }
 
 // Stores the low 16 bits of v.
 inline void store_u16(uint8_t* p, uint32_t v) {

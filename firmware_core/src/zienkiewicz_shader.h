@@ -21,6 +21,12 @@
 namespace tristream::core::detail {
 namespace {
 
+// The blob's little-endian int32 at p, always inlined (optimized for size load_i32 is a call, one
+// per gradient read).
+TS_INLINE inline int32_t read_i32(const uint8_t* p) {
+  return int32_t(uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24));
+}
+
 // Optimized for size, RGB565 without dithering is packed as with it, by pack565_dithered's fields
 // with these offsets: those of pack565_nearest (the same values: t <= 16313 there too), no tables.
 constexpr uint32_t nearest_offsets[4] = {127 * dither_scale, 127 * dither_scale, 127 * dither_scale,
@@ -38,7 +44,7 @@ struct VertexGradients {
   const uint8_t* const* vertex;
   int offset;
   TS_INLINE int32_t operator[](int j) const {
-    return load_i32(vertex[j >> 1] + offset + 4 * (j & 1));
+    return read_i32(vertex[j >> 1] + offset + 4 * (j & 1));
   }
 };
 
