@@ -93,12 +93,7 @@ std::string vertex_name(const Mesh& mesh, std::uint32_t v) {
 // draw the pixel there from both (a vertex no triangle uses is never drawn, as in the .tri rules).
 // Sorting the rounded positions finds a pair in O(n log n).
 void check_distinct_on_grid(const std::vector<QPoint>& pos, const Mesh& mesh, const std::string& where) {
-  std::vector<char> used(mesh.vertex_count(), 0);
-  for (const Triangle& t : mesh.triangles)
-    for (std::uint32_t v : t.v) used[v] = 1;
-  std::vector<std::uint32_t> order;
-  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
-    if (used[v]) order.push_back(v);
+  std::vector<std::uint32_t> order = mesh.used_vertices();
   auto key = [&](std::uint32_t v) { return std::array<std::int64_t, 3>{pos[v].x, pos[v].y, v}; };
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
   for (std::size_t k = 1; k < order.size(); ++k) {

@@ -36,12 +36,7 @@ std::string at_byte(std::string_view name, const core::Blob& blob, const std::ui
 // The checks of the .tri reader that open_blob leaves out: distinct positions among the vertices
 // triangles use, interiors that do not overlap, edge to edge.
 void check_drawable(const Mesh& mesh, const core::BlobLayer& layer, const core::Blob& blob, std::string_view name) {
-  std::vector<char> used(mesh.vertex_count(), 0);
-  for (const Triangle& t : mesh.triangles)
-    for (std::uint32_t v : t.v) used[v] = 1;
-  std::vector<std::uint32_t> order;
-  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
-    if (used[v]) order.push_back(v);
+  std::vector<std::uint32_t> order = mesh.used_vertices();
   auto less = [&](std::uint32_t a, std::uint32_t b) {
     const Point &p = mesh.points[a], &q = mesh.points[b];
     return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && a < b)));

@@ -23,6 +23,16 @@ double Mesh::doubled_area(std::size_t t) const {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
 
+std::vector<std::uint32_t> Mesh::used_vertices() const {
+  std::vector<char> used(vertex_count(), 0);
+  for (const Triangle& t : triangles)
+    for (std::uint32_t v : t.v) used[v] = 1;
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t v = 0; v < vertex_count(); ++v)
+    if (used[v]) order.push_back(v);
+  return order;
+}
+
 void Mesh::normalize_winding() {
   for (std::size_t t = 0; t < triangles.size(); ++t)
     if (doubled_area(t) < 0) std::swap(triangles[t].v[1], triangles[t].v[2]);

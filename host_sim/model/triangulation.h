@@ -47,6 +47,8 @@ struct Mesh {
   double doubled_area(std::size_t t) const;
   // Reorders vertex indices so that every triangle has positive doubled_area().
   void normalize_winding();
+  // The vertices some triangle uses, in index order (a vertex no triangle uses is never drawn).
+  std::vector<std::uint32_t> used_vertices() const;
 };
 
 // A whole image: size, colour space and either one mesh carrying every channel or, in a
