@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "common/name_list.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/pixel_format_names.h"
 #include "core_bridge/render_core.h"
@@ -94,14 +95,9 @@ py::array core_render(const Source& s, const RenderArgs& a, const std::string& m
 
 py::array reference_render(const Triangulation& tri, const RenderArgs& a, const std::string& method_name) {
   const MethodInfo* method = find_reference_method(method_name);
-  if (!method) {
-    std::string names;
-    for (const MethodInfo& m : reference_methods()) {
-      if (!names.empty()) names += '|';
-      names += m.name;
-    }
-    throw py::value_error("method: expected " + names + ", found '" + method_name + "'");
-  }
+  if (!method)
+    throw py::value_error("method: expected " + name_list(reference_methods(), "|", "|") + ", found '" + method_name +
+                          "'");
   RenderOptions o;
   o.width = a.width;
   o.height = a.height;
