@@ -117,18 +117,19 @@ struct SpanStepper {
     }
   }
   // Columns [*x0, *x1] (inclusive; empty when *x0 > *x1) of the current row.
-  TS_INLINE void span(int32_t* x0, int32_t* x1) const { columns(bound[0].q, bound[1].q, bound[2].q, third_left, x0, x1); }
+  TS_INLINE void span(int32_t* x0, int32_t* x1) const {
+    columns(bound[0].q, bound[1].q, bound[2].q, -int32_t(third_left), x0, x1);
+  }
   TS_INLINE void next_row() {
     bound[0].next_row();
     bound[1].next_row();
     bound[2].next_row();
   }
   // A row's columns from the bounds' quotients q0 (left), q1 (right) and v (the third, on the left
-  // when third_left).
-  TS_INLINE static void columns(int32_t q0, int32_t q1, int32_t v, bool third_left, int32_t* x0, int32_t* x1) {
+  // when left_mask is all ones, on the right when it is 0: -int32_t(third_left)).
+  TS_INLINE static void columns(int32_t q0, int32_t q1, int32_t v, int32_t left_mask, int32_t* x0, int32_t* x1) {
     // The third bound applies to one side; the other side takes a bound that never wins. Bit
     // operations on a mask, not a branch (compilers keep the ternary form as a jump here).
-    const int32_t left_mask = -int32_t(third_left);
     const int32_t third_lo = (-v & left_mask) | (INT32_MIN & ~left_mask);
     const int32_t third_hi = (INT32_MAX & left_mask) | (v & ~left_mask);
     *x0 = max2(-q0, third_lo);

@@ -40,11 +40,7 @@ class RowSpans {
   TS_INLINE void span(int32_t, int32_t* x0, int32_t* x1) const {
     const int32_t q0 = _mm_cvtsi128_si32(q_), q1 = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 1));
     const int32_t v = _mm_cvtsi128_si32(_mm_shuffle_epi32(q_, 2));
-    // SpanStepper::columns with the third bound's side as a mask, set once a triangle.
-    const int32_t third_lo = (-v & left_mask_) | (INT32_MIN & ~left_mask_);
-    const int32_t third_hi = (INT32_MAX & left_mask_) | (v & ~left_mask_);
-    *x0 = max2(-q0, third_lo);
-    *x1 = min2(q1, third_hi);
+    SpanStepper::columns(q0, q1, v, left_mask_, x0, x1);
   }
   TS_INLINE void next_row() {
     // r < 2 den < 2^31, so the signed compare r > den - 1 is r >= den; a wrap is -1 in its lane.
