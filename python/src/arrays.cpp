@@ -26,8 +26,8 @@ void copy_checked(const py::array_t<T, py::array::c_style | py::array::forcecast
       const std::size_t pixel = i / std::size_t(image.channels);
       throw py::value_error(what + ": pixel (x " + std::to_string(pixel % std::size_t(image.width)) + ", y " +
                             std::to_string(pixel / std::size_t(image.width)) + ") channel " +
-                            std::to_string(i % std::size_t(image.channels)) + " is " + py::str(py::float_(x)).cast<std::string>() +
-                            "; expected integers 0 to 255 (8-bit images)");
+                            std::to_string(i % std::size_t(image.channels)) + " is " +
+                            py::str(py::float_(x)).cast<std::string>() + "; expected integers 0 to 255 (8-bit images)");
     }
     image.pixels[i] = std::uint8_t(x);
   }
@@ -40,8 +40,7 @@ Image image_from_array(const py::handle& handle, const std::string& what) {
   if (!a) throw py::type_error(what + ": expected a numpy array (or array-like) of pixels");
   const bool shaped = a.ndim() == 2 || (a.ndim() == 3 && (a.shape(2) == 1 || a.shape(2) == 3));
   if (!shaped || a.shape(0) < 1 || a.shape(1) < 1)
-    throw py::value_error(what + ": expected an array of shape (H, W), (H, W, 1) or (H, W, 3), found " +
-                          shape_text(a));
+    throw py::value_error(what + ": expected an array of shape (H, W), (H, W, 1) or (H, W, 3), found " + shape_text(a));
   const char kind = a.dtype().kind();
   if (kind != 'u' && kind != 'i' && kind != 'f')
     throw py::value_error(what + ": expected an integer or float array, found dtype " +

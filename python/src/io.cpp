@@ -43,19 +43,24 @@ Triangulation unpack(const py::bytes& data, const std::string& name) {
 }  // namespace
 
 void bind_io(py::module_& m) {
-  m.def("read_tri", [](const std::filesystem::path& path) { return read_tri_file(path.string()); }, py::arg("path"),
-        "Reads a .tri file (docs/FORMAT.md). InputError (an OSError) when it cannot be read, DataError (a "
-        "ValueError) naming the line when it is malformed.");
-  m.def("write_tri", [](const std::filesystem::path& path, const Triangulation& tri) { write_tri_file(path.string(), tri); },
-        py::arg("path"), py::arg("tri"), "Writes a .tri file (through a temporary file and a rename).");
-  m.def("read_image", [](const std::filesystem::path& path) { return array_from_image(read_image(path.string())); },
-        py::arg("path"),
-        "Reads a PNG, JPEG, BMP or PNM as uint8 (H, W) for grey or (H, W, 3) for colour (alpha dropped).");
-  m.def("write_png",
-        [](const std::filesystem::path& path, const py::handle& image) {
-          write_png(path.string(), image_from_array(image, "image"));
-        },
-        py::arg("path"), py::arg("image"), "Writes an 8-bit image as PNG.");
+  m.def(
+      "read_tri", [](const std::filesystem::path& path) { return read_tri_file(path.string()); }, py::arg("path"),
+      "Reads a .tri file (docs/FORMAT.md). InputError (an OSError) when it cannot be read, DataError (a "
+      "ValueError) naming the line when it is malformed.");
+  m.def(
+      "write_tri",
+      [](const std::filesystem::path& path, const Triangulation& tri) { write_tri_file(path.string(), tri); },
+      py::arg("path"), py::arg("tri"), "Writes a .tri file (through a temporary file and a rename).");
+  m.def(
+      "read_image", [](const std::filesystem::path& path) { return array_from_image(read_image(path.string())); },
+      py::arg("path"),
+      "Reads a PNG, JPEG, BMP or PNM as uint8 (H, W) for grey or (H, W, 3) for colour (alpha dropped).");
+  m.def(
+      "write_png",
+      [](const std::filesystem::path& path, const py::handle& image) {
+        write_png(path.string(), image_from_array(image, "image"));
+      },
+      py::arg("path"), py::arg("image"), "Writes an 8-bit image as PNG.");
   m.def("pack", &pack, py::arg("tri"), py::arg("method") = "bilinear", py::arg("compress") = false,
         "The blob the core draws (tripack -o x.bin): for method bilinear or zienkiewicz, the compressed blob with "
         "compress=True (tripack --compress).");

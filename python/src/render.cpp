@@ -45,11 +45,14 @@ struct Source {
 void check_engine_keywords(const RenderArgs& a, const std::string& engine) {
   if (engine == "reference") {
     const bool core_only = a.tile || a.tile_width || a.tile_height || a.viewport || a.format || a.dither || a.raw;
-    if (core_only) throw py::value_error("tile, tile_width, tile_height, viewport, format, dither, raw: apply to engine='core' only");
+    if (core_only)
+      throw py::value_error(
+          "tile, tile_width, tile_height, viewport, format, dither, raw: apply to engine='core' only");
     return;
   }
   if (!a.variant.empty()) throw py::value_error("variant: applies to engine='reference' only");
-  if (a.dtype != "uint8") throw py::value_error("dtype: the core renders 8-bit pixels (dtype='float64' is the reference's)");
+  if (a.dtype != "uint8")
+    throw py::value_error("dtype: the core renders 8-bit pixels (dtype='float64' is the reference's)");
   const bool rgb565 = a.format && (*a.format == "rgb565le" || *a.format == "rgb565be");
   if (a.dither && !rgb565) throw py::value_error("dither: applies to format rgb565le and rgb565be only");
 }
@@ -62,8 +65,9 @@ CoreOptions core_options_of(const RenderArgs& a, bool grey) {
   if (a.viewport) {
     const std::vector<int>& v = *a.viewport;
     if (v.size() != 4 || v[0] < 0 || v[1] < 0 || v[2] <= v[0] || v[3] <= v[1])
-      throw py::value_error("viewport: expected (x0, y0, x1, y1) with 0 <= x0 < x1 and 0 <= y0 < y1 (output pixels "
-                            "[x0, x1) x [y0, y1))");
+      throw py::value_error(
+          "viewport: expected (x0, y0, x1, y1) with 0 <= x0 < x1 and 0 <= y0 < y1 (output pixels "
+          "[x0, x1) x [y0, y1))");
     o.viewport = core::Rect{v[0], v[1], v[2], v[3]};
   }
   o.tile_width = a.tile_width.value_or(a.tile.value_or(32));
@@ -141,8 +145,9 @@ py::array render_source(const py::handle& source, RenderArgs& a) {
   const std::string engine = one_of("engine", a.engine.value_or(s.tri ? "reference" : "core"), {"reference", "core"});
   const std::string method = a.method.value_or(s.tri ? "bilinear" : std::string(to_string(s.blob_method)));
   if (!s.tri && engine == "core" && method != to_string(s.blob_method))
-    throw py::value_error("method " + method + ": the blob is packed for " + std::string(to_string(s.blob_method)) +
-                          ", which the core renders with that method only (engine='reference' renders its mesh with any)");
+    throw py::value_error(
+        "method " + method + ": the blob is packed for " + std::string(to_string(s.blob_method)) +
+        ", which the core renders with that method only (engine='reference' renders its mesh with any)");
   check_engine_keywords(a, engine);
   const std::uint64_t w = a.width ? a.width : s.width, h = a.height ? a.height : s.height;
   if (w * h > limits::max_image_pixels)
@@ -150,7 +155,8 @@ py::array render_source(const py::handle& source, RenderArgs& a) {
                           " pixels (the limit for a render), found " + std::to_string(w) + "x" + std::to_string(h));
   if (engine == "reference" && !s.tri) s.tri = &unpacked.emplace(unpack_blob(s.blob, "blob").tri);
   const bool grey = s.tri ? s.tri->channels() == 1 : false;
-  if (engine == "core") return core_render(s, a, method, s.tri ? grey : open_blob_or_throw(v1, "blob").space == core::ColorSpace::grey);
+  if (engine == "core")
+    return core_render(s, a, method, s.tri ? grey : open_blob_or_throw(v1, "blob").space == core::ColorSpace::grey);
   return reference_render(*s.tri, a, method);
 }
 

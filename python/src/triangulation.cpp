@@ -47,7 +47,8 @@ Mesh mesh_from_arrays(const py::handle& vertices, const py::handle& values, cons
   if (triangles.is_none()) return mesh;
   const auto t = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
   if (!t || t.ndim() != 2 || t.shape(1) != 3)
-    throw py::value_error(what + ": expected triangles as an array of shape (M, 3) of vertex indices, or None "
+    throw py::value_error(what +
+                          ": expected triangles as an array of shape (M, 3) of vertex indices, or None "
                           "(the Delaunay triangulation)");
   for (py::ssize_t i = 0; i < t.shape(0); ++i) {
     Triangle tr;
@@ -86,7 +87,8 @@ Triangulation make_layered(int width, int height, const std::string& space, cons
   for (int c = 0; c < 3; ++c) {
     const py::sequence layer = layers[std::size_t(c)].cast<py::sequence>();
     if (layer.size() != 2 && layer.size() != 3)
-      throw py::value_error("layers[" + std::to_string(c) + "]: expected (vertices, values) or (vertices, values, triangles)");
+      throw py::value_error("layers[" + std::to_string(c) +
+                            "]: expected (vertices, values) or (vertices, values, triangles)");
     Mesh m = mesh_from_arrays(layer[0], layer[1], layer.size() == 3 ? py::handle(layer[2]) : py::handle(py::none()), 1,
                               "layers[" + std::to_string(c) + "]");
     m.name = layer_name(tri.space, c);
@@ -98,7 +100,8 @@ Triangulation make_layered(int width, int height, const std::string& space, cons
 py::array_t<double> vertices_of(const Mesh& m) {
   py::array_t<double> out({py::ssize_t(m.points.size()), py::ssize_t(2)});
   auto o = out.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < m.points.size(); ++i) o(py::ssize_t(i), 0) = m.points[i].x, o(py::ssize_t(i), 1) = m.points[i].y;
+  for (std::size_t i = 0; i < m.points.size(); ++i)
+    o(py::ssize_t(i), 0) = m.points[i].x, o(py::ssize_t(i), 1) = m.points[i].y;
   return out;
 }
 
@@ -118,8 +121,9 @@ py::array_t<std::uint32_t> triangles_of(const Mesh& m) {
 // The one mesh of a triangulation that is not layered.
 const Mesh& single_mesh(const Triangulation& tri) {
   if (tri.layered())
-    throw py::value_error("a layered triangulation has one mesh per channel: use tri.layers[c].vertices, .values, "
-                          ".triangles");
+    throw py::value_error(
+        "a layered triangulation has one mesh per channel: use tri.layers[c].vertices, .values, "
+        ".triangles");
   return tri.layers.at(0);
 }
 
@@ -157,12 +161,15 @@ void bind_triangulation(py::module_& m) {
       .def_property_readonly("channels", &Triangulation::channels)
       .def_property_readonly("layered", &Triangulation::layered)
       .def_readonly("layers", &Triangulation::layers, "The meshes: one, or one per channel when layered")
-      .def_property_readonly("vertices", [](const Triangulation& t) { return vertices_of(single_mesh(t)); },
-                             "float64 (N, 2) of the single mesh")
-      .def_property_readonly("values", [](const Triangulation& t) { return values_of(single_mesh(t)); },
-                             "float64 (N, C) of the single mesh")
-      .def_property_readonly("triangles", [](const Triangulation& t) { return triangles_of(single_mesh(t)); },
-                             "uint32 (M, 3) of the single mesh")
+      .def_property_readonly(
+          "vertices", [](const Triangulation& t) { return vertices_of(single_mesh(t)); },
+          "float64 (N, 2) of the single mesh")
+      .def_property_readonly(
+          "values", [](const Triangulation& t) { return values_of(single_mesh(t)); },
+          "float64 (N, C) of the single mesh")
+      .def_property_readonly(
+          "triangles", [](const Triangulation& t) { return triangles_of(single_mesh(t)); },
+          "uint32 (M, 3) of the single mesh")
       .def("__eq__", [](const Triangulation& a, const Triangulation& b) { return format_tri(a) == format_tri(b); })
       .def("__repr__", [](const Triangulation& t) {
         std::size_t vertices = 0, triangles = 0;

@@ -145,10 +145,11 @@ void ts_params_init(ts_params* params);
 
 /* Validates the blob at `bytes` and fills `blob`. `size` may be more than the blob (the total size
    its header records; a padded flash section): the bytes after it are not read. On failure
-   *error_offset (if not null) is the byte offset of the offending field. Returns TS_OK or a status code: TS_BAD_CHECKSUM for bytes that
-   do not match the blob's CRC-32, TS_BAD_VERSION for a blob of version 1 (no checksum: pack it
-   again with tripack). It reads every byte of the blob, twice (its CRC-32, then its fields;
-   docs/FORMAT.md has the cost): call it once, not once a frame, and keep `blob` for every frame.
+   *error_offset (if not null) is the byte offset of the offending field. Returns TS_OK or a
+   status code: TS_BAD_CHECKSUM for bytes that do not match the blob's CRC-32, TS_BAD_VERSION for
+   a blob of version 1 (no checksum: pack it again with tripack). It reads every byte of the blob,
+   twice (its CRC-32, then its fields; docs/FORMAT.md has the cost): call it once, not once a
+   frame, and keep `blob` for every frame.
    The blob is read in place by every later call: its bytes must stay where they are, unchanged,
    while `blob` is used. */
 ts_status ts_open(const void* bytes, size_t size, ts_blob* blob, uint32_t* error_offset);
