@@ -140,6 +140,7 @@ const M4Emulator::Block& M4Emulator::block_at(std::uint32_t address, std::uint32
                             [](const DivideSite& x, const DivideSite& y) { return x.address < y.address; }))
       fail("a division at " + std::to_string(insn.address) + " outside the image's code ranges");
   b.function = function_of(address);
+  b.entry = address == functions_[b.function].begin;
   b.excluded = address >= exclude_begin_ && address < exclude_end_;
   if (index < 0) {
     index = std::int32_t(blocks_.size());
@@ -211,6 +212,7 @@ void M4Emulator::on_block(std::uint32_t address, std::uint32_t size) {
   if (stack_chain_) watch_stack(address);
   block_address_ = address;
   const Block& b = block_at(address, size);
+  if (b.entry && !b.excluded) run_.function_entries[b.function] += 1;
   if (per_instruction_) {
     finish_block();
     current_ = &b;
@@ -341,6 +343,7 @@ RunCounts M4Emulator::call(std::uint32_t function, std::uint32_t stack_top, cons
   if (args.size() > 4) throw std::runtime_error("call: at most 4 register arguments");
   run_ = RunCounts{};
   run_.function_cycles.assign(functions_.size(), 0);
+  run_.function_entries.assign(functions_.size(), 0);
   if (address_profile_) run_.block_runs.assign(flash_size / 2, 0);
   error_.clear();
   pending_ = false;

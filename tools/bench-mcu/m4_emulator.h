@@ -36,6 +36,9 @@ struct RunCounts {
   Counts counted;   // everything but the excluded range
   Counts excluded;  // the excluded range (the benchmark's sink)
   std::vector<std::uint64_t> function_cycles;  // counted cycles per function of functions()
+  // Counted runs of a block starting at each function's first instruction: its calls (and any
+  // branch back to its start).
+  std::vector<std::uint64_t> function_entries;
   // With set_address_profile(true): how many times a counted block started at each halfword of
   // flash, by (address - flash_base) / 2 (see M4Emulator::block_cost for its size and static cost;
   // branch refills and division extras are in the totals only).
@@ -93,6 +96,7 @@ class M4Emulator {
     DecodedBlock decoded;
     std::uint32_t function = 0;
     bool excluded = false;
+    bool entry = false;  // starts at its function's first instruction
     // Cycles to add when entered by falling through (entry_cycles), once known.
     bool fallthrough_known = false;
     int fallthrough_cycles = 0;

@@ -272,7 +272,8 @@ json profile_json(const Program& prog, const Outcome& o, int profile) {
   json top = json::array();
   for (std::size_t i = 0; i < f.size() && int(i) < profile; ++i)
     top.push_back({{"function", demangled(prog.emu->functions()[f[i].second].name)},
-                   {"cycles_share", round2(100.0 * double(f[i].first) / double(o.counts.counted.cycles))}});
+                   {"cycles_share", round2(100.0 * double(f[i].first) / double(o.counts.counted.cycles))},
+                   {"entries", o.counts.function_entries[f[i].second]}});
   return top;
 }
 
