@@ -8,9 +8,7 @@ namespace tristream::bench_mcu {
 
 namespace {
 
-bool in(unsigned id, std::initializer_list<unsigned> ids) {
-  return std::find(ids.begin(), ids.end(), id) != ids.end();
-}
+bool in(unsigned id, std::initializer_list<unsigned> ids) { return std::find(ids.begin(), ids.end(), id) != ids.end(); }
 
 // ARMv6-M: the 16-bit Thumb instructions but CBZ, CBNZ and IT (ARMv7-M's), and six 32-bit ones.
 bool armv6m(const cs_insn& insn) {
