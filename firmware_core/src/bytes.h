@@ -9,8 +9,8 @@
 
 // Whether a halfword or word store to an address of unknown alignment is one instruction. Not on
 // ARMv6-M (Cortex-M0+), which has no unaligned access: there GCC makes such a memcpy of 2 or 4
-// bytes a call of the C library's memcpy (about 44 cycles on the M0+ for 2 bytes), so the stores
-// are byte stores.
+// bytes a call of the C library's memcpy (about 43 cycles in it on the M0+ for 2 bytes), so the
+// stores are byte stores.
 #if defined(__ARM_ARCH) && !defined(__ARM_FEATURE_UNALIGNED)
 #define TS_UNALIGNED_STORES 0
 #else
