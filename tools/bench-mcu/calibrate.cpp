@@ -7,15 +7,17 @@
 
 #include "common/errors.h"
 #include "elf_image.h"
-#include "m4_emulator.h"
+#include "emulator.h"
 
 namespace tristream::bench_mcu {
 
-// The calibration loops of m4/calibrate.S: a table of {name, function, r0, instructions, cycles},
-// ended by a zero function; each is run with block counting and with per-instruction counting.
+// The calibration loops of m4/calibrate.S or riscv/calibrate.S (by the ELF's machine): a table of
+// {name, function, first argument, instructions, cycles}, ended by a zero function; each is run
+// with block counting and with per-instruction counting.
 int calibrate(const std::string& path) {
   const ElfImage elf = read_elf(path);
-  M4Emulator fast(elf), slow(elf, true);
+  const std::unique_ptr<Emulator> fast = make_emulator(cpu_of(elf), elf, false);
+  const std::unique_ptr<Emulator> slow = make_emulator(cpu_of(elf), elf, true);
   const std::uint32_t table = elf.symbol("calibration_cases").address;
   const std::uint32_t top = elf.symbol("__stack_top").address;
   int failures = 0, cases = 0;
@@ -30,8 +32,8 @@ int calibrate(const std::string& path) {
       if (!ch) break;
       name += ch;
     }
-    const RunCounts f = fast.call(e[1] & ~1u, top, {e[2]});
-    const RunCounts s = slow.call(e[1] & ~1u, top, {e[2]});
+    const RunCounts f = fast->call(e[1] & ~1u, top, {e[2]});
+    const RunCounts s = slow->call(e[1] & ~1u, top, {e[2]});
     const bool ok = f.counted.instructions == e[3] && f.counted.cycles == e[4] &&
                     s.counted.instructions == e[3] && s.counted.cycles == e[4];
     std::printf("%-26s instructions %8llu (expected %8u, per instruction %8llu)  cycles %8llu (expected %8u, per "

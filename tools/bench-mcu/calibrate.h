@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
-// bench_mcu calibrate: the hand-counted loops of m4/calibrate.S must count exactly.
+// bench_mcu calibrate: the hand-counted loops of m4/calibrate.S (riscv/calibrate.S) must count exactly.
 #include <string>
 
 namespace tristream::bench_mcu {

@@ -47,7 +47,7 @@ Digest host_digest(const std::vector<std::uint8_t>& blob, const bench_params& p)
   return {h.a, h.b, h.tiles};
 }
 
-Outcome run_on(M4Emulator& emu, const ElfImage& elf, const std::vector<std::uint8_t>& blob, const bench_params& p) {
+Outcome run_on(Emulator& emu, const ElfImage& elf, const std::vector<std::uint8_t>& blob, const bench_params& p) {
   const std::uint32_t top = elf.symbol("__stack_top").address, limit = elf.symbol("__stack_limit").address;
   const std::uint32_t params_at = elf.symbol("bench_params_in").address,
                       result_at = elf.symbol("bench_result_out").address;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// bench_mcu: runs firmware_core on an emulated Cortex-M4 (m4_emulator.h) and reports
-// instructions, modelled cycles, stack, RAM and flash per configuration, with the pixels checked
-// against the host build of the core. docs/MCU_BENCH.md describes the model and the matrix.
+// bench_mcu: runs firmware_core on an emulated Cortex-M4 (m4_emulator.h) or RISC-V rv32imc
+// (riscv_emulator.h) and reports instructions, modelled cycles, stack, RAM and flash per
+// configuration, with the pixels checked against the host build of the core. docs/MCU_BENCH.md
+// describes the models and the matrix.
 //   bench_mcu run --elf-dir <dir> [matrix options]   one JSON line per configuration, then a summary
 //                                                    (matrix.h)
 //   bench_mcu calibrate <calibrate.elf>              the hand-counted loops must count exactly
@@ -30,7 +31,9 @@ int main(int argc, char** argv) {
   o.outputs = {"native", "320x240", "240x240"};
   o.tilings = {"tiles32", "bands16", "frame"};
   o.blob_kinds = {"v1", "compressed"};
-  run_cmd->add_option("--elf-dir", o.elf_dir, "Build directory of tools/bench-mcu/m4 (build-m4.sh)")->required();
+  run_cmd->add_option("--elf-dir", o.elf_dir, "Build directory of tools/bench-mcu/m4 (build-m4.sh)");
+  run_cmd->add_option("--riscv-elf-dir", o.riscv_elf_dir, "Build directory of tools/bench-mcu/riscv (build-riscv.sh)");
+  run_cmd->add_option("--cpus", o.cpus, "m4, riscv (default: m4, and riscv with --riscv-elf-dir)")->delimiter(',');
   run_cmd->add_option("--meshes", o.meshes, "kodim23, scene4k, grid40k")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--methods", o.methods, "bilinear, zienkiewicz")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--opts", o.opts, "O2, Os")->delimiter(',')->capture_default_str();

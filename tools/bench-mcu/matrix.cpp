@@ -22,6 +22,7 @@
 #include "core_bridge/pixel_format_names.h"
 #include "elf_image.h"
 #include "emulated_render.h"
+#include "emulator.h"
 #include "io/atomic_file.h"
 #include "m4_emulator.h"
 #include "panel_table.h"
@@ -76,8 +77,8 @@ CoreSize read_size(const std::string& path) {
 // One benchmark program (a core at one optimisation level with one method) on its emulator.
 struct Program {
   ElfImage elf;
-  std::unique_ptr<M4Emulator> emu;
-  std::unique_ptr<M4Emulator> checker;  // per-instruction counting, with --check-counts
+  std::unique_ptr<Emulator> emu;
+  std::unique_ptr<Emulator> checker;  // per-instruction counting, with --check-counts
   CoreSize core, full, compressed;  // compressed: the compressed-blob decoder (not in core or full)
 };
 
@@ -116,24 +117,29 @@ Matrix parse_matrix(const RunOptions& o) {
     if (d != "off" && d != "on") throw UsageError("dither '" + d + "': expected off or on");
   for (const std::string& k : o.blob_kinds)
     if (k != "v1" && k != "compressed") throw UsageError("blob '" + k + "': expected v1 or compressed");
+  for (const std::string& cpu : o.cpus) {
+    cpu_label(cpu);
+    if ((cpu == "m4" ? o.elf_dir : o.riscv_elf_dir).empty())
+      throw UsageError(cpu == "m4" ? "--elf-dir is needed for the Cortex-M4" : "--riscv-elf-dir is needed for RISC-V");
+  }
   return m;
 }
 
-// The benchmark programs by optimisation level and method, each read when first asked for.
+// The benchmark programs by core, optimisation level and method, each read when first asked for.
 class Programs {
  public:
   explicit Programs(const RunOptions& o) : o_(o) {}
-  Program& get(const std::string& opt, const std::string& method) {
+  Program& get(const std::string& cpu, const std::string& opt, const std::string& method) {
     const std::string key = opt + "_" + method;
-    auto it = programs_.find(key);
+    auto it = programs_.find(cpu + "/" + key);
     if (it != programs_.end()) return it->second;
-    const std::string& dir = o_.elf_dir;
-    Program& p = programs_[key];
+    const std::string& dir = cpu == "m4" ? o_.elf_dir : o_.riscv_elf_dir;
+    Program& p = programs_[cpu + "/" + key];
     p.elf = read_elf(dir + "/bench_" + key + ".elf");
-    p.emu = std::make_unique<M4Emulator>(p.elf);
+    p.emu = make_emulator(cpu, p.elf, false);
     p.emu->set_address_profile(!o_.address_profile.empty());
     p.emu->set_stack_chain(o_.stack_chain);
-    if (o_.check_counts) p.checker = std::make_unique<M4Emulator>(p.elf, true);
+    if (o_.check_counts) p.checker = make_emulator(cpu, p.elf, true);
     p.core = read_size(dir + "/ts_core_" + key + ".size");
     p.full = read_size(dir + "/ts_core_" + opt + "_full.size");
     p.compressed = read_size(dir + "/ts_core_" + key + ".compressed.size");
@@ -170,6 +176,7 @@ void pack_mesh(const Triangulation& tri, const std::string& mesh, const std::str
 // One configuration of the matrix: a mesh's blob of one kind, rendered at one output size in one
 // tiling by one program, dithered or not.
 struct Configuration {
+  const std::string& cpu;
   const MeshBlobs& blobs;
   const std::string& kind;  // v1 or compressed
   Size size;
@@ -199,6 +206,7 @@ bench_params params_of(const Configuration& c) {
 // The line's first keys: what the configuration is.
 json configuration_json(const Configuration& c) {
   json j;
+  j["cpu"] = cpu_label(c.cpu);
   j["mesh"] = c.blobs.mesh;
   j["blob"] = c.kind;
   j["blob_bytes"] = c.blob().size();
@@ -342,7 +350,8 @@ void run_configuration(const RunOptions& ro, Program& prog, const Configuration&
     const bool within =
         o.stack_bytes <= (c.compressed() ? core_compressed_stack_bytes(method) : core_stack_bytes(method));
     j["stack_within_core_stack_bytes"] = within;
-    res.stacks_within &= within;
+    // The limits are the Cortex-M4's; another core's stack is reported against them, not held to them.
+    if (c.cpu == "m4") res.stacks_within &= within;
   }
   if (ro.check_counts) {
     const bool same = counts_agree(prog, c, p, o);
@@ -357,43 +366,66 @@ void run_configuration(const RunOptions& ro, Program& prog, const Configuration&
   const double pixels = double(c.width()) * c.height();
   res.rows.push_back({c.blobs.mesh, c.output_name(), c.tiling.name, c.blobs.method, c.opt, c.dither, c.compressed(),
                       per(rc.cycles, pixels), o.stack_bytes, c.blob().size(), o.open_counts.counted.cycles});
-  if (c.opt == "O2" && !c.dither)
+  if (c.opt == "O2" && !c.dither && c.cpu == "m4")
     res.panel_rows.push_back(
         {c.blobs.mesh, c.output_name(), c.tiling.name, c.blobs.method, c.kind, c.width(), c.height(), rc.cycles});
 }
 
+// The summary tables of one core's rows under its name (the panel table: the Cortex-M4's clocks, its
+// rows only).
+void print_tables(const RunOptions& o, const std::string& cpu, const Results& res) {
+  std::printf("\n== %s ==\n", cpu_label(cpu).c_str());
+  std::vector<std::string> out_names;
+  for (const Row& r : res.rows)
+    if (std::find(out_names.begin(), out_names.end(), r.output) == out_names.end()) out_names.push_back(r.output);
+  print_summary(res.rows, o.meshes, out_names, o.tilings);
+  if (cpu == "m4") print_panel_table(res.panel_rows);
+  print_stack_summary(res.rows, o.methods);
+}
+
 }  // namespace
 
-int run_matrix(const RunOptions& o) {
+int run_matrix(const RunOptions& options) {
+  RunOptions o = options;
+  if (o.cpus.empty()) {
+    o.cpus = {"m4"};
+    if (!o.riscv_elf_dir.empty()) o.cpus.push_back("riscv");
+  }
   const Matrix matrix = parse_matrix(o);
   Programs programs(o);
-  Results res;
+  std::map<std::string, Results> by_cpu;
   for (const std::string& mesh : o.meshes) {
     const Triangulation tri = make_mesh(mesh);
     for (const std::string& method : o.methods) {
       MeshBlobs blobs;
       pack_mesh(tri, mesh, method, blobs);
-      for (const std::string& kind : o.blob_kinds)
-        for (const Size& size : matrix.sizes)
-          for (const Tiling& t : matrix.tilings)
-            for (const std::string& opt : o.opts)
-              for (const std::string& d : o.dithers) {
-                Program& prog = programs.get(opt, method);
-                run_configuration(o, prog, Configuration{blobs, kind, size, t, opt, d == "on"}, res);
-              }
+      for (const std::string& cpu : o.cpus)
+        for (const std::string& kind : o.blob_kinds)
+          for (const Size& size : matrix.sizes)
+            for (const Tiling& t : matrix.tilings)
+              for (const std::string& opt : o.opts)
+                for (const std::string& d : o.dithers) {
+                  Program& prog = programs.get(cpu, opt, method);
+                  run_configuration(o, prog, Configuration{cpu, blobs, kind, size, t, opt, d == "on"}, by_cpu[cpu]);
+                }
     }
   }
-  std::vector<std::string> out_names;
-  for (const Row& r : res.rows)
-    if (std::find(out_names.begin(), out_names.end(), r.output) == out_names.end()) out_names.push_back(r.output);
-  print_summary(res.rows, o.meshes, out_names, o.tilings);
-  print_panel_table(res.panel_rows);
-  print_stack_summary(res.rows, o.methods);
-  if (!res.all_equal) std::fprintf(stderr, "bench_mcu: the emulated M4 differs from the host (pixels or counts)\n");
-  if (!res.stacks_within)
+  bool all_equal = true, stacks_within = true;
+  std::string address_lines;
+  for (const std::string& cpu : o.cpus) {
+    const Results& res = by_cpu[cpu];
+    print_tables(o, cpu, res);
+    if (!res.all_equal)
+      std::fprintf(stderr, "bench_mcu: the emulated %s differs from the host (pixels or counts)\n",
+                   cpu_label(cpu).c_str());
+    all_equal &= res.all_equal;
+    stacks_within &= res.stacks_within;
+    address_lines += res.address_lines;
+  }
+  if (!stacks_within)
     std::fprintf(stderr, "bench_mcu: a stack high-water mark exceeds core_stack_bytes (core_bridge/core_stack.h)\n");
-  if (!o.address_profile.empty()) write_file_atomically(o.address_profile, res.address_lines);
-  return res.all_equal && res.stacks_within ? 0 : 1;
+  if (!o.address_profile.empty()) write_file_atomically(o.address_profile, address_lines);
+  return all_equal && stacks_within ? 0 : 1;
 }
 
 }  // namespace tristream::bench_mcu

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
 // bench_mcu run: every configuration of the matrix (meshes x methods x blob kinds x outputs x
-// tilings x optimisation levels x dithering) on the emulated Cortex-M4, one JSON line each on stdout
-// in that order, then the summary tables (summary.h, panel_table.h).
+// tilings x optimisation levels x dithering) on the emulated Cortex-M4 (and RISC-V), one JSON line
+// each on stdout in that order, then the summary tables (summary.h, panel_table.h), one set per core.
 #include <string>
 #include <vector>
 
@@ -10,6 +10,9 @@ namespace tristream::bench_mcu {
 
 struct RunOptions {
   std::string elf_dir;  // the build directory of m4/ (build-m4.sh)
+  std::string riscv_elf_dir;  // the build directory of riscv/ (build-riscv.sh)
+  // The cores (emulator.h's cpu_names); empty: the Cortex-M4, and RISC-V when riscv_elf_dir is given.
+  std::vector<std::string> cpus;
   std::vector<std::string> meshes, methods, opts, dithers, outputs, tilings, blob_kinds;
   bool check_counts = false;  // run each configuration again counting per instruction
   bool check_stack = false;   // a stack above core_stack_bytes fails the run
