@@ -68,9 +68,12 @@ RiscvEmulator::RiscvEmulator(const ElfImage& elf, bool per_instruction) : elf_(e
         "add the alignment hook");
   divides_ = find_divides(elf);
   std::sort(divides_.begin(), divides_.end(), by_address);
-  for (const DivideSite& d : divides_)
-    check(uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(divide_hook), this, d.address, d.address),
-          "add a division hook");
+  // Per-instruction counting costs its divisions in the instruction hook: unicorn runs through
+  // every code hook's range check on each instruction a hook covers.
+  if (!per_instruction_)
+    for (const DivideSite& d : divides_)
+      check(uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(divide_hook), this, d.address, d.address),
+            "add a division hook");
 }
 
 RiscvEmulator::~RiscvEmulator() { uc_close(uc_); }
@@ -146,19 +149,22 @@ const RiscvEmulator::Cached* RiscvEmulator::block_at(std::uint32_t address, std:
   return &blocks_[index];
 }
 
-const Insn* RiscvEmulator::insn_at(std::uint32_t address) {
+const Insn* RiscvEmulator::insn_at(std::uint32_t address, std::uint32_t* function) {
   std::int32_t& index = insn_index_[(address - flash_base) / 2];
-  if (index >= 0) return &insns_[index];
-  std::uint8_t code[4] = {};
-  const std::uint32_t available = std::min<std::uint32_t>(4, flash_base + flash_size - address);
-  check(uc_mem_read(uc_, address, code, available), "read code");
-  Insn insn;
-  if (!decode(code, available, address, &insn)) {
-    fail("the instruction at " + hex(address) + " is not RV32IMC");
-    return nullptr;
+  if (index < 0) {
+    std::uint8_t code[4] = {};
+    const std::uint32_t available = std::min<std::uint32_t>(4, flash_base + flash_size - address);
+    check(uc_mem_read(uc_, address, code, available), "read code");
+    Insn insn;
+    if (!decode(code, available, address, &insn)) {
+      fail("the instruction at " + hex(address) + " is not RV32IMC");
+      return nullptr;
+    }
+    index = std::int32_t(insns_.size());
+    insns_.push_back(insn);
+    insn_functions_.push_back(function_of(address));
   }
-  index = std::int32_t(insns_.size());
-  insns_.push_back(insn);
+  *function = insn_functions_[index];
   return &insns_[index];
 }
 
@@ -216,17 +222,18 @@ void RiscvEmulator::on_block(std::uint32_t address, std::uint32_t size) {
 void RiscvEmulator::on_insn(std::uint32_t address, std::uint32_t size) {
   if (address == halt_) return;
   if (!in_flash(address)) return fail("an instruction outside flash at " + hex(address));
-  const Insn* insn = insn_at(address);
+  std::uint32_t function = 0;
+  const Insn* insn = insn_at(address, &function);
   if (!insn) return;
   if (insn->size != size) return fail("the instruction at " + hex(address) + " has another size for unicorn");
   resolve_pending(address, size);
-  const std::uint32_t function = function_of(address);
   const bool excluded = address >= exclude_begin_ && address < exclude_end_;
   Counts& c = excluded ? run_.excluded : run_.counted;
   const Context before = address == previous_end_ ? previous_exit_ : Context{};
   c.instructions += 1;
   c.by_class[insn->klass] += 1;
   add(c, function, excluded, std::uint64_t(cost_after(*insn, before, &previous_exit_)));
+  if (insn->divide) on_divide(address);
   previous_end_ = address + size;
   pending_branch_ = insn->branch;
   pending_jump_ = insn->jump;
@@ -253,7 +260,7 @@ void RiscvEmulator::on_access(std::uint32_t address, int size, bool write) {
   std::uint32_t pc = 0;
   uc_reg_read(uc_, UC_RISCV_REG_PC, &pc);
   fail(std::string("a misaligned ") + std::to_string(size) + "-byte " + (write ? "store" : "load") + " at " +
-       hex(address) + " by the instruction at " + hex(pc));
+       hex(address) + " (pc " + hex(pc) + ": the instruction, or the start of its translation block)");
 }
 
 void RiscvEmulator::block_cost(std::uint32_t address, std::uint32_t* size, std::uint32_t* cycles) const {

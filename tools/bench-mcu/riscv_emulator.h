@@ -53,7 +53,8 @@ class RiscvEmulator {
     bool excluded = false;
   };
   const Cached* block_at(std::uint32_t address, std::uint32_t size);
-  const Insn* insn_at(std::uint32_t address);
+  // Per-instruction mode: the instruction at `address`, decoded once; its function in *function.
+  const Insn* insn_at(std::uint32_t address, std::uint32_t* function);
   void fail(const std::string& message);
   void resolve_pending(std::uint32_t next_address, std::uint32_t next_size);
   void add(Counts& c, std::uint32_t function, bool excluded, std::uint64_t cycles);
@@ -71,6 +72,7 @@ class RiscvEmulator {
   std::vector<Cached> blocks_;
   std::vector<std::int32_t> insn_index_;  // per-instruction mode: index into insns_, or -1
   std::vector<Insn> insns_;
+  std::vector<std::uint32_t> insn_functions_;  // the function of each of insns_
   std::vector<DivideSite> divides_;
   RunCounts run_;
   std::string error_;

@@ -147,7 +147,26 @@ cal_branches:
 9:  c.jr ra
     .option norvc
 
+# Misaligned accesses, which the bench refuses (the run fails, naming the access): fault_cases.
+    .option rvc
+    .balign 4
+    .option norvc
+    .type cal_misaligned_load, @function
+cal_misaligned_load:
+    addi sp, sp, -16
+    lw a1, 2(sp)
+    addi sp, sp, 16
+    ret
+    .type cal_misaligned_store, @function
+cal_misaligned_store:
+    addi sp, sp, -16
+    sh a1, 1(sp)
+    addi sp, sp, 16
+    ret
+
     .section .rodata
+name_misaligned_load: .asciz "misaligned load"
+name_misaligned_store: .asciz "misaligned store"
 name_alu_loop: .asciz "alu loop"
 name_loads: .asciz "loads and stores"
 name_calls: .asciz "jal, jalr, hazards"
@@ -162,3 +181,9 @@ calibration_cases:
     .word name_muldiv, cal_muldiv, 0, 17, 156
     .word name_branches, cal_branches, 0, 12, 21
     .word 0, 0, 0, 0, 0
+    .balign 4
+    .global fault_cases
+fault_cases:
+    .word name_misaligned_load, cal_misaligned_load, 0
+    .word name_misaligned_store, cal_misaligned_store, 0
+    .word 0, 0, 0
