@@ -62,8 +62,8 @@ bench: build
 	$(BUILD)/bin/bench_core
 	bash tests/core/callgrind_core.sh $(BUILD)/bin/core_frames
 
-# firmware_core on an emulated Cortex-M4 (docs/MCU_BENCH.md): instructions, modelled cycles,
-# stack, RAM and flash per configuration, pixels checked against the host build. A subset:
+# firmware_core on an emulated Cortex-M4 and RISC-V rv32imc (docs/MCU_BENCH.md): instructions,
+# modelled cycles, stack, RAM and flash per configuration, pixels checked against the host build. A subset:
 # make bench-mcu BENCH_MCU_ARGS="--meshes kodim23 --opts O2 --dither off".
 bench-mcu: deps
 	@bash tools/install-deps.sh mcu
