@@ -33,12 +33,7 @@ class Emulator {
   virtual void block_cost(std::uint32_t address, std::uint32_t* size, std::uint32_t* cycles) const = 0;
 };
 
-// The cores of the bench, by name: "m4" (Cortex-M4), "riscv" (rv32imc).
-inline const std::vector<std::string>& cpu_names() {
-  static const std::vector<std::string> names{"m4", "riscv"};
-  return names;
-}
-// What the JSON lines and tables call a core.
+// What the JSON lines and tables call a core of the bench: "m4" (Cortex-M4), "riscv" (rv32imc).
 std::string cpu_label(const std::string& cpu);
 // The core an image is built for, by its ELF machine: "m4" or "riscv".
 std::string cpu_of(const ElfImage& elf);

@@ -11,7 +11,7 @@ namespace tristream::bench_mcu {
 struct RunOptions {
   std::string elf_dir;  // the build directory of m4/ (build-m4.sh)
   std::string riscv_elf_dir;  // the build directory of riscv/ (build-riscv.sh)
-  // The cores (emulator.h's cpu_names); empty: the Cortex-M4, and RISC-V when riscv_elf_dir is given.
+  // The cores, m4 and riscv; empty: the Cortex-M4, and RISC-V when riscv_elf_dir is given.
   std::vector<std::string> cpus;
   std::vector<std::string> meshes, methods, opts, dithers, outputs, tilings, blob_kinds;
   bool check_counts = false;  // run each configuration again counting per instruction
