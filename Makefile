@@ -62,11 +62,11 @@ bench: build
 	$(BUILD)/bin/bench_core
 	bash tests/core/callgrind_core.sh $(BUILD)/bin/core_frames
 
-# firmware_core on an emulated Cortex-M4, then Cortex-M0+ (docs/MCU_BENCH.md): instructions,
-# modelled cycles, stack, RAM and flash per configuration, pixels checked against the host build.
-# BENCH_MCU_CPUS="m0plus" runs one core. A subset:
+# firmware_core on an emulated Cortex-M4, Cortex-M0+ and RISC-V rv32imc (docs/MCU_BENCH.md):
+# instructions, modelled cycles, stack, RAM and flash per configuration, pixels checked against the
+# host build. BENCH_MCU_CPUS="m4" (or "m0plus", "rv32imc", any of them) runs fewer cores. A subset:
 # make bench-mcu BENCH_MCU_ARGS="--meshes kodim23 --opts O2 --dither off".
-BENCH_MCU_CPUS ?= m4 m0plus
+BENCH_MCU_CPUS ?= m4 m0plus rv32imc
 bench-mcu: deps
 	@bash tools/install-deps.sh mcu
 	$(MAKE) build

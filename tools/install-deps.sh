@@ -5,6 +5,8 @@
 # checks: universal-ctags, for the function-length check of make test (tests/tools/check_function_lengths.py).
 # python: pybind11 and Python's headers for the Python module (python/), numpy for it and its tests.
 # browser: headless Chromium, for the check of the report page (make experiments-quick).
+# mcu: the Arm (Cortex-M4, Cortex-M0+) and RISC-V rv32imc cross compilers, unicorn and capstone (make bench-mcu,
+#   bench_mcu tests).
 # ecosystems: the Cortex-M4 compiler, arduino-builder and PyYAML of tests/ecosystems (make test).
 set -euo pipefail
 
@@ -14,7 +16,7 @@ declare -A groups=(
   [fuzz]="clang-14 libclang-rt-14-dev"
   [cross]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi qemu-user file"
   [bench]="valgrind"
-  [mcu]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi libunicorn-dev libcapstone-dev pkg-config"
+  [mcu]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi binutils-arm-none-eabi libunicorn-dev libcapstone-dev pkg-config gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf"
   [experiments]="python3 python3-numpy python3-scipy python3-matplotlib python3-pil python3-tqdm"
   [ecosystems]="gcc-arm-none-eabi libstdc++-arm-none-eabi-newlib libnewlib-arm-none-eabi python3 python3-yaml arduino-builder"
   [python]="python3 python3-dev python3-numpy pybind11-dev python3-pybind11"

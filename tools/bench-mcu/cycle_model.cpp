@@ -11,7 +11,6 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "common/errors.h"
 #include "cycle_model_m0plus.h"
 
 namespace tristream::bench_mcu {
@@ -163,17 +162,10 @@ const char* class_name(int c) {
   return c >= 0 && c < class_count ? names[c] : "?";
 }
 
-Core parse_core(const std::string& name) {
-  if (name == "m4") return Core::m4;
-  if (name == "m0plus") return Core::m0plus;
-  throw UsageError("unknown core '" + name + "' (expected m4 or m0plus)");
-}
-
-const char* core_title(Core core) { return core == Core::m0plus ? "Cortex-M0+" : "Cortex-M4"; }
-
 int CycleModel::taken_extra() const { return core_ == Core::m0plus ? m0plus_taken_extra : pipeline_refill; }
 
 CycleModel::CycleModel(Core core) : core_(core) {
+  if (core != Core::m4 && core != Core::m0plus) throw std::invalid_argument("CycleModel: not an ARM core");
   csh h = 0;
   if (cs_open(CS_ARCH_ARM, cs_mode(CS_MODE_THUMB | CS_MODE_MCLASS), &h) != CS_ERR_OK)
     throw std::runtime_error("capstone: cannot open a Thumb (M-profile) disassembler");

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cores.h"
 #include "elf_image.h"
 
 namespace tristream::bench_mcu {
@@ -17,14 +18,6 @@ namespace tristream::bench_mcu {
 // P of the TRM: the cycles of a pipeline refill after a taken branch (1..3 on the M4, by the
 // target's alignment and width and whether the branch was speculated); one value for all.
 inline constexpr int pipeline_refill = 2;
-
-// The cores the bench models: the Cortex-M4 (this file's model) and the Cortex-M0+ (ARMv6-M,
-// cycle_model_m0plus.h).
-enum class Core { m4, m0plus };
-// "m4" or "m0plus"; throws UsageError for another name.
-Core parse_core(const std::string& name);
-// "Cortex-M4", "Cortex-M0+".
-const char* core_title(Core core);
 
 enum InsnClass : std::uint8_t {
   class_alu,        // data processing, moves, shifts, compares, extends, bit fields, IT, NOP

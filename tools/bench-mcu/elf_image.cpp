@@ -44,10 +44,12 @@ ElfImage read_elf(const std::string& path) {
   const std::vector<std::uint8_t> file{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   const auto eh = read_at<Elf32_Ehdr>(file, 0, path, "ELF header");
   if (std::memcmp(eh.e_ident, ELFMAG, SELFMAG) != 0 || eh.e_ident[EI_CLASS] != ELFCLASS32 ||
-      eh.e_ident[EI_DATA] != ELFDATA2LSB || eh.e_machine != EM_ARM || eh.e_type != ET_EXEC)
-    throw DataError(path + ": byte 0: expected a 32-bit little-endian ARM executable");
+      eh.e_ident[EI_DATA] != ELFDATA2LSB || (eh.e_machine != EM_ARM && eh.e_machine != EM_RISCV) ||
+      eh.e_type != ET_EXEC)
+    throw DataError(path + ": byte 0: expected a 32-bit little-endian ARM or RISC-V executable");
   ElfImage image;
   image.path = path;
+  image.machine = eh.e_machine;
   for (int i = 0; i < eh.e_phnum; ++i) {
     const std::size_t at = eh.e_phoff + std::size_t(i) * eh.e_phentsize;
     const auto ph = read_at<Elf32_Phdr>(file, at, path, "program header");

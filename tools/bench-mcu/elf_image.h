@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
-// A 32-bit little-endian ARM ELF executable as the harness needs it: the loadable segments (at
-// their run addresses), the symbols, and the Thumb code ranges (from the $t / $d mapping symbols).
+// A 32-bit little-endian ARM or RISC-V ELF executable as the harness needs it: the loadable
+// segments (at their run addresses), the symbols, and the Thumb code ranges (from the $t / $d
+// mapping symbols; none for RISC-V).
 #include <cstdint>
 #include <map>
 #include <string>
@@ -35,6 +36,7 @@ struct ElfFunction {
 
 struct ElfImage {
   std::string path;
+  std::uint16_t machine = 0;  // e_machine: EM_ARM or EM_RISCV
   std::vector<ElfSegment> segments;
   std::map<std::string, ElfSymbol> symbols;
   // Every function symbol, local ones of one name included, sorted; one without a size (assembly)

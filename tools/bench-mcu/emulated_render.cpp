@@ -47,7 +47,7 @@ Digest host_digest(const std::vector<std::uint8_t>& blob, const bench_params& p)
   return {h.a, h.b, h.tiles};
 }
 
-Outcome run_on(M4Emulator& emu, const ElfImage& elf, const std::vector<std::uint8_t>& blob, const bench_params& p) {
+Outcome run_on(Emulator& emu, const ElfImage& elf, const std::vector<std::uint8_t>& blob, const bench_params& p) {
   const std::uint32_t top = elf.symbol("__stack_top").address, limit = elf.symbol("__stack_limit").address;
   const std::uint32_t params_at = elf.symbol("bench_params_in").address,
                       result_at = elf.symbol("bench_result_out").address;
@@ -60,7 +60,8 @@ Outcome run_on(M4Emulator& emu, const ElfImage& elf, const std::vector<std::uint
   o.open_counts = emu.call(elf.symbol("bench_open").address, top);
   emu.read(result_at, &o.result, sizeof o.result);
   if (o.result.stage != BENCH_STAGE_OPENED)
-    throw std::runtime_error("M4: open failed: " + std::string(core::status_text(core::Status(o.result.status))));
+    throw std::runtime_error("the emulated core: open failed: " +
+                             std::string(core::status_text(core::Status(o.result.status))));
   emu.call(elf.symbol("bench_prepare").address, top);
   emu.read(result_at, &o.result, sizeof o.result);
   if (o.result.stage != BENCH_STAGE_PREPARED) {
@@ -70,18 +71,20 @@ Outcome run_on(M4Emulator& emu, const ElfImage& elf, const std::vector<std::uint
                   std::to_string(o.result.arena_bytes) + " bytes of RAM left";
       return o;
     }
-    throw std::runtime_error("M4: prepare failed: " + std::string(core::status_text(core::Status(o.result.status))));
+    throw std::runtime_error("the emulated core: prepare failed: " +
+                             std::string(core::status_text(core::Status(o.result.status))));
   }
   emu.fill(limit, stack_paint, (top - limit) / 4);
   o.counts = emu.call(elf.symbol("bench_render").address, top);
   emu.read(result_at, &o.result, sizeof o.result);
   if (o.result.stage != BENCH_STAGE_RENDERED)
-    throw std::runtime_error("M4: render failed: " + std::string(core::status_text(core::Status(o.result.status))));
+    throw std::runtime_error("the emulated core: render failed: " +
+                             std::string(core::status_text(core::Status(o.result.status))));
   std::vector<std::uint32_t> stack((top - limit) / 4);
   emu.read(limit, stack.data(), stack.size() * 4);
   std::size_t lowest = 0;
   while (lowest < stack.size() && stack[lowest] == stack_paint) ++lowest;
-  if (lowest == 0) throw std::runtime_error("M4: the stack overflowed its reserve");
+  if (lowest == 0) throw std::runtime_error("the emulated core: the stack overflowed its reserve");
   o.stack_bytes = o.result.sp_before_render - (limit + std::uint32_t(lowest) * 4);
   o.ran = true;
   return o;

@@ -1,15 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
-// One configuration of the matrix rendered twice: on the emulated Cortex-M4 (run_on: counted,
-// its stack measured) and with the host build of the core (host_digest), whose pixels the M4's must
-// equal. Both reduce the pixels to a tile_hash.h digest.
+// One configuration of the matrix rendered twice: on an emulated core (run_on: counted, its stack
+// measured) and with the host build of the core (host_digest), whose pixels the emulated core's
+// must equal. Both reduce the pixels to a tile_hash.h digest.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "bench_protocol.h"
 #include "elf_image.h"
-#include "m4_emulator.h"
+#include "emulator.h"
 
 namespace tristream::bench_mcu {
 
@@ -31,8 +31,8 @@ struct Outcome {
 };
 
 // Opens, prepares and renders one configuration on `emu`; the open and the render are counted, the
-// stack is painted before the render. A configuration whose buffers do not fit the M4's RAM is
+// stack is painted before the render. A configuration whose buffers do not fit the emulated RAM is
 // skipped (ran false, `skipped` says why); a failing call of the core throws.
-Outcome run_on(M4Emulator& emu, const ElfImage& elf, const std::vector<std::uint8_t>& blob, const bench_params& p);
+Outcome run_on(Emulator& emu, const ElfImage& elf, const std::vector<std::uint8_t>& blob, const bench_params& p);
 
 }  // namespace tristream::bench_mcu

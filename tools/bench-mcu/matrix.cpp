@@ -22,6 +22,7 @@
 #include "core_bridge/pixel_format_names.h"
 #include "elf_image.h"
 #include "emulated_render.h"
+#include "emulator.h"
 #include "io/atomic_file.h"
 #include "m4_emulator.h"
 #include "panel_table.h"
@@ -76,8 +77,8 @@ CoreSize read_size(const std::string& path) {
 // One benchmark program (a core at one optimisation level with one method) on its emulator.
 struct Program {
   ElfImage elf;
-  std::unique_ptr<M4Emulator> emu;
-  std::unique_ptr<M4Emulator> checker;  // per-instruction counting, with --check-counts
+  std::unique_ptr<Emulator> emu;
+  std::unique_ptr<Emulator> checker;  // per-instruction counting, with --check-counts
   CoreSize core, full, compressed;  // compressed: the compressed-blob decoder (not in core or full)
 };
 
@@ -119,22 +120,41 @@ Matrix parse_matrix(const RunOptions& o) {
   return m;
 }
 
-// The benchmark programs by optimisation level and method, each read when first asked for.
+// The cores of --cpus, each once, each with its directory; without --cpus every core whose
+// directory is given.
+std::vector<Core> parse_cores(const RunOptions& o) {
+  std::vector<Core> cores;
+  for (const std::string& name : o.cpus) {
+    const Core c = parse_core(name);
+    if (std::find(cores.begin(), cores.end(), c) != cores.end()) continue;
+    if (o.elf_dirs[std::size_t(c)].empty())
+      throw UsageError("--cpus " + name + ": --" + name + "-elf-dir is needed (tools/bench-mcu/build-" + name + ".sh)");
+    cores.push_back(c);
+  }
+  if (o.cpus.empty())
+    for (Core c : all_cores)
+      if (!o.elf_dirs[std::size_t(c)].empty()) cores.push_back(c);
+  if (cores.empty()) throw UsageError("no core: give --m4-elf-dir (--elf-dir), --m0plus-elf-dir or --rv32imc-elf-dir");
+  if (!o.address_profile.empty() && cores.size() > 1)
+    throw UsageError("--profile-addresses profiles one core's programs: choose it with --cpus");
+  return cores;
+}
+
+// The benchmark programs by core, optimisation level and method, each read when first asked for.
 class Programs {
  public:
   explicit Programs(const RunOptions& o) : o_(o) {}
-  Program& get(const std::string& opt, const std::string& method) {
+  Program& get(Core core, const std::string& opt, const std::string& method) {
     const std::string key = opt + "_" + method;
-    auto it = programs_.find(key);
+    auto it = programs_.find(core_name(core) + ("/" + key));
     if (it != programs_.end()) return it->second;
-    const std::string& dir = o_.elf_dir;
-    Program& p = programs_[key];
+    const std::string& dir = o_.elf_dirs[std::size_t(core)];
+    Program& p = programs_[core_name(core) + ("/" + key)];
     p.elf = read_elf(dir + "/bench_" + key + ".elf");
-    const Core core = parse_core(o_.cpu);
-    p.emu = std::make_unique<M4Emulator>(p.elf, false, core);
+    p.emu = make_emulator(core, p.elf, false);
     p.emu->set_address_profile(!o_.address_profile.empty());
     p.emu->set_stack_chain(o_.stack_chain);
-    if (o_.check_counts) p.checker = std::make_unique<M4Emulator>(p.elf, true, core);
+    if (o_.check_counts) p.checker = make_emulator(core, p.elf, true);
     p.core = read_size(dir + "/ts_core_" + key + ".size");
     p.full = read_size(dir + "/ts_core_" + opt + "_full.size");
     p.compressed = read_size(dir + "/ts_core_" + key + ".compressed.size");
@@ -171,6 +191,7 @@ void pack_mesh(const Triangulation& tri, const std::string& mesh, const std::str
 // One configuration of the matrix: a mesh's blob of one kind, rendered at one output size in one
 // tiling by one program, dithered or not.
 struct Configuration {
+  Core core;
   const MeshBlobs& blobs;
   const std::string& kind;  // v1 or compressed
   Size size;
@@ -200,6 +221,7 @@ bench_params params_of(const Configuration& c) {
 // The line's first keys: what the configuration is.
 json configuration_json(const Configuration& c) {
   json j;
+  j["cpu"] = core_name(c.core);
   j["mesh"] = c.blobs.mesh;
   j["blob"] = c.kind;
   j["blob_bytes"] = c.blob().size();
@@ -328,7 +350,6 @@ struct Results {
 void run_configuration(const RunOptions& ro, Program& prog, const Configuration& c, Results& res) {
   const bench_params p = params_of(c);
   json j = configuration_json(c);
-  j["cpu"] = ro.cpu;
   const Outcome o = run_on(*prog.emu, prog.elf, c.blob(), p);
   if (!o.ran) {
     j["skipped"] = o.skipped;
@@ -345,7 +366,8 @@ void run_configuration(const RunOptions& ro, Program& prog, const Configuration&
     const bool within =
         o.stack_bytes <= (c.compressed() ? core_compressed_stack_bytes(method) : core_stack_bytes(method));
     j["stack_within_core_stack_bytes"] = within;
-    res.stacks_within &= within;
+    // The limits are the Cortex-M4's; another core's stack is reported against them, not held to them.
+    if (c.core == Core::m4) res.stacks_within &= within;
   }
   if (ro.check_counts) {
     const bool same = counts_agree(prog, c, p, o);
@@ -360,44 +382,60 @@ void run_configuration(const RunOptions& ro, Program& prog, const Configuration&
   const double pixels = double(c.width()) * c.height();
   res.rows.push_back({c.blobs.mesh, c.output_name(), c.tiling.name, c.blobs.method, c.opt, c.dither, c.compressed(),
                       per(rc.cycles, pixels), o.stack_bytes, c.blob().size(), o.open_counts.counted.cycles});
-  if (c.opt == "O2" && !c.dither)
+  if (c.opt == "O2" && !c.dither && c.core == Core::m4)
     res.panel_rows.push_back(
         {c.blobs.mesh, c.output_name(), c.tiling.name, c.blobs.method, c.kind, c.width(), c.height(), rc.cycles});
+}
+
+// The summary tables of one core's rows, titled by its name (the panel table: the clocks of
+// Cortex-M4 parts, its rows only).
+void print_tables(const RunOptions& o, Core core, const Results& res) {
+  std::vector<std::string> out_names;
+  for (const Row& r : res.rows)
+    if (std::find(out_names.begin(), out_names.end(), r.output) == out_names.end()) out_names.push_back(r.output);
+  print_summary(res.rows, o.meshes, out_names, o.tilings, core_title(core));
+  if (core == Core::m4) print_panel_table(res.panel_rows);
+  print_stack_summary(res.rows, o.methods, core_title(core));
 }
 
 }  // namespace
 
 int run_matrix(const RunOptions& o) {
   const Matrix matrix = parse_matrix(o);
-  const Core core = parse_core(o.cpu);
+  const std::vector<Core> cores = parse_cores(o);
   Programs programs(o);
-  Results res;
+  std::map<Core, Results> by_core;
   for (const std::string& mesh : o.meshes) {
     const Triangulation tri = make_mesh(mesh);
     for (const std::string& method : o.methods) {
       MeshBlobs blobs;
       pack_mesh(tri, mesh, method, blobs);
-      for (const std::string& kind : o.blob_kinds)
-        for (const Size& size : matrix.sizes)
-          for (const Tiling& t : matrix.tilings)
-            for (const std::string& opt : o.opts)
-              for (const std::string& d : o.dithers) {
-                Program& prog = programs.get(opt, method);
-                run_configuration(o, prog, Configuration{blobs, kind, size, t, opt, d == "on"}, res);
-              }
+      for (Core core : cores)
+        for (const std::string& kind : o.blob_kinds)
+          for (const Size& size : matrix.sizes)
+            for (const Tiling& t : matrix.tilings)
+              for (const std::string& opt : o.opts)
+                for (const std::string& d : o.dithers) {
+                  Program& prog = programs.get(core, opt, method);
+                  run_configuration(o, prog, Configuration{core, blobs, kind, size, t, opt, d == "on"}, by_core[core]);
+                }
     }
   }
-  std::vector<std::string> out_names;
-  for (const Row& r : res.rows)
-    if (std::find(out_names.begin(), out_names.end(), r.output) == out_names.end()) out_names.push_back(r.output);
-  print_summary(res.rows, o.meshes, out_names, o.tilings, core_title(core));
-  if (core == Core::m4) print_panel_table(res.panel_rows);  // its clocks are Cortex-M4 parts'
-  print_stack_summary(res.rows, o.methods);
-  if (!res.all_equal) std::fprintf(stderr, "bench_mcu: the emulated M4 differs from the host (pixels or counts)\n");
-  if (!res.stacks_within)
+  bool all_equal = true, stacks_within = true;
+  std::string address_lines;
+  for (Core core : cores) {
+    const Results& res = by_core[core];
+    print_tables(o, core, res);
+    if (!res.all_equal)
+      std::fprintf(stderr, "bench_mcu: the emulated %s differs from the host (pixels or counts)\n", core_title(core));
+    all_equal &= res.all_equal;
+    stacks_within &= res.stacks_within;
+    address_lines += res.address_lines;
+  }
+  if (!stacks_within)
     std::fprintf(stderr, "bench_mcu: a stack high-water mark exceeds core_stack_bytes (core_bridge/core_stack.h)\n");
-  if (!o.address_profile.empty()) write_file_atomically(o.address_profile, res.address_lines);
-  return res.all_equal && res.stacks_within ? 0 : 1;
+  if (!o.address_profile.empty()) write_file_atomically(o.address_profile, address_lines);
+  return all_equal && stacks_within ? 0 : 1;
 }
 
 }  // namespace tristream::bench_mcu

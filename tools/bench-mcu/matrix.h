@@ -1,16 +1,23 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
 // bench_mcu run: every configuration of the matrix (meshes x methods x blob kinds x outputs x
-// tilings x optimisation levels x dithering) on the emulated Cortex-M4, one JSON line each on stdout
-// in that order, then the summary tables (summary.h, panel_table.h).
+// tilings x optimisation levels x dithering) on each emulated core asked for (cores.h), one JSON line
+// each on stdout (per mesh and method, each core's configurations in turn), then the summary tables
+// per core (summary.h; panel_table.h for the Cortex-M4 only).
+#include <array>
 #include <string>
 #include <vector>
+
+#include "cores.h"
 
 namespace tristream::bench_mcu {
 
 struct RunOptions {
-  std::string elf_dir;     // the build directory of m4/ (build-m4.sh, build-m0plus.sh)
-  std::string cpu = "m4";  // the core the programs are built for and run on (parse_core)
+  // The build directory of each core's programs, by Core ("": not given): m4/ built by
+  // build-m4.sh and by build-m0plus.sh, riscv/ by build-rv32imc.sh.
+  std::array<std::string, all_cores.size()> elf_dirs;
+  // The cores to run (core_name), in this order; empty: every core whose directory is given.
+  std::vector<std::string> cpus;
   std::vector<std::string> meshes, methods, opts, dithers, outputs, tilings, blob_kinds;
   bool check_counts = false;  // run each configuration again counting per instruction
   bool check_stack = false;   // a stack above core_stack_bytes fails the run
@@ -19,7 +26,7 @@ struct RunOptions {
   bool stack_chain = false;     // the calls live at the stack's high-water mark on each line
 };
 
-// 0 when every render on the M4 equals the host's (and the checks asked for pass), else 1 with a
+// 0 when every render on every core equals the host's (and the checks asked for pass), else 1 with a
 // message on stderr. Throws UsageError for an unknown name in the matrix.
 int run_matrix(const RunOptions& options);
 

@@ -92,7 +92,7 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
   }
 }
 
-void print_stack_summary(const std::vector<Row>& rows, const std::vector<std::string>& methods) {
+void print_stack_summary(const std::vector<Row>& rows, const std::vector<std::string>& methods, const char* core) {
   for (const std::string& method : methods) {
     std::uint32_t most = 0, most_compressed = 0;
     for (const Row& r : rows) {
@@ -100,11 +100,12 @@ void print_stack_summary(const std::vector<Row>& rows, const std::vector<std::st
       std::uint32_t& m = r.compressed ? most_compressed : most;
       m = std::max(m, r.stack);
     }
-    std::printf("largest stack high-water mark, %s: %u bytes (core_stack_bytes: %zu)\n", method.c_str(), most,
-                core_stack_bytes(parse_core_method(method)));
+    std::printf("largest stack high-water mark on the %s, %s: %u bytes (core_stack_bytes: %zu)\n", core,
+                method.c_str(), most, core_stack_bytes(parse_core_method(method)));
     if (most_compressed)
-      std::printf("largest stack high-water mark, %s, compressed: %u bytes (core_compressed_stack_bytes: %zu)\n",
-                  method.c_str(), most_compressed, core_compressed_stack_bytes(parse_core_method(method)));
+      std::printf("largest stack high-water mark on the %s, %s, compressed: %u bytes (core_compressed_stack_bytes: "
+                  "%zu)\n",
+                  core, method.c_str(), most_compressed, core_compressed_stack_bytes(parse_core_method(method)));
   }
 }
 

@@ -30,9 +30,9 @@ inline double per(std::uint64_t v, double n) { return n > 0 ? double(v) / n : 0;
 // core: the titles' name of the core (core_title).
 void print_summary(const std::vector<Row>& rows, const std::vector<std::string>& meshes,
                    const std::vector<std::string>& outputs, const std::vector<std::string>& tilings,
-                   const char* core = "Cortex-M4");
+                   const char* core);
 // Per method the largest stack high-water mark, v1 and compressed, beside core_stack_bytes and
-// core_compressed_stack_bytes.
-void print_stack_summary(const std::vector<Row>& rows, const std::vector<std::string>& methods);
+// core_compressed_stack_bytes (the Cortex-M4's limits, beside any core's).
+void print_stack_summary(const std::vector<Row>& rows, const std::vector<std::string>& methods, const char* core);
 
 }  // namespace tristream::bench_mcu

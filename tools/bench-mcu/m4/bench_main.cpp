@@ -5,7 +5,8 @@
 // the harness loads the segments, sets SP and calls bench_open (counted apart: what ts_open costs),
 // bench_prepare, then bench_render. A compressed
 // blob (magic "TSTC") is rendered from its streams: prepare measures its workspace with the arena
-// as the measure's scratch (workspace_size decodes the streams once), render draws it.
+// as the measure's scratch (workspace_size decodes the streams once), render draws it. The RISC-V
+// build (../riscv) compiles this same file.
 #include <stddef.h>
 #include <stdint.h>
 
@@ -105,7 +106,11 @@ extern "C" void bench_render() {
   if (r.stage != BENCH_STAGE_PREPARED) return;
   tile_hash_init(&digest);
   uint32_t sp;
+#if defined(__riscv)
+  __asm__ volatile("mv %0, sp" : "=r"(sp));
+#else
   __asm__ volatile("mov %0, sp" : "=r"(sp));
+#endif
   r.sp_before_render = sp;
   const Status s = is_compressed ? render(compressed, params, tile_buffer, r.tile_buffer_bytes, workspace,
                                          r.workspace_bytes, bench_sink, &digest)
