@@ -62,9 +62,12 @@ M4Emulator::M4Emulator(const ElfImage& elf, bool per_instruction, Core core)
     check(uc_hook_add(uc_, &h, UC_HOOK_MEM_READ | UC_HOOK_MEM_WRITE, reinterpret_cast<void*>(access_hook), this, 1, 0),
           "add the alignment hook");
   divides_ = model_.find_divides(elf);
-  for (const DivideSite& d : divides_)
-    check(uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(divide_hook), this, d.address, d.address),
-          "add a division hook");
+  // Per-instruction counting costs its divisions in the instruction hook: unicorn runs through
+  // every code hook's range check on each instruction a hook covers.
+  if (!per_instruction_)
+    for (const DivideSite& d : divides_)
+      check(uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(divide_hook), this, d.address, d.address),
+            "add a division hook");
   std::sort(divides_.begin(), divides_.end(), [](const DivideSite& a, const DivideSite& b) {
     return a.address < b.address;
   });
@@ -263,7 +266,9 @@ void M4Emulator::on_insn(std::uint32_t address, std::uint32_t size) {
     fail("instruction at " + std::to_string(address) + " is not the next one of its translation block");
     return;
   }
-  count_insn(current_->decoded.insns[current_insn_]);
+  const DecodedInsn& insn = current_->decoded.insns[current_insn_];
+  count_insn(insn);
+  if (insn.klass == class_divide) on_divide(address);  // before it runs, as a division hook would
 }
 
 void M4Emulator::count_insn(const DecodedInsn& insn) {
