@@ -37,6 +37,14 @@ inline int64_t floor_div(int64_t n, int64_t d) {
   return (n % d != 0 && n < 0) ? q - 1 : q;
 }
 
+// n = q d + r with 0 <= r < d, for d > 0 (one hardware divide on Cortex-M3 and later).
+TS_INLINE inline void floor_divmod32(int32_t n, int32_t d, int32_t* q, int32_t* r) {
+  int32_t qq = n / d, rr = n - qq * d;
+  if (rr < 0) rr += d, --qq;
+  *q = qq;
+  *r = rr;
+}
+
 // High 64 bits of the 128-bit product a * b, from four 32 x 32 -> 64 products (targets without
 // a 128-bit type, such as Cortex-M; the result is the same everywhere).
 inline uint64_t mulhi_u64_portable(uint64_t a, uint64_t b) {
@@ -180,19 +188,11 @@ class Mod32RoundingDivider {
   explicit Mod32RoundingDivider(int32_t d) : half_(uint32_t(d)), den_(uint32_t(2 * d)) {}
   TS_INLINE uint32_t small(int32_t m) const {
     int32_t q, r;
-    floor_divmod(m, &q, &r);
+    floor_divmod32(m, int32_t(den_), &q, &r);  // D below 2^31
     return (uint32_t(q) << 9) + ((uint32_t(r) << 9) + half_) / den_;
   }
 
  private:
-  // m = q D + r with 0 <= r < D (D below 2^31: the truncated remainder is above -D).
-  TS_INLINE void floor_divmod(int32_t m, int32_t* q, int32_t* r) const {
-    const int32_t den = int32_t(den_);
-    int32_t qq = m / den, rr = m - qq * den;
-    if (rr < 0) rr += den, --qq;
-    *q = qq;
-    *r = rr;
-  }
   uint32_t half_;
   uint32_t den_;
 };

@@ -82,7 +82,7 @@ inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSet
   s->xr = xr;
   s->yr = yr;
   s->area2 = e.area2;
-  s->scan_path = true;
+  s->small_box = true;
   // E_k is A_k x + B_k y + C_k (per pixel: a = A 2^S, b = B 2^S): from the box's first pixel.
   const int32_t ox = xr - e.left, oy = yr - e.y0;
   TS_UNROLL
