@@ -86,8 +86,9 @@ struct BilinearShader {
   static constexpr bool large_reads_e_ref(int64_t area2) {
     return !(from_vertex0 && bilinear_preinv_division && PreinvRoundingDivider::fits(area2));
   }
-  // rows (shader.h: DrawsRows) where span's scalar path takes rounded values.
-  static constexpr bool draws_rows = rounded_scalar;
+  // rows (shader.h: DrawsRows) where span's scalar path takes rounded values; not when optimizing
+  // for size, where span's pixel loops are then one copy, inlined into span.
+  static constexpr bool draws_rows = rounded_scalar && !TS_SIZE;
 
   TS_BILINEAR_BEGIN void begin(const TriangleView& tv, const TriangleSetup& s) {
     xr = s.xr;
@@ -145,7 +146,7 @@ struct BilinearShader {
   // path, with the dithering tested once for the table.
   TS_SPAN_INLINE void rows(const RowSpan* table, int32_t y, int32_t n, int32_t cx0, int32_t cx1) {
     static_assert(rounded_scalar, "rows takes span's scalar path of rounded values");
-    if (TS_SIZE || !writer.dither) {
+    if (!writer.dither) {
       rows_with<false>(table, y, n, cx0, cx1);
     } else {
       rows_with<true>(table, y, n, cx0, cx1);
@@ -162,12 +163,7 @@ struct BilinearShader {
       const uint32_t v0 = c0.at_offset(dx, dy), d0 = c0.step();
       const uint32_t v1 = Channels == 3 ? c1.at_offset(dx, dy) : 0, d1 = Channels == 3 ? c1.step() : 0;
       const uint32_t v2 = Channels == 3 ? c2.at_offset(dx, dy) : 0, d2 = Channels == 3 ? c2.step() : 0;
-      uint8_t* const p = writer.at(cs, y);
-      if constexpr (TS_SIZE) {
-        writer.put_span_in_range(p, cs, ce, y, v0, v1, v2, d0, d1, d2);
-      } else {
-        writer.template put_span<Dither>(p, cs, ce, y, v0, v1, v2, d0, d1, d2);
-      }
+      writer.template put_span<Dither>(writer.at(cs, y), cs, ce, y, v0, v1, v2, d0, d1, d2);
     }
   }
   TS_SPAN_INLINE void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {

@@ -67,23 +67,29 @@ class RowBounds {
   // Rows y .. y + n - 1 into out[0 .. n - 1] (n >= 1): the next n rows, y being the row the bounds
   // are at (init's y0, then one past the last fill).
   void fill(RowSpan* out, int32_t y, int32_t n) {
-    if (switch_pending_ && split_ < y + n) {
-      const int32_t k = split_ - y;  // >= 0: the switch is never passed (init, and here)
-      if (k > 0) run(out, k);
-      const int32_t upper_q = bound_[short_side_].q;  // the upper short edge at row split_
+    // The rows before the switch to the lower short edge, then (if it falls in these rows) the
+    // others: one copy of the row loop.
+    int32_t k = switch_pending_ && split_ < y + n ? split_ - y : n;  // >= 0: the switch is never passed
+    int32_t upper_q = 0;
+    bool through_m = false;
+    for (;;) {
+      run(out, k);
+      if (k == n) break;
+      upper_q = bound_[short_side_].q;  // the upper short edge at row split_
+      through_m = exact_;
       switch_to_lower();
-      run(out + k, n - k);
-      if (exact_) {
-        // The row through m: the upper short edge's bound too, on the short edges' side.
-        if (short_side_) {
-          out[k].xe = min2(out[k].xe, upper_q);
-        } else {
-          out[k].xs = max2(out[k].xs, -upper_q);
-        }
-      }
-      return;
+      out += k;
+      n -= k;
+      k = n;
     }
-    run(out, n);
+    if (through_m) {
+      // The row through m (now out[0]): the upper short edge's bound too, on the short edges' side.
+      if (short_side_) {
+        out->xe = min2(out->xe, upper_q);
+      } else {
+        out->xs = max2(out->xs, -upper_q);
+      }
+    }
   }
 
  private:
@@ -107,6 +113,8 @@ class RowBounds {
     const int32_t bias = inclusive_edge(dx, dy, (tv_->flags & (boundary_edge0 << k)) != 0) ? 0 : 1;
     const int64_t num = int64_t(-dy) * (left_ * (1 << S) - px) + int64_t(dx) * (y * (1 << S) - py) - bias;
     const int32_t den = (dy < 0 ? -dy : dy) * (1 << S);
+    // In 32 bits where num fits (every box below 2^22 pixels); for size one form, whose divisions
+    // take 32 bits where their operands fit (floor_div).
     if (num == int64_t(int32_t(num))) {
       f->init32(int32_t(num), dx * (1 << S), den);
     } else {

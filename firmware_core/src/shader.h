@@ -23,11 +23,11 @@ namespace {
 // What a shader's begin needs besides the vertices: the edge coefficients (|a|, |b| < 2^20, see
 // detail/edge.h), the exact edge values at the reference pixel (xr, yr) (vertex 0 floored), and the
 // doubled area.
-// Triangles of the scan path (scan_path.h): pixel box below this many pixels each way and no
-// explicit corner. With SSE2 a row of a 16-column box costs about as much as the span steppers'
-// row, without their setup. Elsewhere the column scan pays per column, but the set-up it saves
-// costs more: 15, the largest box whose bilinear set-up divides in 32 bits (Mod32RoundingDivider,
-// 2d <= 2^17).
+// Small boxes: pixel box below this many pixels each way. With SSE2 they are the scan path's
+// triangles (scan_path.h, those without explicit corner): a row of a 16-column box costs about as
+// much as the span steppers' row, without their setup. Elsewhere 15, the largest box whose
+// bilinear set-up divides in 32 bits (Mod32RoundingDivider, 2d <= 2^17); the scan path takes the
+// smaller boxes of portable/rasterize.h (scan_path_extent).
 constexpr int32_t scan_max_extent = TS_USE_SSE2 ? 16 : 15;
 
 struct TriangleSetup {

@@ -91,11 +91,17 @@ TS_INLINE inline void draw_rows(Shader& shader, const RowSpan* rows, int32_t y, 
   }
 }
 
+// The scan path's boxes: below this many pixels each way. Its column walk costs per tested column
+// and row, the row bounds' set-up (two or three divided bounds) per triangle: on the Cortex-M4
+// bench the walk costs less only below about 8 pixels (kodim23 and the 40,000-triangle grid).
+constexpr int32_t scan_path_extent = 8;
+static_assert(scan_path_extent <= scan_max_extent, "scan-path boxes are small boxes (shader.h)");
+
 template <typename Shader>
 void rasterize_clipped(const TriangleView& tv, const Rect& clip, const PixelBox& box, Shader& shader) {
   // The scan path: small boxes without explicit corners, in int32.
   constexpr uint16_t any_corner = corner_explicit0 | corner_explicit0 << 1 | corner_explicit0 << 2;
-  if (!(tv.flags & any_corner) && box.right - box.left < scan_max_extent && box.bottom - box.top < scan_max_extent) {
+  if (!(tv.flags & any_corner) && box.right - box.left < scan_path_extent && box.bottom - box.top < scan_path_extent) {
     const int32_t area2 = (tv.x[1] - tv.x[0]) * (tv.y[2] - tv.y[0]) - (tv.y[1] - tv.y[0]) * (tv.x[2] - tv.x[0]);
     if (area2 <= 0) return;  // collapsed by down-scaling
     scan_small(tv, area2, box.left, box.right, box.y0, box.y1, clip.x0, clip.x1 - 1, shader);
