@@ -62,13 +62,15 @@ bench: build
 	$(BUILD)/bin/bench_core
 	bash tests/core/callgrind_core.sh $(BUILD)/bin/core_frames
 
-# firmware_core on an emulated Cortex-M4 (docs/MCU_BENCH.md): instructions, modelled cycles,
-# stack, RAM and flash per configuration, pixels checked against the host build. A subset:
+# firmware_core on an emulated Cortex-M4, then Cortex-M0+ (docs/MCU_BENCH.md): instructions,
+# modelled cycles, stack, RAM and flash per configuration, pixels checked against the host build.
+# BENCH_MCU_CPUS="m0plus" runs one core. A subset:
 # make bench-mcu BENCH_MCU_ARGS="--meshes kodim23 --opts O2 --dither off".
+BENCH_MCU_CPUS ?= m4 m0plus
 bench-mcu: deps
 	@bash tools/install-deps.sh mcu
 	$(MAKE) build
-	bash tools/bench-mcu/run.sh $(BUILD) $(BENCH_MCU_ARGS)
+	BENCH_MCU_CPUS="$(BENCH_MCU_CPUS)" bash tools/bench-mcu/run.sh $(BUILD) $(BENCH_MCU_ARGS)
 
 # firmware_core for Cortex-M4 (size report, fails if an allocator is linked), then the golden-image
 # test as a 32-bit ARM binary under qemu-arm (pixels must equal the x86-64 goldens).

@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "bytes.h"
 #include "output_mapping.h"
 #include "triangle_records.h"
 #include "tristream/blob.h"
@@ -248,9 +249,10 @@ struct BandStore {
     }
   }
 
-  // Little-endian (the v1 layout); on a little-endian target one store each.
+  // Little-endian (the v1 layout); on a little-endian target with unaligned stores one store
+  // each, else byte stores (TS_UNALIGNED_STORES: a memcpy would be a call).
   static void store16(uint8_t* p, uint16_t v) {
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && TS_UNALIGNED_STORES
     memcpy(p, &v, 2);
 #else
     p[0] = uint8_t(v);
@@ -258,7 +260,7 @@ struct BandStore {
 #endif
   }
   static void store32(uint8_t* p, uint32_t v) {
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && TS_UNALIGNED_STORES
     memcpy(p, &v, 4);
 #else
     store16(p, uint16_t(v));
@@ -267,11 +269,24 @@ struct BandStore {
   }
   static uint16_t load16(const uint8_t* p) { return uint16_t(p[0] | (p[1] << 8)); }
 
+  // A section's start, 4-aligned, with that alignment told to the compiler where a halfword or
+  // word access must be aligned (TS_UNALIGNED_STORES 0): else it makes each copy of constant size
+  // from or to the section a call of memcpy.
+  static uint8_t* aligned4(uint8_t* p) {
+#if TS_UNALIGNED_STORES
+    return p;
+#else
+    return static_cast<uint8_t*>(__builtin_assume_aligned(p, 4));
+#endif
+  }
+
   // memmove of align4(n) bytes between 4-aligned sections, a word at a time (the C library's
   // memmove on a microcontroller is often a byte loop); the rounding stays inside both sections,
   // which are 4-aligned and at least align4(n) bytes.
   static void move_words(uint8_t* to, const uint8_t* from, size_t n) {
     const size_t words = (n + 3) / 4;
+    to = aligned4(to);
+    from = aligned4(const_cast<uint8_t*>(from));
     if (to < from) {
       for (size_t i = 0; i < words; ++i) memcpy(to + 4 * i, from + 4 * i, 4);
     } else if (to > from) {
@@ -424,7 +439,7 @@ struct BandStore {
   void drop_ended_as(const Mapping& map, int32_t y0) {
     constexpr size_t stride = R::stride;
     const uint32_t n = count();
-    uint8_t* const tri = triangles();
+    uint8_t* const tri = aligned4(triangles());
     const uint8_t* const pos = base;
     uint32_t kept = 0;
     for (uint32_t i = 0; i < n;) {
@@ -464,8 +479,8 @@ struct BandStore {
   void compact_vertices() {
     const uint32_t n = count(), nv = vertices, words_n = (nv + 31) / 32;
     uint8_t* const tri = triangles();
-    uint8_t* const v = values();
-    uint8_t* const g = gradients();
+    uint8_t* const v = aligned4(values());
+    uint8_t* const g = aligned4(gradients());
     uint32_t* const marks = reinterpret_cast<uint32_t*>(base + bytes - rank_table_bytes(slots));
     uint16_t* const before = reinterpret_cast<uint16_t*>(marks + (slots + 31) / 32);
     for (uint32_t w = 0; w < words_n; ++w) marks[w] = 0;
@@ -491,7 +506,7 @@ struct BandStore {
       if (!is_kept(s)) continue;
       if (kept != s) {
         // Copies of constant sizes, which compilers inline (a call per vertex costs more).
-        memcpy(base + 4 * size_t(kept), base + 4 * size_t(s), 4);
+        memcpy(aligned4(base) + 4 * size_t(kept), aligned4(base) + 4 * size_t(s), 4);
         if (values_per_vertex == 1) {
           memcpy(v + 2 * size_t(kept), v + 2 * size_t(s), 2);
           if (has_gradients) memcpy(g + 8 * size_t(kept), g + 8 * size_t(s), 8);

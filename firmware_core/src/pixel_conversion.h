@@ -5,6 +5,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "bytes.h"
 #include "tuning.h"
 #include "tristream/pixel_format.h"
 
@@ -160,9 +161,10 @@ TS_INLINE inline uint16_t pack565_bytes_by_table(uint32_t r, uint32_t g, uint32_
 }
 
 // Stores a halfword made by rgb565_bytes or pack565_bytes_by_table: its two bytes in the
-// little-endian order of their bits, whatever the host's order.
+// little-endian order of their bits, whatever the host's order (two byte stores where a halfword
+// store needs alignment: TS_UNALIGNED_STORES).
 TS_INLINE inline void store565_bytes(uint8_t* p, uint16_t h) {
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && TS_UNALIGNED_STORES
   memcpy(p, &h, 2);  // one halfword store
 #else
   p[0] = uint8_t(h & 0xFF);
@@ -175,7 +177,7 @@ TS_INLINE inline void store565_bytes(uint8_t* p, uint16_t h) {
 template <PixelFormat F>
 inline void store565(uint8_t* p, uint16_t w) {
   static_assert(F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be, "an RGB565 format");
-#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && TS_UNALIGNED_STORES
   const uint16_t bytes = F == PixelFormat::rgb565_be ? uint16_t(w >> 8 | w << 8) : w;
   memcpy(p, &bytes, 2);
 #else

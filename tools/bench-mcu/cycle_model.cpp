@@ -6,9 +6,13 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <string_view>
+
+#include "common/errors.h"
+#include "cycle_model_m0plus.h"
 
 namespace tristream::bench_mcu {
 
@@ -159,7 +163,17 @@ const char* class_name(int c) {
   return c >= 0 && c < class_count ? names[c] : "?";
 }
 
-CycleModel::CycleModel() {
+Core parse_core(const std::string& name) {
+  if (name == "m4") return Core::m4;
+  if (name == "m0plus") return Core::m0plus;
+  throw UsageError("unknown core '" + name + "' (expected m4 or m0plus)");
+}
+
+const char* core_title(Core core) { return core == Core::m0plus ? "Cortex-M0+" : "Cortex-M4"; }
+
+int CycleModel::taken_extra() const { return core_ == Core::m0plus ? m0plus_taken_extra : pipeline_refill; }
+
+CycleModel::CycleModel(Core core) : core_(core) {
   csh h = 0;
   if (cs_open(CS_ARCH_ARM, cs_mode(CS_MODE_THUMB | CS_MODE_MCLASS), &h) != CS_ERR_OK)
     throw std::runtime_error("capstone: cannot open a Thumb (M-profile) disassembler");
@@ -185,7 +199,14 @@ bool CycleModel::decode_block(const std::uint8_t* code, std::uint32_t size, std:
   Context ctx;
   for (std::size_t i = 0; i < n; ++i) {
     Context next;
-    const DecodedInsn d = cost(h, insns[i], ctx, &next, it_left > 0);
+    std::string refused;
+    const DecodedInsn d =
+        core_ == Core::m0plus ? cost_m0plus(insns[i], &refused) : cost(h, insns[i], ctx, &next, it_left > 0);
+    if (!refused.empty() && out->refused.empty()) {
+      char at[16];
+      std::snprintf(at, sizeof at, "0x%08x ", unsigned(insns[i].address));
+      out->refused = at + refused;
+    }
     if (it_left > 0) --it_left;
     if (insns[i].id == ARM_INS_IT) it_left = int(std::strlen(insns[i].mnemonic)) - 1;  // it, itt, ite, ...
     ctx = next;
@@ -206,7 +227,9 @@ int CycleModel::first_cycles_after(const std::uint8_t* code, std::uint32_t size,
   cs_insn* insn = nullptr;
   if (cs_disasm(h, code, size, address, 1, &insn) != 1) return -1;
   Context next;
-  const int cycles = cost(h, *insn, prev, &next, it_left > 0).cycles;
+  std::string refused;
+  const int cycles =
+      core_ == Core::m0plus ? cost_m0plus(*insn, &refused).cycles : cost(h, *insn, prev, &next, it_left > 0).cycles;
   cs_free(insn, 1);
   return cycles;
 }

@@ -7,6 +7,7 @@
 // conditional branch costs the pipeline refill P, and a division costs 2..12 cycles by its
 // operands. Zero-wait-state memory.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "elf_image.h"
@@ -16,6 +17,14 @@ namespace tristream::bench_mcu {
 // P of the TRM: the cycles of a pipeline refill after a taken branch (1..3 on the M4, by the
 // target's alignment and width and whether the branch was speculated); one value for all.
 inline constexpr int pipeline_refill = 2;
+
+// The cores the bench models: the Cortex-M4 (this file's model) and the Cortex-M0+ (ARMv6-M,
+// cycle_model_m0plus.h).
+enum class Core { m4, m0plus };
+// "m4" or "m0plus"; throws UsageError for another name.
+Core parse_core(const std::string& name);
+// "Cortex-M4", "Cortex-M0+".
+const char* core_title(Core core);
 
 enum InsnClass : std::uint8_t {
   class_alu,        // data processing, moves, shifts, compares, extends, bit fields, IT, NOP
@@ -59,6 +68,7 @@ struct DecodedBlock {
   std::vector<DecodedInsn> insns;
   InsnContext exit;  // after the last instruction
   int it_left = 0;   // as decoded
+  std::string refused;  // an instruction the core does not have: "0x<address> <mnemonic> <operands>"
   bool ends_with_conditional_branch() const { return !insns.empty() && insns.back().conditional_branch; }
 };
 
@@ -71,7 +81,7 @@ struct DivideSite {
 
 class CycleModel {
  public:
-  CycleModel();
+  explicit CycleModel(Core core = Core::m4);
   ~CycleModel();
   CycleModel(const CycleModel&) = delete;
   CycleModel& operator=(const CycleModel&) = delete;
@@ -88,11 +98,14 @@ class CycleModel {
   // first instruction so, as if the two were one block.
   int first_cycles_after(const std::uint8_t* code, std::uint32_t size, std::uint32_t address, const InsnContext& prev,
                          int it_left) const;
+  // Cycles a conditional branch costs more when taken.
+  int taken_extra() const;
   // Every SDIV and UDIV in the image's Thumb code ranges.
   std::vector<DivideSite> find_divides(const ElfImage& elf) const;
 
  private:
   std::size_t handle_ = 0;
+  Core core_;
 };
 
 // Cycles of SDIV / UDIV: 2 when the quotient is 0 (or the divisor is 0), else 2 plus the number

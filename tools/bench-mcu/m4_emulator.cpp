@@ -4,6 +4,7 @@
 #include <unicorn/unicorn.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 namespace tristream::bench_mcu {
@@ -20,15 +21,20 @@ void block_hook(uc_engine*, std::uint64_t address, std::uint32_t size, void* sel
 void insn_hook(uc_engine*, std::uint64_t address, std::uint32_t size, void* self) {
   static_cast<M4Emulator*>(self)->on_insn(std::uint32_t(address), size);
 }
+void access_hook(uc_engine*, uc_mem_type, std::uint64_t address, int size, std::int64_t, void* self) {
+  static_cast<M4Emulator*>(self)->on_access(std::uint32_t(address), size);
+}
 void divide_hook(uc_engine*, std::uint64_t address, std::uint32_t, void* self) {
   static_cast<M4Emulator*>(self)->on_divide(std::uint32_t(address));
 }
 
 }  // namespace
 
-M4Emulator::M4Emulator(const ElfImage& elf, bool per_instruction) : elf_(elf), per_instruction_(per_instruction) {
+M4Emulator::M4Emulator(const ElfImage& elf, bool per_instruction, Core core)
+    : elf_(elf), model_(core), taken_extra_(model_.taken_extra()), per_instruction_(per_instruction) {
   check(uc_open(UC_ARCH_ARM, uc_mode(UC_MODE_THUMB | UC_MODE_MCLASS), &uc_), "open");
-  check(uc_ctl_set_cpu_model(uc_, UC_CPU_ARM_CORTEX_M4), "select the Cortex-M4");
+  check(uc_ctl_set_cpu_model(uc_, core == Core::m0plus ? UC_CPU_ARM_CORTEX_M0 : UC_CPU_ARM_CORTEX_M4),
+        "select the CPU model");
   check(uc_mem_map(uc_, flash_base, flash_size, UC_PROT_READ | UC_PROT_EXEC), "map flash");
   check(uc_mem_map(uc_, ram_base, ram_size, UC_PROT_READ | UC_PROT_WRITE), "map RAM");
   check(uc_mem_map(uc_, rom_base, rom_size, UC_PROT_READ), "map the blob region");
@@ -52,6 +58,9 @@ M4Emulator::M4Emulator(const ElfImage& elf, bool per_instruction) : elf_(elf), p
   check(uc_hook_add(uc_, &h, UC_HOOK_BLOCK, reinterpret_cast<void*>(block_hook), this, flash_base,
                     flash_base + flash_size - 1),
         "add the block hook");
+  if (core == Core::m0plus)
+    check(uc_hook_add(uc_, &h, UC_HOOK_MEM_READ | UC_HOOK_MEM_WRITE, reinterpret_cast<void*>(access_hook), this, 1, 0),
+          "add the alignment hook");
   divides_ = model_.find_divides(elf);
   for (const DivideSite& d : divides_)
     check(uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(divide_hook), this, d.address, d.address),
@@ -124,12 +133,14 @@ const M4Emulator::Block& M4Emulator::block_at(std::uint32_t address, std::uint32
     fail("cannot decode the block at 0x" + std::to_string(address) + " (" + std::to_string(size) + " bytes)");
     return none;
   }
+  if (!b.decoded.refused.empty()) fail("not an ARMv6-M instruction: " + b.decoded.refused);
   for (const DecodedInsn& insn : b.decoded.insns)
     if (insn.klass == class_divide &&
         !std::binary_search(divides_.begin(), divides_.end(), DivideSite{insn.address},
                             [](const DivideSite& x, const DivideSite& y) { return x.address < y.address; }))
       fail("a division at " + std::to_string(insn.address) + " outside the image's code ranges");
   b.function = function_of(address);
+  b.entry = address == functions_[b.function].begin;
   b.excluded = address >= exclude_begin_ && address < exclude_end_;
   if (index < 0) {
     index = std::int32_t(blocks_.size());
@@ -145,9 +156,9 @@ void M4Emulator::resolve_pending(std::uint32_t next_address) {
   if (!pending_) return;
   pending_ = false;
   if (next_address == pending_fallthrough_) return;
-  pending_counts_->cycles += pipeline_refill;
+  pending_counts_->cycles += std::uint64_t(taken_extra_);
   pending_counts_->taken_branches += 1;
-  if (pending_counts_ == &run_.counted) run_.function_cycles[pending_function_] += pipeline_refill;
+  if (pending_counts_ == &run_.counted) run_.function_cycles[pending_function_] += std::uint64_t(taken_extra_);
 }
 
 // A block entered by falling through from the block that ran before it (no branch between): its
@@ -199,7 +210,9 @@ void M4Emulator::on_block(std::uint32_t address, std::uint32_t size) {
     return;
   }
   if (stack_chain_) watch_stack(address);
+  block_address_ = address;
   const Block& b = block_at(address, size);
+  if (b.entry && !b.excluded) run_.function_entries[b.function] += 1;
   if (per_instruction_) {
     finish_block();
     current_ = &b;
@@ -285,6 +298,18 @@ void M4Emulator::on_divide(std::uint32_t address) {
   if (!excluded) run_.function_cycles[function_of(address)] += extra;
 }
 
+// A load or store of the Cortex-M0+ (every access of the program; the harness's own reads and
+// writes do not reach the hook): ARMv6-M faults on a halfword or word access not aligned to its
+// size, which unicorn would perform. Unicorn's PC is not exact inside a block: the block is named.
+void M4Emulator::on_access(std::uint32_t address, int size) {
+  if (size > 1 && address % std::uint32_t(size) != 0) {
+    char what[112];
+    std::snprintf(what, sizeof what, "unaligned %d-byte access to 0x%08x in the block at 0x%08x (", size,
+                  unsigned(address), unsigned(block_address_));
+    fail(what + functions_[function_of(block_address_)].name + ")");
+  }
+}
+
 // Whether the halfwords before return_address (Thumb bit clear) are a BL, or a BLX of a register.
 bool M4Emulator::follows_call(std::uint32_t return_address) {
   if (return_address < flash_base + 4 || return_address - flash_base >= flash_size) return false;
@@ -318,6 +343,7 @@ RunCounts M4Emulator::call(std::uint32_t function, std::uint32_t stack_top, cons
   if (args.size() > 4) throw std::runtime_error("call: at most 4 register arguments");
   run_ = RunCounts{};
   run_.function_cycles.assign(functions_.size(), 0);
+  run_.function_entries.assign(functions_.size(), 0);
   if (address_profile_) run_.block_runs.assign(flash_size / 2, 0);
   error_.clear();
   pending_ = false;

@@ -36,6 +36,9 @@ struct RunCounts {
   Counts counted;   // everything but the excluded range
   Counts excluded;  // the excluded range (the benchmark's sink)
   std::vector<std::uint64_t> function_cycles;  // counted cycles per function of functions()
+  // Counted runs of a block starting at each function's first instruction: its calls (and any
+  // branch back to its start).
+  std::vector<std::uint64_t> function_entries;
   // With set_address_profile(true): how many times a counted block started at each halfword of
   // flash, by (address - flash_base) / 2 (see M4Emulator::block_cost for its size and static cost;
   // branch refills and division extras are in the totals only).
@@ -55,7 +58,10 @@ class M4Emulator {
  public:
   // per_instruction: count with a hook on every instruction instead (slow; the check that block
   // counting is exact: same instructions and cycles).
-  explicit M4Emulator(const ElfImage& elf, bool per_instruction = false);
+  // core: Core::m0plus runs unicorn's Cortex-M0 model, costs by cycle_model_m0plus.h, refuses any
+  // instruction outside ARMv6-M and any halfword or word access not aligned to its size (the
+  // emulator would run both).
+  explicit M4Emulator(const ElfImage& elf, bool per_instruction = false, Core core = Core::m4);
   ~M4Emulator();
   M4Emulator(const M4Emulator&) = delete;
   M4Emulator& operator=(const M4Emulator&) = delete;
@@ -83,12 +89,14 @@ class M4Emulator {
   void on_block(std::uint32_t address, std::uint32_t size);
   void on_insn(std::uint32_t address, std::uint32_t size);
   void on_divide(std::uint32_t address);
+  void on_access(std::uint32_t address, int size);
 
  private:
   struct Block {
     DecodedBlock decoded;
     std::uint32_t function = 0;
     bool excluded = false;
+    bool entry = false;  // starts at its function's first instruction
     // Cycles to add when entered by falling through (entry_cycles), once known.
     bool fallthrough_known = false;
     int fallthrough_cycles = 0;
@@ -108,6 +116,7 @@ class M4Emulator {
   const ElfImage& elf_;
   uc_struct* uc_ = nullptr;
   CycleModel model_;
+  int taken_extra_;
   bool per_instruction_;
   bool address_profile_ = false;
   std::uint32_t halt_ = 0;
@@ -120,6 +129,7 @@ class M4Emulator {
   std::string error_;
   bool stack_chain_ = false;
   std::uint32_t stack_top_ = 0, lowest_sp_ = 0;
+  std::uint32_t block_address_ = 0;  // the block running (the Cortex-M0+'s alignment errors name it)
   // Pending taken-branch decision: the last block (or instruction) was a conditional branch.
   bool pending_ = false;
   // The block that ran last: where it ended and the context its last instruction left.

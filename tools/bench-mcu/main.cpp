@@ -30,7 +30,9 @@ int main(int argc, char** argv) {
   o.outputs = {"native", "320x240", "240x240"};
   o.tilings = {"tiles32", "bands16", "frame"};
   o.blob_kinds = {"v1", "compressed"};
-  run_cmd->add_option("--elf-dir", o.elf_dir, "Build directory of tools/bench-mcu/m4 (build-m4.sh)")->required();
+  run_cmd->add_option("--elf-dir", o.elf_dir, "Build directory of tools/bench-mcu/m4 (build-m4.sh, build-m0plus.sh)")
+      ->required();
+  run_cmd->add_option("--cpu", o.cpu, "m4 or m0plus: the core the programs were built for")->capture_default_str();
   run_cmd->add_option("--meshes", o.meshes, "kodim23, scene4k, grid40k")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--methods", o.methods, "bilinear, zienkiewicz")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--opts", o.opts, "O2, Os")->delimiter(',')->capture_default_str();
@@ -55,8 +57,10 @@ int main(int argc, char** argv) {
   CLI::App* cal_cmd = app.add_subcommand("calibrate", "Count the calibration loops and compare with their table");
   std::string cal_elf;
   cal_cmd->add_option("elf", cal_elf, "calibrate.elf")->required();
+  std::string cal_cpu = "m4";
+  cal_cmd->add_option("--cpu", cal_cpu, "m4 or m0plus: the core calibrate.elf was built for")->capture_default_str();
   return run_tool("bench_mcu", app, argc, argv, [&]() -> int {
-    if (*cal_cmd) return calibrate(cal_elf);
+    if (*cal_cmd) return calibrate(cal_elf, parse_core(cal_cpu));
     return run_matrix(o);
   });
 }

@@ -130,10 +130,11 @@ class Programs {
     const std::string& dir = o_.elf_dir;
     Program& p = programs_[key];
     p.elf = read_elf(dir + "/bench_" + key + ".elf");
-    p.emu = std::make_unique<M4Emulator>(p.elf);
+    const Core core = parse_core(o_.cpu);
+    p.emu = std::make_unique<M4Emulator>(p.elf, false, core);
     p.emu->set_address_profile(!o_.address_profile.empty());
     p.emu->set_stack_chain(o_.stack_chain);
-    if (o_.check_counts) p.checker = std::make_unique<M4Emulator>(p.elf, true);
+    if (o_.check_counts) p.checker = std::make_unique<M4Emulator>(p.elf, true, core);
     p.core = read_size(dir + "/ts_core_" + key + ".size");
     p.full = read_size(dir + "/ts_core_" + opt + "_full.size");
     p.compressed = read_size(dir + "/ts_core_" + key + ".compressed.size");
@@ -271,7 +272,8 @@ json profile_json(const Program& prog, const Outcome& o, int profile) {
   json top = json::array();
   for (std::size_t i = 0; i < f.size() && int(i) < profile; ++i)
     top.push_back({{"function", demangled(prog.emu->functions()[f[i].second].name)},
-                   {"cycles_share", round2(100.0 * double(f[i].first) / double(o.counts.counted.cycles))}});
+                   {"cycles_share", round2(100.0 * double(f[i].first) / double(o.counts.counted.cycles))},
+                   {"entries", o.counts.function_entries[f[i].second]}});
   return top;
 }
 
@@ -326,6 +328,7 @@ struct Results {
 void run_configuration(const RunOptions& ro, Program& prog, const Configuration& c, Results& res) {
   const bench_params p = params_of(c);
   json j = configuration_json(c);
+  j["cpu"] = ro.cpu;
   const Outcome o = run_on(*prog.emu, prog.elf, c.blob(), p);
   if (!o.ran) {
     j["skipped"] = o.skipped;
@@ -366,6 +369,7 @@ void run_configuration(const RunOptions& ro, Program& prog, const Configuration&
 
 int run_matrix(const RunOptions& o) {
   const Matrix matrix = parse_matrix(o);
+  const Core core = parse_core(o.cpu);
   Programs programs(o);
   Results res;
   for (const std::string& mesh : o.meshes) {
@@ -386,8 +390,8 @@ int run_matrix(const RunOptions& o) {
   std::vector<std::string> out_names;
   for (const Row& r : res.rows)
     if (std::find(out_names.begin(), out_names.end(), r.output) == out_names.end()) out_names.push_back(r.output);
-  print_summary(res.rows, o.meshes, out_names, o.tilings);
-  print_panel_table(res.panel_rows);
+  print_summary(res.rows, o.meshes, out_names, o.tilings, core_title(core));
+  if (core == Core::m4) print_panel_table(res.panel_rows);  // its clocks are Cortex-M4 parts'
   print_stack_summary(res.rows, o.methods);
   if (!res.all_equal) std::fprintf(stderr, "bench_mcu: the emulated M4 differs from the host (pixels or counts)\n");
   if (!res.stacks_within)

@@ -9,7 +9,8 @@
 namespace tristream::bench_mcu {
 
 struct RunOptions {
-  std::string elf_dir;  // the build directory of m4/ (build-m4.sh)
+  std::string elf_dir;     // the build directory of m4/ (build-m4.sh, build-m0plus.sh)
+  std::string cpu = "m4";  // the core the programs are built for and run on (parse_core)
   std::vector<std::string> meshes, methods, opts, dithers, outputs, tilings, blob_kinds;
   bool check_counts = false;  // run each configuration again counting per instruction
   bool check_stack = false;   // a stack above core_stack_bytes fails the run

@@ -21,7 +21,7 @@ std::string fmt(double v, const char* f = "%.0f") {
 
 // The human summary: cycles per pixel side by side, and the ratios between configurations.
 void print_summary(const std::vector<Row>& rows, const std::vector<std::string>& meshes,
-                   const std::vector<std::string>& outputs, const std::vector<std::string>& tilings) {
+                   const std::vector<std::string>& outputs, const std::vector<std::string>& tilings, const char* core) {
   auto find = [&](const std::string& mesh, const std::string& out, const std::string& tiling,
                   const std::string& method, const std::string& opt, bool dither) -> const Row* {
     for (const Row& r : rows)
@@ -35,7 +35,7 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
     return a && b && b->cycles_per_pixel > 0 ? fmt(a->cycles_per_pixel / b->cycles_per_pixel, "%.2f")
                                               : std::string("-");
   };
-  std::printf("\nModelled Cortex-M4 cycles per output pixel, RGB565 BE (zero wait states)\n");
+  std::printf("\nModelled %s cycles per output pixel, RGB565 BE (zero wait states)\n", core);
   std::printf("%-9s %-8s %-8s | %-22s | %-22s | %-11s | %-11s | %-11s | %s\n", "mesh", "output", "tiling",
               "bilinear O2 / Os", "zienkiewicz O2 / Os", "zienk/bil", "Os/O2 b z", "dither b z", "stack O2 Os");
   for (const std::string& mesh : meshes)
@@ -62,7 +62,7 @@ void print_summary(const std::vector<Row>& rows, const std::vector<std::string>&
       }
   // What opening each blob costs (open_blob checks every byte of a v1 blob and its CRC-32;
   // open_compressed_blob the header and the layer table), once per mesh, method, level and kind.
-  std::printf("\nModelled Cortex-M4 cycles of ts_open (open_blob, open_compressed_blob)\n");
+  std::printf("\nModelled %s cycles of ts_open (open_blob, open_compressed_blob)\n", core);
   std::printf("%-9s %-12s %-3s %-10s | %9s %11s %15s\n", "mesh", "method", "opt", "blob", "bytes", "cycles",
               "cycles per byte");
   std::vector<const Row*> opened;

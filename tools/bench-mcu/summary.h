@@ -27,8 +27,10 @@ inline double per(std::uint64_t v, double n) { return n > 0 ? double(v) / n : 0;
 
 // The cycles per pixel, ts_open and compressed tables, rows in the order of meshes, outputs
 // (their names, WxH) and tilings.
+// core: the titles' name of the core (core_title).
 void print_summary(const std::vector<Row>& rows, const std::vector<std::string>& meshes,
-                   const std::vector<std::string>& outputs, const std::vector<std::string>& tilings);
+                   const std::vector<std::string>& outputs, const std::vector<std::string>& tilings,
+                   const char* core = "Cortex-M4");
 // Per method the largest stack high-water mark, v1 and compressed, beside core_stack_bytes and
 // core_compressed_stack_bytes.
 void print_stack_summary(const std::vector<Row>& rows, const std::vector<std::string>& methods);
