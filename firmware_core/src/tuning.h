@@ -102,6 +102,14 @@ constexpr bool saturates = true;
 constexpr bool saturates = false;
 #endif
 
+// Whether __builtin_ctz and __builtin_clz are instructions (Cortex-M3 and later: CLZ, RBIT; x86-64;
+// RISC-V with Zbb), not library calls (ARMv6-M, RISC-V without Zbb).
+#if defined(__ARM_FEATURE_CLZ) || defined(__x86_64__) || defined(__aarch64__) || defined(__riscv_zbb)
+constexpr bool scans_bits = true;
+#else
+constexpr bool scans_bits = false;
+#endif
+
 // ZienkiewiczShader's forward differencing: with SSE2 set up within span, on the first long row
 // (a separate call costs x86-64 more than it saves); elsewhere by first_long_row, a tail call from
 // span, so that span's frame is gone before the set-up's (the deepest stack on Cortex-M).

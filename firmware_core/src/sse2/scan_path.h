@@ -39,6 +39,15 @@ class RowMasks {
     init<1>(row, a, b);
     init<2>(row, a, b);
   }
+  // The current row's covered columns [*first, *last] within box (offsets from its first column),
+  // or false for none.
+  TS_INLINE bool columns(uint32_t box, int32_t* first, int32_t* last) const {
+    const uint32_t mask = covered() & box;
+    if (!mask) return false;
+    *first = __builtin_ctz(mask);
+    *last = 31 - __builtin_clz(mask);
+    return true;
+  }
   TS_INLINE uint32_t covered() const {
     __m128i any_negative[4];
     for (int j = 0; j < Groups; ++j) any_negative[j] = _mm_or_si128(_mm_or_si128(e_[0][j], e_[1][j]), e_[2][j]);
