@@ -110,7 +110,24 @@ TEST_CASE("ShortRoundingDivider equals round_div wherever |2n + d| 2d < 2^64") {
   }
 }
 
-TEST_CASE("Mod32RoundingDivider equals round_div of m 2^8 modulo 2^32 wherever 2d <= 2^17") {
+TEST_CASE("mulhi_u32 and its 16-bit form are the high word of the 64-bit product") {
+  std::mt19937_64 rng(32);
+  std::vector<std::uint32_t> values = {0, 1, 2, 0xFFFFu, 0x10000u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+  for (int i = 0; i < 2000; ++i) values.push_back(std::uint32_t(rng() >> (32 + rng() % 32)));
+  for (std::uint32_t a : values) {
+    for (std::uint32_t b : values) {
+      const std::uint32_t want = std::uint32_t((std::uint64_t(a) * b) >> 32);
+      INFO("a " << a << " b " << b);
+      REQUIRE(mulhi_u32_portable(a, b) == want);
+      REQUIRE(mulhi_u32(a, b) == want);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("Mod32RoundingDivider (by divisions and by reciprocal) equals round_div of m 2^8 modulo 2^32 "
+                   "wherever 2d <= 2^17",
+                   "", Mod32RoundingDividerOf<false>, Mod32RoundingDividerOf<true>) {
+  using Mod32RoundingDivider = TestType;
   std::mt19937_64 rng(17);
   constexpr std::int64_t d_max = std::int64_t(Mod32RoundingDivider::max_divisor / 2);
   std::vector<std::int64_t> divisors = {1, 2, 3, 255, 256, 257, 32767, 32768, 32769, d_max - 1, d_max};
