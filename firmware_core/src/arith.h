@@ -71,6 +71,20 @@ TS_INLINE inline uint32_t mulhi_u32(uint32_t a, uint32_t b) {
   }
 }
 
+// floor(n / d) and n mod d (*rem) for n < 2^31 and d >= 1, from inv = floor((2^32 - 1) / d): n inv /
+// 2^32 is above n / d - n (d + 1) / (d 2^32) > n / d - 1, so the multiply-high is the quotient or
+// one below, and one correction makes it exact.
+TS_INLINE inline uint32_t divide_by_reciprocal(uint32_t n, uint32_t d, uint32_t inv, uint32_t* rem) {
+  uint32_t q = mulhi_u32(n, inv);
+  uint32_t r = n - q * d;
+  if (r >= d) {
+    ++q;
+    r -= d;
+  }
+  *rem = r;
+  return q;
+}
+
 inline uint64_t mulhi_u64(uint64_t a, uint64_t b) {
 #if TS_USE_INT128
   __extension__ typedef unsigned __int128 u128;
@@ -229,18 +243,7 @@ class Mod32RoundingDividerOf {
   }
 
  private:
-  // floor(n / D) and n mod D for n < 2^31: inv = floor((2^32 - 1) / D) makes n inv / 2^32 above
-  // n / D - n (D + 1) / (D 2^32) > n / D - 1, so the estimate is the quotient or one below.
-  TS_INLINE uint32_t quotient(uint32_t n, uint32_t* rem) const {
-    uint32_t q = mulhi_u32(n, inv_);
-    uint32_t r = n - q * den_;
-    if (r >= den_) {
-      ++q;
-      r -= den_;
-    }
-    *rem = r;
-    return q;
-  }
+  TS_INLINE uint32_t quotient(uint32_t n, uint32_t* rem) const { return divide_by_reciprocal(n, den_, inv_, rem); }
   uint32_t half_;
   uint32_t den_;
   uint32_t inv_;
