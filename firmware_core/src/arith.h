@@ -37,6 +37,14 @@ inline int64_t floor_div(int64_t n, int64_t d) {
   return (n % d != 0 && n < 0) ? q - 1 : q;
 }
 
+// n = q d + r with 0 <= r < d, for d > 0 (one hardware divide on Cortex-M3 and later).
+TS_INLINE inline void floor_divmod32(int32_t n, int32_t d, int32_t* q, int32_t* r) {
+  int32_t qq = n / d, rr = n - qq * d;
+  if (rr < 0) rr += d, --qq;
+  *q = qq;
+  *r = rr;
+}
+
 // High 64 bits of the 128-bit product a * b, from four 32 x 32 -> 64 products (targets without
 // a 128-bit type, such as Cortex-M; the result is the same everywhere).
 inline uint64_t mulhi_u64_portable(uint64_t a, uint64_t b) {
@@ -44,6 +52,37 @@ inline uint64_t mulhi_u64_portable(uint64_t a, uint64_t b) {
   const uint64_t lo_lo = a_lo * b_lo, hi_lo = a_hi * b_lo, lo_hi = a_lo * b_hi, hi_hi = a_hi * b_hi;
   const uint64_t mid = (lo_lo >> 32) + uint32_t(hi_lo) + uint32_t(lo_hi);  // below 3 * 2^32
   return hi_hi + (hi_lo >> 32) + (lo_hi >> 32) + (mid >> 32);
+}
+
+// High 32 bits of the 64-bit product a * b, from four 16 x 16 -> 32 products (ARMv6-M, where a
+// 64-bit product is a library call; the result is the same everywhere).
+TS_INLINE inline uint32_t mulhi_u32_portable(uint32_t a, uint32_t b) {
+  const uint32_t a_lo = a & 0xFFFFu, a_hi = a >> 16, b_lo = b & 0xFFFFu, b_hi = b >> 16;
+  const uint32_t lo_lo = a_lo * b_lo, hi_lo = a_hi * b_lo, lo_hi = a_lo * b_hi, hi_hi = a_hi * b_hi;
+  const uint32_t mid = (lo_lo >> 16) + (hi_lo & 0xFFFFu) + (lo_hi & 0xFFFFu);  // below 3 * 2^16
+  return hi_hi + (hi_lo >> 16) + (lo_hi >> 16) + (mid >> 16);
+}
+
+TS_INLINE inline uint32_t mulhi_u32(uint32_t a, uint32_t b) {
+  if constexpr (tuning::multiplies_wide) {
+    return uint32_t(uint64_t(a) * b >> 32);  // one UMULL (Cortex-M3 and later), MULHU (RISC-V M)
+  } else {
+    return mulhi_u32_portable(a, b);
+  }
+}
+
+// floor(n / d) and n mod d (*rem) for n < 2^31 and d >= 1, from inv = floor((2^32 - 1) / d): n inv /
+// 2^32 is above n / d - n (d + 1) / (d 2^32) > n / d - 1, so the multiply-high is the quotient or
+// one below, and one correction makes it exact.
+TS_INLINE inline uint32_t divide_by_reciprocal(uint32_t n, uint32_t d, uint32_t inv, uint32_t* rem) {
+  uint32_t q = mulhi_u32(n, inv);
+  uint32_t r = n - q * d;
+  if (r >= d) {
+    ++q;
+    r -= d;
+  }
+  *rem = r;
+  return q;
 }
 
 inline uint64_t mulhi_u64(uint64_t a, uint64_t b) {
@@ -170,32 +209,46 @@ class ShortRoundingDivider {
 // round(m 2^8 / d) modulo 2^32, halves up (RoundingDivider of n = m 2^8: q16_16 quotients of q8_8
 // numerators, the bilinear set-up's), for any int32 m and 2 <= D = 2d <= 2^17, in 32-bit operations
 // only: with m = q D + r, 0 <= r < D, floor((m 2^9 + d) / D) = q 2^9 + floor((r 2^9 + d) / D), and
-// r 2^9 + d < 2^27; one signed division (floored) and one unsigned. Only the quotient modulo 2^32
-// is computed: the bilinear set-up's every use is modulo 2^32 (BilinearChannel). On Cortex-M4 no
-// 64-bit addition, shift or sign fold per quotient.
-class Mod32RoundingDivider {
+// r 2^9 + d < 2^27. Only the quotient modulo 2^32 is computed: the bilinear set-up's every use is
+// modulo 2^32 (BilinearChannel). Where a division is an instruction of a few cycles
+// (tuning::divides_fast: Cortex-M3 and later) one signed division (floored) and one unsigned;
+// elsewhere both quotients by D's 32-bit reciprocal, one division a triangle: a multiply-high and
+// at most one correction each (quotient), no division per quotient (a library call on ARMv6-M, 3
+// to 35 cycles on RISC-V cores).
+// Both forms are compiled on every host (ByReciprocal), so that tests check both.
+template <bool ByReciprocal>
+class Mod32RoundingDividerOf {
  public:
   static constexpr uint32_t max_divisor = uint32_t(1) << 17;  // D = 2d at most this
 
-  explicit Mod32RoundingDivider(int32_t d) : half_(uint32_t(d)), den_(uint32_t(2 * d)) {}
+  explicit Mod32RoundingDividerOf(int32_t d)
+      : half_(uint32_t(d)), den_(uint32_t(2 * d)), inv_(ByReciprocal ? 0xFFFFFFFFu / uint32_t(2 * d) : 0u) {}
   TS_INLINE uint32_t small(int32_t m) const {
-    int32_t q, r;
-    floor_divmod(m, &q, &r);
-    return (uint32_t(q) << 9) + ((uint32_t(r) << 9) + half_) / den_;
+    if constexpr (!ByReciprocal) {
+      int32_t q, r;
+      floor_divmod32(m, int32_t(den_), &q, &r);  // D below 2^31
+      return (uint32_t(q) << 9) + ((uint32_t(r) << 9) + half_) / den_;
+    }
+    // m = q D + r: for m < 0 from n = -(m + 1) >= 0, m = -(floor(n / D) + 1) D + (D - 1 - n mod D).
+    uint32_t q, r;
+    if (m >= 0) {
+      q = quotient(uint32_t(m), &r);
+    } else {
+      uint32_t rn;
+      q = ~quotient(uint32_t(-(m + 1)), &rn);
+      r = den_ - 1 - rn;
+    }
+    uint32_t unused;
+    return (q << 9) + quotient((r << 9) + half_, &unused);
   }
 
  private:
-  // m = q D + r with 0 <= r < D (D below 2^31: the truncated remainder is above -D).
-  TS_INLINE void floor_divmod(int32_t m, int32_t* q, int32_t* r) const {
-    const int32_t den = int32_t(den_);
-    int32_t qq = m / den, rr = m - qq * den;
-    if (rr < 0) rr += den, --qq;
-    *q = qq;
-    *r = rr;
-  }
+  TS_INLINE uint32_t quotient(uint32_t n, uint32_t* rem) const { return divide_by_reciprocal(n, den_, inv_, rem); }
   uint32_t half_;
   uint32_t den_;
+  uint32_t inv_;
 };
+using Mod32RoundingDivider = Mod32RoundingDividerOf<!tuning::divides_fast>;
 
 // n / d rounded to nearest (halves up) like RoundingDivider, for 0 < 2d < 2^32 and |2n + d| < 2^62,
 // without a 64-bit division or a 64 x 64 product: the divisor's 32-bit reciprocal is computed once

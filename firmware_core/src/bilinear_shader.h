@@ -10,6 +10,7 @@
 #include "backend.h"
 #include "interpolate.h"
 #include "portable/bilinear_shader.h"
+#include "row_bounds.h"
 #include "sse2/bilinear_shader.h"
 #include "tuning.h"
 #include "tristream/fixed_point.h"
@@ -81,6 +82,14 @@ struct BilinearShader {
   // A writer that takes rounded values, without lanes: span's scalar path (begin moves v_ref).
   static constexpr bool rounded_scalar = Writer::takes_rounded && !in_lanes;
 
+  // Whether begin reads e_ref on a triangle whose box is not small (shader.h: LargeERefRead).
+  static constexpr bool large_reads_e_ref(int64_t area2) {
+    return !(from_vertex0 && bilinear_preinv_division && PreinvRoundingDivider::fits(area2));
+  }
+  // rows (shader.h: DrawsRows) where span's scalar path takes rounded values; not when optimizing
+  // for size, where span's pixel loops are then one copy, inlined into span.
+  static constexpr bool draws_rows = rounded_scalar && !TS_SIZE;
+
   TS_BILINEAR_BEGIN void begin(const TriangleView& tv, const TriangleSetup& s) {
     xr = s.xr;
     yr = s.yr;
@@ -106,13 +115,13 @@ struct BilinearShader {
     };
     // The scan path's numerators are small enough for the division without correction, and its
     // edge values fit int32 (e_ref32, set without SSE2).
-    if (bilinear_short_division && s.scan_path) {
+    if (bilinear_short_division && s.small_box) {
       if constexpr (TS_USE_SSE2) {
         setup(ShortRoundingDivider(s.area2), s.e_ref);
       } else {
         setup(ShortRoundingDivider(s.area2), s.e_ref32);
       }
-    } else if (bilinear_mod32_division && s.scan_path) {
+    } else if (bilinear_mod32_division && s.small_box) {
       setup_from_vertex0(Mod32RoundingDivider(int32_t(s.area2)));
     } else if (bilinear_preinv_division && PreinvRoundingDivider::fits(s.area2)) {
       if constexpr (from_vertex0) {
@@ -131,6 +140,30 @@ struct BilinearShader {
       TS_UNROLL_FAST
       for (int c = 0; c < Channels; ++c)
         ch[c].v_ref = ch[c].v_ref + half - ch[c].dvdx * uint32_t(xr) - ch[c].dvdy * uint32_t(yr);
+    }
+  }
+  // Rows y .. y + n - 1, the covered columns table[j] of each within [cx0, cx1]: span's scalar
+  // path, with the dithering tested once for the table.
+  TS_SPAN_INLINE void rows(const RowSpan* table, int32_t y, int32_t n, int32_t cx0, int32_t cx1) {
+    static_assert(rounded_scalar, "rows takes span's scalar path of rounded values");
+    if (!writer.dither) {
+      rows_with<false>(table, y, n, cx0, cx1);
+    } else {
+      rows_with<true>(table, y, n, cx0, cx1);
+    }
+  }
+  template <bool Dither>
+  TS_INLINE void rows_with(const RowSpan* table, int32_t y, int32_t n, int32_t cx0, int32_t cx1) {
+    for (const RowSpan* const end = table + n; table != end; ++table, ++y) {
+      const int32_t cs = max2(table->xs, cx0), ce = min2(table->xe, cx1);
+      if (cs > ce) continue;
+      // v_ref is at pixel (0, 0), the rounding offset included (begin).
+      const uint32_t dx = uint32_t(cs), dy = uint32_t(y);
+      const BilinearChannel &c0 = ch[0], &c1 = ch[Channels > 1 ? 1 : 0], &c2 = ch[Channels - 1];
+      const uint32_t v0 = c0.at_offset(dx, dy), d0 = c0.step();
+      const uint32_t v1 = Channels == 3 ? c1.at_offset(dx, dy) : 0, d1 = Channels == 3 ? c1.step() : 0;
+      const uint32_t v2 = Channels == 3 ? c2.at_offset(dx, dy) : 0, d2 = Channels == 3 ? c2.step() : 0;
+      writer.template put_span<Dither>(writer.at(cs, y), cs, ce, y, v0, v1, v2, d0, d1, d2);
     }
   }
   TS_SPAN_INLINE void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {

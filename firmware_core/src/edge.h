@@ -51,12 +51,17 @@ inline Edge make_edge(int32_t px, int32_t py, int32_t qx, int32_t qy, bool bound
 
 // floor(num(y) / den) for num(y) = num0 + step * (y - y0), den > 0, stepped one row at a time
 // with additions only. Exact: quotient and remainder are carried, never rounded.
+// No member initializers: a stepper is set by init, init32 or constant (zeroing the steppers of a
+// table of rows' bounds, set up per triangle, would cost a store each).
 struct FloorStepper {
-  int32_t q = 0;      // floor(num / den)
-  int32_t r = 0;      // num - q * den, in [0, den)
-  int32_t den = 1;
-  int32_t q_step = 0;  // floor(step / den)
-  int32_t r_step = 0;  // step - q_step * den
+  int32_t q;       // floor(num / den)
+  int32_t r;       // num - q * den, in [0, den)
+  int32_t den;
+  int32_t q_step;  // floor(step / den)
+  int32_t r_step;  // step - q_step * den
+
+  // A bound that stays q on every row.
+  static constexpr FloorStepper constant(int32_t q) { return FloorStepper{q, 0, 1, 0, 0}; }
 
   void init(int64_t num, int64_t step, int64_t d) {
     const int64_t q64 = floor_div(num, d);
@@ -67,13 +72,21 @@ struct FloorStepper {
     q_step = int32_t(qs);
     r_step = int32_t(step - qs * d);
   }
-  // Without a branch: whether the remainder wraps follows the slope's fraction, which a branch
-  // predictor guesses badly.
+  // The same for num, step and d > 0 in int32 (no 64-bit division or product).
+  void init32(int32_t num, int32_t step, int32_t d) {
+    floor_divmod32(num, d, &q, &r);
+    den = d;
+    floor_divmod32(step, d, &q_step, &r_step);
+  }
+  // The wrap of the remainder as a conditional (on Cortex-M one IT block: CMP, ITT, SUB, ADD), not
+  // as a mask (seven instructions). The SSE2 span path steps its bounds in lanes (sse2/edges.h).
   TS_INLINE void next_row() {
     r += r_step;
-    const int32_t wrap = r >= den;
-    q += q_step + wrap;
-    r -= den & -wrap;
+    q += q_step;
+    if (r >= den) {
+      r -= den;
+      ++q;
+    }
   }
 };
 
@@ -108,8 +121,7 @@ struct SpanStepper {
     const Edge& e = edges[third];
     if (e.a == 0) {
       third_left = true;
-      bound[2] = FloorStepper{};
-      bound[2].q = INT32_MAX;  // left bound -INT32_MAX: below every real left bound
+      bound[2] = FloorStepper::constant(INT32_MAX);  // left bound -INT32_MAX: below every real left bound
     } else {
       third_left = e.a > 0;
       const int64_t den = e.a > 0 ? e.a : -e.a;
@@ -134,95 +146,6 @@ struct SpanStepper {
     const int32_t third_hi = (INT32_MAX & left_mask) | (v & ~left_mask);
     *x0 = max2(-q0, third_lo);
     *x1 = min2(q1, third_hi);
-  }
-};
-
-// The same spans from two bounds per row instead of three (Cortex-M: two steppers stay in
-// registers where three do not). With the vertices t, m, b by position y (top, middle, bottom), a
-// row whose sample y is above m meets the triangle where it meets the wedge of the two edges from
-// t, and a row below m where it meets the wedge of the two edges to b: at such a sample point of
-// the wedge the barycentric weight of the vertex opposite the third edge is positive, so that
-// edge's function is a positive integer, at least the bias of 1, and the third test always passes.
-// The long edge (t, b) bounds one side on every row; the short edge on the other side is the upper
-// one (t, m) above m and the lower one (m, b) from the first row past m on. A row exactly through
-// m takes both short edges. A short edge with a == 0 is a neutral bound (rows only, restrict_rows).
-// The same spans as SpanStepper (test_core_span_stepper checks both against every sample point).
-struct SplitSpanStepper {
-  FloorStepper longb, shortb;
-  const Edge* edges = nullptr;
-  int32_t split = 0;    // the row where the lower short edge takes over (pending while switch_pending)
-  int8_t lower = 0;     // index of the lower short edge
-  bool long_left = true;
-  bool exact = false;   // row `split` passes through m: both short edges bound it
-  bool switch_pending = false;
-
-  static void init_bound(FloorStepper* f, const Edge& e, int32_t y) {
-    if (e.a == 0) {
-      *f = FloorStepper{};
-      f->q = INT32_MAX;  // -INT32_MAX as a left bound, INT32_MAX as a right one: never wins
-      return;
-    }
-    const int64_t den = e.a > 0 ? e.a : -e.a;
-    f->init(e.b * y + e.c, e.b, den);
-  }
-
-  // ys: the vertices' y (position_fx raw), vertex k the start of edge k; y0 the first row.
-  void init(const Edge* e, const int32_t* ys, int32_t y0) {
-    edges = e;
-    // t and b: the lowest and highest y (ties: the first index); m the other one.
-    int t = 0, b = 0;
-    for (int k = 1; k < 3; ++k) {
-      if (ys[k] < ys[t]) t = k;
-      if (ys[k] > ys[b]) b = k;
-    }
-    if (t == b) b = t == 0 ? 1 : 0;  // a flat triangle (no area: not drawn), kept well-defined
-    const int m = 3 - t - b;
-    // Edge k joins vertices k and k + 1: the one without m is the long edge, edge m and edge
-    // m + 2 the short ones; the one that joins m to b is the lower.
-    const int long_edge = (m + 1) % 3, e_m = m, e_prev = (m + 2) % 3;
-    const bool m_to_b = (m + 1) % 3 == b;  // edge m runs from m to b
-    lower = int8_t(m_to_b ? e_m : e_prev);
-    const int upper = m_to_b ? e_prev : e_m;
-    long_left = e[long_edge].a > 0;
-    init_bound(&longb, e[long_edge], y0);
-    const int32_t my = ys[m];
-    split = position_fx::from_raw(my).ceil_to_int();  // first row whose sample is not above m
-    exact = position_fx::from_raw(my).is_integer();
-    switch_pending = y0 < split || (y0 == split && exact);
-    init_bound(&shortb, e[switch_pending ? upper : lower], y0);
-  }
-  // Called on every row y (the row the steppers are at) before span or next_row.
-  TS_INLINE void begin_row(int32_t y) {
-    if (__builtin_expect(y == split, 0) && switch_pending) switch_to_lower(y);
-  }
-  // Columns [*x0, *x1] (inclusive; empty when *x0 > *x1) of row y.
-  TS_INLINE void span(int32_t y, int32_t* x0, int32_t* x1) const {
-    const int32_t l = long_left ? longb.q : shortb.q;
-    const int32_t r = long_left ? shortb.q : longb.q;
-    *x0 = -l;
-    *x1 = r;
-    if (__builtin_expect(y == mid_row, 0)) {
-      // The row through m: the upper short edge's bound too, on the short edges' side.
-      if (long_left) {
-        *x1 = min2(*x1, upper_q);
-      } else {
-        *x0 = max2(*x0, -upper_q);
-      }
-    }
-  }
-  TS_INLINE void next_row() {
-    longb.next_row();
-    shortb.next_row();
-  }
-
- private:
-  int32_t mid_row = INT32_MIN;  // `split` once the switch there saw a row through m
-  int32_t upper_q = INT32_MAX;  // the upper short edge's bound on that row
-  TS_NOINLINE void switch_to_lower(int32_t y) {
-    upper_q = shortb.q;
-    if (exact) mid_row = y;
-    init_bound(&shortb, edges[lower], y);
-    switch_pending = false;
   }
 };
 

@@ -4,6 +4,7 @@
 // per axis, rounded in position_fx, plus a shift by whole output pixels.
 #include <stdint.h>
 
+#include "arith.h"
 #include "tristream/config.h"
 #include "tuning.h"
 #include "tristream/render_params.h"
@@ -19,17 +20,54 @@ namespace {
 // negative). Raw positions are at most 65536, n, d below 2^12 (max_dimension) and k below 2^12,
 // so the numerator is below 2^29: unsigned 32-bit arithmetic, one hardware division on Cortex-M4
 // (64-bit division is a library call there), and the shift costs nothing.
+// Where a division is slow (tuning::divides_fast false) each axis's divisor comes with its 32-bit
+// reciprocal, floor((2^32 - 1) / d): a quotient of a numerator below 2^31 is then a multiply-high
+// and one correction (as Mod32RoundingDivider's). Elsewhere nothing.
+template <bool Divides>
+struct MappingReciprocals {
+  uint32_t x = 0, y = 0;
+  void set(uint32_t dx, uint32_t dy) {
+    x = 0xFFFFFFFFu / dx;
+    y = 0xFFFFFFFFu / dy;
+  }
+  uint32_t of_x() const { return x; }
+  uint32_t of_y() const { return y; }
+};
+template <>
+struct MappingReciprocals<true> {
+  void set(uint32_t, uint32_t) {}
+  uint32_t of_x() const { return 0; }
+  uint32_t of_y() const { return 0; }
+};
+
 struct Mapping {
   uint32_t nx = 1, dx = 1, ny = 1, dy = 1;
   uint32_t bx = 0, by = 0;  // r + 2^S k d
   bool identity = true;     // v' = v on both axes (n = d, k = 0)
+  [[no_unique_address]] MappingReciprocals<tuning::divides_fast> inv;
 
   // Always inlined (a few instructions, used per vertex position): -Os would call them.
   TS_INLINE int32_t x(int32_t v) const {
-    return identity ? v : int32_t((uint32_t(v) * nx + bx) / dx);
+    return identity ? v : int32_t(divide(uint32_t(v) * nx + bx, dx, inv.of_x()));
   }
   TS_INLINE int32_t y(int32_t v) const {
-    return identity ? v : int32_t((uint32_t(v) * ny + by) / dy);
+    return identity ? v : int32_t(divide(uint32_t(v) * ny + by, dy, inv.of_y()));
+  }
+  // The reciprocals where they are kept.
+  void set_reciprocals() { inv.set(dx, dy); }
+  // floor(num / d) for num below 2^29 (the bound below).
+  TS_INLINE static uint32_t divide(uint32_t num, uint32_t d, uint32_t inv) {
+    if constexpr (tuning::divides_fast) {
+      return num / d;
+    } else {
+      return divide_slowly(num, d, inv);
+    }
+  }
+  // Out of line: its 16-bit products (ARMv6-M) at every mapped coordinate would crowd the
+  // triangle loads of the identity mapping too.
+  TS_NOINLINE static uint32_t divide_slowly(uint32_t num, uint32_t d, uint32_t inv) {
+    uint32_t unused;
+    return divide_by_reciprocal(num, d, inv, &unused);
   }
   // The smallest raw v >= 0 whose mapped y is at least t >= 0: floor((v n + b) / d) >= t exactly
   // when v n >= t d - b (also for the identity: n = d, b < d). t is below 2^18 and d below 2^12.
@@ -85,8 +123,10 @@ inline FitLayout fit_layout(int32_t w, int32_t h, int32_t out_w, int32_t out_h, 
 inline Mapping drawing_mapping(const FitLayout& f, int32_t sx, int32_t sy) {
   constexpr uint32_t one = 1u << config::subpixel_bits;
   const uint32_t kx = uint32_t(f.ox + sx), ky = uint32_t(f.oy + sy);
-  return Mapping{f.nx, f.dx, f.ny, f.dy, f.rx + one * kx * f.dx, f.ry + one * ky * f.dy,
-                 f.nx == f.dx && f.ny == f.dy && kx == 0 && ky == 0};
+  Mapping m{f.nx, f.dx, f.ny, f.dy, f.rx + one * kx * f.dx, f.ry + one * ky * f.dy,
+            f.nx == f.dx && f.ny == f.dy && kx == 0 && ky == 0, {}};
+  m.set_reciprocals();
+  return m;
 }
 
 }  // namespace

@@ -52,12 +52,22 @@ struct DirectWriter {
   // arrays: on Cortex-M the whole loop state then stays in registers.
   void put_span_in_range(uint8_t* p, int32_t x0, int32_t x1, int32_t y, uint32_t v0, uint32_t v1, uint32_t v2,
                          uint32_t d0, uint32_t d1, uint32_t d2) const {
+    if (dither) {
+      put_span<true>(p, x0, x1, y, v0, v1, v2, d0, d1, d2);
+    } else {
+      put_span<false>(p, x0, x1, y, v0, v1, v2, d0, d1, d2);
+    }
+  }
+  // The same for a writer whose dither is Dither (the caller's test, once for many spans).
+  template <bool Dither>
+  TS_INLINE void put_span(uint8_t* p, int32_t x0, int32_t x1, int32_t y, uint32_t v0, uint32_t v1, uint32_t v2,
+                          uint32_t d0, uint32_t d1, uint32_t d2) const {
     constexpr int s = q16_16::frac_bits;
     constexpr int bpp = bytes_per_pixel(F);
     if constexpr (F == PixelFormat::rgb565_le || F == PixelFormat::rgb565_be) {
       // Without dithering the loop neither reads the flag nor the position.
       // The pixel pointer is the loop counter (no column count kept beside it).
-      if (!dither) {
+      if constexpr (!Dither) {
         uint8_t* const end = p + (x1 - x0 + 1) * bpp;
         if constexpr (Channels == 1) {
           for (; p != end; p += bpp, v0 += d0) {
@@ -75,29 +85,35 @@ struct DirectWriter {
           for (; p != end; p += bpp, v0 += d0, v1 += d1, v2 += d2)
             store565_bytes(p, pack565_bytes_by_table_biased<F>(v0 >> s, v1 >> s, v2 >> s, table));
         }
-        return;
-      }
-      // Dithered: one of the row's four scaled Bayer offsets per pixel, chosen by the pixel's
-      // address (dither_span_offsets).
-      const uint32_t* const offset = dither_span_offsets(y, x0, p);
-      const uint32_t k31 = in_register(dither_k31), k63 = in_register(dither_k63);
-      uint8_t* const end = p + (x1 - x0 + 1) * bpp;
-      for (; p != end; p += bpp, v0 += d0, v1 += d1, v2 += d2) {
-        const uint32_t o = offset[dither_index(p)];
-        if constexpr (Channels == 1) {
-          const uint32_t u = v0 >> s;
-          store565_bytes(p, rgb565_bytes<F>(pack565_dithered(u, u, u, o, k31, k63)));
-        } else {
-          store565_bytes(p, rgb565_bytes<F>(pack565_dithered(v0 >> s, v1 >> s, v2 >> s, o, k31, k63)));
-        }
+      } else {
+        put_span_dithered(p, x0, x1, y, v0, v1, v2, d0, d1, d2);
       }
       return;
     }
     if constexpr (Channels == 1) {
-      for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0) store_grey<F>(p, uint8_t(v0 >> s), x, y, dither);
+      for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0) store_grey<F>(p, uint8_t(v0 >> s), x, y, Dither);
     } else {
       for (int32_t x = x0; x <= x1; ++x, p += bpp, v0 += d0, v1 += d1, v2 += d2)
-        store_rgb<F>(p, uint8_t(v0 >> s), uint8_t(v1 >> s), uint8_t(v2 >> s), x, y, dither);
+        store_rgb<F>(p, uint8_t(v0 >> s), uint8_t(v1 >> s), uint8_t(v2 >> s), x, y, Dither);
+    }
+  }
+  // put_span's RGB565 pixels with dithering: one of the row's four scaled Bayer offsets per pixel,
+  // chosen by the pixel's address (dither_span_offsets).
+  TS_INLINE void put_span_dithered(uint8_t* p, int32_t x0, int32_t x1, int32_t y, uint32_t v0, uint32_t v1,
+                                   uint32_t v2, uint32_t d0, uint32_t d1, uint32_t d2) const {
+    constexpr int s = q16_16::frac_bits;
+    constexpr int bpp = bytes_per_pixel(F);
+    const uint32_t* const offset = dither_span_offsets(y, x0, p);
+    const uint32_t k31 = in_register(dither_k31), k63 = in_register(dither_k63);
+    uint8_t* const end = p + (x1 - x0 + 1) * bpp;
+    for (; p != end; p += bpp, v0 += d0, v1 += d1, v2 += d2) {
+      const uint32_t o = offset[dither_index(p)];
+      if constexpr (Channels == 1) {
+        const uint32_t u = v0 >> s;
+        store565_bytes(p, rgb565_bytes<F>(pack565_dithered(u, u, u, o, k31, k63)));
+      } else {
+        store565_bytes(p, rgb565_bytes<F>(pack565_dithered(v0 >> s, v1 >> s, v2 >> s, o, k31, k63)));
+      }
     }
   }
 

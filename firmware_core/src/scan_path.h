@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #pragma once
 // The scan path: small triangles (pixel box below scan_max_extent each way, no explicit corner) take
-// int32 edge values and find each row's covered columns as a mask over the box (RowMasks), instead
+// int32 edge values and find each row's covered columns by edge tests over the box (RowMasks), instead
 // of the span steppers and their divisions. Both paths test the same exact predicate.
 #include <stdint.h>
 
@@ -32,11 +32,11 @@ static_assert(2 * (int64_t(64) << config::subpixel_bits) * (int64_t(64) << confi
 //   small_edges(tv, area2, left, y0, &e)   sets them up for the rows from (left, y0);
 //   small_setup<Reads>(tv, e, &s)          the shader's TriangleSetup (e_ref32 and e_ref may be
 //                         left unset where ERefsRead says the shader does not read them);
-//   RowMasks<Groups>      the covered columns of a box row as a 16-bit mask (bit i: column left + i),
-//                         from the three edge values at the row's first column and their steps per
-//                         column (a) and per row (b): RowMasks(e.row, e.a, e.b, box) with the box's
-//                         columns as a mask, uint32_t covered() the current row's mask (only the
-//                         box's bits are meaningful), void next_row();
+//   RowMasks<Groups>      the covered columns of a box row, from the three edge values at the
+//                         row's first column and their steps per column (a) and per row (b):
+//                         RowMasks(e.row, e.a, e.b, box) with the box's columns as a mask,
+//                         bool columns(box, &first, &last) the current row's covered columns
+//                         (offsets from the box's first column; false for none), void next_row();
 //   scan_rows_by_width    whether scan_rows takes a copy per width in groups of four columns.
 
 // The edges of a scan-path triangle (backend::SmallEdges; edge k from vertex k to vertex k + 1) in
@@ -83,12 +83,11 @@ void scan_rows(const TriangleView& tv, const backend::SmallEdges& e, int32_t lef
   backend::RowMasks<Groups> masks(e.row, e.a, e.b, box);
   bool started = false;
   for (int32_t y = y0; y <= y1; ++y, masks.next_row()) {
-    const uint32_t mask = masks.covered() & box;
-    if (!mask) continue;
-    const int32_t xs = left + __builtin_ctz(mask);
-    const int32_t x = left + 32 - __builtin_clz(mask);  // one past the last covered column
+    int32_t first, last;
+    if (!masks.columns(box, &first, &last)) continue;
+    const int32_t xs = left + first, xe = left + last;
     const int32_t cs = xs > cx0 ? xs : cx0;
-    const int32_t ce = x - 1 < cx1 ? x - 1 : cx1;
+    const int32_t ce = xe < cx1 ? xe : cx1;
     if (cs > ce) continue;
     if (!started) {
       TriangleSetup s;
@@ -96,7 +95,7 @@ void scan_rows(const TriangleView& tv, const backend::SmallEdges& e, int32_t lef
       shader.begin(tv, s);
       started = true;
     }
-    shader.span(y, xs, x - 1, cs, ce);
+    shader.span(y, xs, xe, cs, ce);
   }
 }
 

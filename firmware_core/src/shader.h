@@ -23,11 +23,11 @@ namespace {
 // What a shader's begin needs besides the vertices: the edge coefficients (|a|, |b| < 2^20, see
 // detail/edge.h), the exact edge values at the reference pixel (xr, yr) (vertex 0 floored), and the
 // doubled area.
-// Triangles of the scan path (scan_path.h): pixel box below this many pixels each way and no
-// explicit corner. With SSE2 a row of a 16-column box costs about as much as the span steppers'
-// row, without their setup. Elsewhere the column scan pays per column, but the set-up it saves
-// costs more: 15, the largest box whose bilinear set-up divides in 32 bits (Mod32RoundingDivider,
-// 2d <= 2^17).
+// Small boxes: pixel box below this many pixels each way. With SSE2 they are the scan path's
+// triangles (scan_path.h, those without explicit corner): a row of a 16-column box costs about as
+// much as the span steppers' row, without their setup. Elsewhere 15, the largest box whose
+// bilinear set-up divides in 32 bits (Mod32RoundingDivider, 2d <= 2^17); the scan path takes the
+// smaller boxes of portable/rasterize.h (scan_path_extent).
 constexpr int32_t scan_max_extent = TS_USE_SSE2 ? 16 : 15;
 
 struct TriangleSetup {
@@ -38,7 +38,9 @@ struct TriangleSetup {
   int32_t e_ref32[3];
   int32_t xr, yr;
   int64_t area2;
-  bool scan_path;  // a triangle of the scan path (small: see SmallEdges)
+  // A pixel box below scan_max_extent each way (the set-up's 32-bit budgets; with SSE2 also the
+  // scan path's triangles, which have no explicit corner).
+  bool small_box;
 };
 
 // Which edge values at the reference pixel a shader's begin reads on scan-path triangles: e_ref32
@@ -53,6 +55,32 @@ struct ERefsRead {
 template <typename Shader>
 struct ERefsRead<Shader, decltype(void(Shader::e_refs))> {
   static constexpr unsigned value = Shader::e_refs;
+};
+
+// Whether a shader's begin reads e_ref on a triangle whose box is not small, of doubled area
+// area2: unless the shader declares `static constexpr bool large_reads_e_ref(int64_t area2)`,
+// always.
+template <typename Shader, typename = void>
+struct LargeERefRead {
+  static constexpr bool of(int64_t) { return true; }
+};
+template <typename Shader>
+struct LargeERefRead<Shader, decltype(void(Shader::large_reads_e_ref(0)))> {
+  static constexpr bool of(int64_t area2) { return Shader::large_reads_e_ref(area2); }
+};
+
+// Whether a shader draws a table of rows itself (portable/rasterize.h): a shader that declares
+// `static constexpr bool draws_rows = true` has
+//   void rows(const RowSpan* rows, int32_t y, int32_t n, int32_t cx0, int32_t cx1)
+// which draws, of each row y + j, the covered columns rows[j] that are within [cx0, cx1] (the
+// others: none), as span would.
+template <typename Shader, typename = void>
+struct DrawsRows {
+  static constexpr bool value = false;
+};
+template <typename Shader>
+struct DrawsRows<Shader, decltype(void(Shader::draws_rows))> {
+  static constexpr bool value = Shader::draws_rows;
 };
 
 }  // namespace

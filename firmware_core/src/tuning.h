@@ -102,6 +102,30 @@ constexpr bool saturates = true;
 constexpr bool saturates = false;
 #endif
 
+// Whether __builtin_ctz and __builtin_clz are instructions (Cortex-M3 and later: CLZ, RBIT; x86-64;
+// RISC-V with Zbb), not library calls (ARMv6-M, RISC-V without Zbb).
+#if defined(__ARM_FEATURE_CLZ) || defined(__x86_64__) || defined(__aarch64__) || defined(__riscv_zbb)
+constexpr bool scans_bits = true;
+#else
+constexpr bool scans_bits = false;
+#endif
+
+// Whether a 32-bit division is an instruction of a few cycles (SDIV, UDIV: Cortex-M3 and later, 2
+// to 12 cycles; x86-64), not a library call (ARMv6-M) or a 3- to 35-cycle divider (RISC-V cores).
+#if defined(__ARM_FEATURE_IDIV) || defined(__x86_64__) || defined(__aarch64__)
+constexpr bool divides_fast = true;
+#else
+constexpr bool divides_fast = false;
+#endif
+
+// Whether a 32 x 32 -> 64 product is an instruction (UMULL, MULHU, x86-64), not a library call
+// (ARMv6-M).
+#if defined(__ARM_ARCH_6M__)
+constexpr bool multiplies_wide = false;
+#else
+constexpr bool multiplies_wide = true;
+#endif
+
 // ZienkiewiczShader's forward differencing: with SSE2 set up within span, on the first long row
 // (a separate call costs x86-64 more than it saves); elsewhere by first_long_row, a tail call from
 // span, so that span's frame is gone before the set-up's (the deepest stack on Cortex-M).

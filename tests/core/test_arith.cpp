@@ -110,7 +110,42 @@ TEST_CASE("ShortRoundingDivider equals round_div wherever |2n + d| 2d < 2^64") {
   }
 }
 
-TEST_CASE("Mod32RoundingDivider equals round_div of m 2^8 modulo 2^32 wherever 2d <= 2^17") {
+TEST_CASE("mulhi_u32 and its 16-bit form are the high word of the 64-bit product") {
+  std::mt19937_64 rng(32);
+  std::vector<std::uint32_t> values = {0, 1, 2, 0xFFFFu, 0x10000u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+  for (int i = 0; i < 2000; ++i) values.push_back(std::uint32_t(rng() >> (32 + rng() % 32)));
+  for (std::uint32_t a : values) {
+    for (std::uint32_t b : values) {
+      const std::uint32_t want = std::uint32_t((std::uint64_t(a) * b) >> 32);
+      INFO("a " << a << " b " << b);
+      REQUIRE(mulhi_u32_portable(a, b) == want);
+      REQUIRE(mulhi_u32(a, b) == want);
+    }
+  }
+}
+
+TEST_CASE("divide_by_reciprocal is floor division for n below 2^31") {
+  std::mt19937_64 rng(31);
+  std::vector<std::uint32_t> divisors = {1, 2, 3, 4095, 4096, 65535, 65536, 131071, 131072, 0x7FFFFFFFu};
+  for (int i = 0; i < 4000; ++i) divisors.push_back(1 + std::uint32_t(rng() % (1u << (1 + rng() % 31))));
+  for (std::uint32_t d : divisors) {
+    const std::uint32_t inv = 0xFFFFFFFFu / d;
+    std::vector<std::uint32_t> ns = {0, 1, d - 1, d, d + 1, 0x7FFFFFFFu, 0x7FFFFFFFu - d, 0x7FFFFFFFu / d * d};
+    for (int i = 0; i < 200; ++i) ns.push_back(std::uint32_t(rng() >> (33 + rng() % 31)));
+    for (std::uint32_t n : ns) {
+      if (n > 0x7FFFFFFFu) continue;
+      std::uint32_t r = 0;
+      INFO("n " << n << " d " << d);
+      REQUIRE(divide_by_reciprocal(n, d, inv, &r) == n / d);
+      REQUIRE(r == n % d);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("Mod32RoundingDivider (by divisions and by reciprocal) equals round_div of m 2^8 modulo 2^32 "
+                   "wherever 2d <= 2^17",
+                   "", Mod32RoundingDividerOf<false>, Mod32RoundingDividerOf<true>) {
+  using Mod32RoundingDivider = TestType;
   std::mt19937_64 rng(17);
   constexpr std::int64_t d_max = std::int64_t(Mod32RoundingDivider::max_divisor / 2);
   std::vector<std::int64_t> divisors = {1, 2, 3, 255, 256, 257, 32767, 32768, 32769, d_max - 1, d_max};

@@ -1,17 +1,20 @@
 // SPDX-License-Identifier: MIT
-// The span bounds of the span path: SplitSpanStepper (two bounds per row, the Cortex-M form),
-// SpanStepper (three) and, with SSE2, sse2::RowSpans (three in lanes, the x86-64 form) must give, on every row of a triangle and from any first row (a band's
+// The span bounds of the rasterizer: RowBounds (two bounds per row filled into a table a chunk of
+// rows at a time, the form without SSE2), SpanStepper (three) and, with SSE2, sse2::RowSpans (three
+// in lanes, the x86-64 form) must give, on every row of a triangle and from any first row (a band's
 // clip), exactly the covered columns that testing every sample point against the three edges
-// gives. Triangles: random, with vertices on whole pixels (every encoder mesh), flat tops and
+// gives, whatever the chunks. Triangles: random, with vertices on whole pixels (every encoder mesh), flat tops and
 // bottoms, the middle vertex on a row and off it, boundary edges, slivers.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cstdint>
 #include <random>
+#include <vector>
 
 #include "tristream/config.h"
 #include "edge.h"
+#include "row_bounds.h"
 #include "sse2/edges.h"
 
 using namespace tristream::core;
@@ -39,7 +42,10 @@ Covered brute(const Edge* e, int32_t y, int32_t max_x) {
   return c;
 }
 
-void check_triangle(const int32_t* xs, const int32_t* ys, int flags, int32_t max_x) {
+// Every first row from the top (first_step 1), or every first_step-th, each checked over at most
+// row_limit rows.
+void check_triangle(const int32_t* xs, const int32_t* ys, int flags, int32_t max_x, int32_t first_step = 1,
+                    int32_t row_limit = INT32_MAX) {
   Edge e[3];
   for (int k = 0; k < 3; ++k) {
     const int n = (k + 1) % 3;
@@ -49,17 +55,27 @@ void check_triangle(const int32_t* xs, const int32_t* ys, int flags, int32_t max
   const int32_t bottom = std::max({ys[0], ys[1], ys[2]}) >> S;
   int32_t r0 = top, r1 = bottom;
   restrict_rows(e, &r0, &r1);
-  for (int32_t first = top; first <= bottom; ++first) {
+  for (int32_t first = top; first <= bottom; first += first_step) {
+    const int32_t last = bottom - first < row_limit ? bottom : first + row_limit - 1;
     SpanStepper three;
     three.init(e, first);
-    SplitSpanStepper two;
-    two.init(e, ys, first);
+    // RowBounds from the same first row, its rows filled in chunks of 1 .. row_chunk rows.
+    TriangleView tv{};
+    for (int k = 0; k < 3; ++k) tv.x[k] = xs[k], tv.y[k] = ys[k];
+    tv.flags = uint16_t(flags);  // boundary_edge0 << k: bit k
+    const int32_t left = (std::min({xs[0], xs[1], xs[2]}) + (1 << S) - 1) >> S;
+    RowBounds two;
+    two.init(tv, left, first);
+    std::vector<RowSpan> table(size_t(last - first + 1));
+    for (int32_t y = first, n = 1; y <= last; y += n, n = n % row_chunk + 1) {
+      n = std::min(n, last - y + 1);
+      two.fill(table.data() + (y - first), y, n);
+    }
 #if TS_USE_SSE2
     sse2::RowSpans lanes;
     lanes.init(e, ys, first);
 #endif
-    for (int32_t y = first; y <= bottom; ++y, three.next_row(), two.next_row()) {
-      two.begin_row(y);
+    for (int32_t y = first; y <= last; ++y, three.next_row()) {
 #if TS_USE_SSE2
       lanes.begin_row(y);
       if (y > first) lanes.next_row();
@@ -68,7 +84,7 @@ void check_triangle(const int32_t* xs, const int32_t* ys, int flags, int32_t max
       const Covered want = brute(e, y, max_x);
       Covered got3{}, got2{};
       three.span(&got3.x0, &got3.x1);
-      two.span(y, &got2.x0, &got2.x1);
+      got2 = Covered{table[size_t(y - first)].xs, table[size_t(y - first)].xe};
 #if TS_USE_SSE2
       Covered got_lanes{};
       lanes.span(y, &got_lanes.x0, &got_lanes.x1);
@@ -123,4 +139,20 @@ TEST_CASE("two span bounds per row give the covered columns of three") {
     ++checked;
   }
   CHECK(checked > 4000);
+}
+
+TEST_CASE("row bounds of triangles thousands of pixels across (64-bit numerators)") {
+  std::mt19937 rng(39);
+  std::uniform_int_distribution<int32_t> fine(0, (4096 << S) - 1);
+  int checked = 0;
+  for (int i = 0; i < 24; ++i) {
+    int32_t xs[3], ys[3];
+    for (int k = 0; k < 3; ++k) xs[k] = fine(rng), ys[k] = fine(rng);
+    if (i % 2 == 0) ys[1] = ys[0];  // a horizontal edge
+    if (!orient(xs, ys)) continue;
+    // Boxes over 2^22 pixels: their bounds' numerators need 64 bits.
+    check_triangle(xs, ys, int(rng() % 8), 4098, 397, 24);
+    ++checked;
+  }
+  CHECK(checked > 20);
 }

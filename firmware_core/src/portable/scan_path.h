@@ -26,16 +26,30 @@ class RowMasks {
     TS_UNROLL
     for (int k = 0; k < 3; ++k) row_[k] = row[k], a_[k] = a[k], b_[k] = b[k];
   }
-  // The uncovered columns before the covered ones are skipped, then the covered ones counted: the
-  // mask is the bits from the first covered column to the one before the next uncovered one.
-  TS_INLINE uint32_t covered() const {
+  // The current row's covered columns [*first, *last] (offsets from the box's first column), or
+  // false for none: the uncovered columns before the covered ones are skipped, then the covered
+  // ones counted. Where a bit scan is a library call (tuning::scans_bits) the walk counts columns,
+  // elsewhere the covered bits' mask is scanned.
+  TS_INLINE bool columns(uint32_t /*box*/, int32_t* first, int32_t* last) const {
+    constexpr int32_t count = tuning::scans_bits ? 0 : 1;
     int32_t e0 = row_[0], e1 = row_[1], e2 = row_[2];
     const int32_t a0 = a_[0], a1 = a_[1], a2 = a_[2];
     uint32_t bit = 1;
-    for (; bit != end_ && (e0 | e1 | e2) < 0; bit <<= 1) e0 += a0, e1 += a1, e2 += a2;
-    const uint32_t first = bit;
-    for (; bit != end_ && (e0 | e1 | e2) >= 0; bit <<= 1) e0 += a0, e1 += a1, e2 += a2;
-    return bit - first;
+    int32_t i = 0;
+    for (; bit != end_ && (e0 | e1 | e2) < 0; bit <<= 1, i += count) e0 += a0, e1 += a1, e2 += a2;
+    if (bit == end_) return false;
+    const uint32_t first_bit = bit;
+    const int32_t i0 = i;
+    for (; bit != end_ && (e0 | e1 | e2) >= 0; bit <<= 1, i += count) e0 += a0, e1 += a1, e2 += a2;
+    if constexpr (tuning::scans_bits) {
+      const uint32_t mask = bit - first_bit;
+      *first = __builtin_ctz(mask);
+      *last = 31 - __builtin_clz(mask);
+    } else {
+      *first = i0;
+      *last = i - 1;
+    }
+    return true;
   }
   TS_INLINE void next_row() {
     TS_UNROLL
@@ -82,7 +96,7 @@ inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSet
   s->xr = xr;
   s->yr = yr;
   s->area2 = e.area2;
-  s->scan_path = true;
+  s->small_box = true;
   // E_k is A_k x + B_k y + C_k (per pixel: a = A 2^S, b = B 2^S): from the box's first pixel.
   const int32_t ox = xr - e.left, oy = yr - e.y0;
   TS_UNROLL

@@ -3,7 +3,7 @@
 // The scan path's platform part (scan_path.h) with SSE2: the edges of a small triangle in lanes,
 // the covered columns of a box row four columns at a time and without branches (whose
 // mispredictions cost more than the rest of a small triangle's rows). The same masks and set-up
-// as portable/scan_path.h (test_core_backends compares them).
+// as the portable raster's set-up (test_core_backends compares them).
 #include <stdint.h>
 
 #include "../tuning.h"
@@ -38,6 +38,15 @@ class RowMasks {
     init<0>(row, a, b);
     init<1>(row, a, b);
     init<2>(row, a, b);
+  }
+  // The current row's covered columns [*first, *last] within box (offsets from its first column),
+  // or false for none.
+  TS_INLINE bool columns(uint32_t box, int32_t* first, int32_t* last) const {
+    const uint32_t mask = covered() & box;
+    if (!mask) return false;
+    *first = __builtin_ctz(mask);
+    *last = 31 - __builtin_clz(mask);
+    return true;
   }
   TS_INLINE uint32_t covered() const {
     __m128i any_negative[4];
@@ -126,7 +135,7 @@ inline void small_setup(const TriangleView& tv, const SmallEdges& e, TriangleSet
   s->xr = xr;
   s->yr = yr;
   s->area2 = e.area2;
-  s->scan_path = true;
+  s->small_box = true;
   constexpr int S = config::subpixel_bits;
   const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tv.x));
   const __m128i y = _mm_loadu_si128(reinterpret_cast<const __m128i*>(tv.y));
