@@ -31,8 +31,17 @@ struct RowSpan {
   int32_t xs, xe;
 };
 
-// Rows a chunk: the table's size (8 bytes a row on the stack of the tile function).
+// Rows a chunk: the table's size (8 bytes a row on the stack of the tile function), unless the
+// shader declares `static constexpr int32_t rows_a_chunk` (RowChunk).
 constexpr int32_t row_chunk = 16;
+template <typename Shader, typename = void>
+struct RowChunk {
+  static constexpr int32_t value = row_chunk;
+};
+template <typename Shader>
+struct RowChunk<Shader, decltype(void(Shader::rows_a_chunk))> {
+  static constexpr int32_t value = Shader::rows_a_chunk;
+};
 
 class RowBounds {
  public:

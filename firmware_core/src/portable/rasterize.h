@@ -3,7 +3,7 @@
 // A clipped triangle's rows in plain C++ (rasterize.h has the interface), the form of every target
 // without SSE2. Small triangles without explicit corners take the scan path (scan_path.h: a row's
 // columns by testing the box's columns, drawn row by row). For the others the covered columns of
-// up to row_chunk rows go into a table, from two exact bounds a row (row_bounds.h), the rows the
+// up to a chunk of rows (row_bounds.h: RowChunk) go into a table, from two exact bounds a row (row_bounds.h), the rows the
 // horizontal edges exclude emptied and the explicit corners applied (corners.h); then the shader
 // draws the table's rows, with its own state in registers for the whole table.
 #include <stdint.h>
@@ -121,9 +121,10 @@ void rasterize_clipped(const TriangleView& tv, const Rect& clip, const PixelBox&
   bounds.init(tv, box.left, first);
   const int32_t cx0 = clip.x0, cx1 = clip.x1 - 1;
   bool started = false;
-  RowSpan rows[row_chunk];
-  for (int32_t y = first; y <= last; y += row_chunk) {
-    const int32_t n = last - y + 1 < row_chunk ? last - y + 1 : row_chunk;
+  constexpr int32_t chunk = RowChunk<Shader>::value;
+  RowSpan rows[chunk];
+  for (int32_t y = first; y <= last; y += chunk) {
+    const int32_t n = last - y + 1 < chunk ? last - y + 1 : chunk;
     bounds.fill(rows, y, n);
     // Rows outside [r0, r1] keep only their owned corners.
     for (int32_t j = 0; j < n && y + j < r0; ++j) rows[j] = RowSpan{1, 0};
