@@ -208,10 +208,10 @@ struct ZienkiewiczShader : ZienkiewiczTriangle<Channels> {
   using ZienkiewiczTriangle<Channels>::fd_state;
   using ZienkiewiczTriangle<Channels>::narrow;
 
-  // Twelve rows a table of portable/rasterize.h (row_bounds.h: RowChunk), not 16: this shader's
-  // frames are the deepest of the render (Cortex-M4: 1,524 bytes, within 1.5 KB, against 1,556),
-  // and its rows cost far more than a table's round.
-  static constexpr int32_t rows_a_chunk = 12;
+  // Eight rows a table of portable/rasterize.h (row_bounds.h: RowChunk), not 16: this shader's
+  // frames are the deepest of the render (Cortex-M4, dithered tiles: 1,508 bytes, within 1.5 KB,
+  // against 1,572), and its rows cost far more than a table's round (under 0.6 % of its cycles).
+  static constexpr int32_t rows_a_chunk = 8;
 
   // Forward differencing set up on the first row that uses it; false for a small triangle or one
   // outside the budget (then every row is evaluated per pixel).
