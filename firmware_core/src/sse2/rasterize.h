@@ -34,8 +34,10 @@ inline void edge_setup(const TriangleView& tv, const Edge* e, int64_t area2, Tri
   s->small_box = false;
 }
 
+// Always inlined into rasterize: as a call, its pixel box goes through memory (x86-64 bilinear at
+// 20,000 triangles: 2 % more instructions).
 template <typename Shader>
-void rasterize_clipped(const TriangleView& tv, const Rect& clip, const PixelBox& box, Shader& shader) {
+TS_INLINE inline void rasterize_clipped(const TriangleView& tv, const Rect& clip, const PixelBox& box, Shader& shader) {
   const int32_t y0 = box.y0, y1 = box.y1;
   // The scan path: small boxes without explicit corners, in int32.
   constexpr uint16_t any_corner = corner_explicit0 | corner_explicit0 << 1 | corner_explicit0 << 2;
