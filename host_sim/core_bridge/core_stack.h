@@ -13,8 +13,8 @@
 
 namespace tristream {
 
-inline constexpr std::size_t core_stack_bytes_bilinear = 1152;     // measured 1,112 (-O2), 1,148 (-Os)
-inline constexpr std::size_t core_stack_bytes_zienkiewicz = 1536;  // measured 1,516 (-O2), 1,524 (-Os)
+inline constexpr std::size_t core_stack_bytes_bilinear = 1280;     // measured 1,248 (-O2), 1,188 (-Os)
+inline constexpr std::size_t core_stack_bytes_zienkiewicz = 1536;  // measured 1,500 (-O2), 1,500 (-Os)
 
 constexpr std::size_t core_stack_bytes(core::Method method) {
   return method == core::Method::zienkiewicz ? core_stack_bytes_zienkiewicz : core_stack_bytes_bilinear;
@@ -22,8 +22,8 @@ constexpr std::size_t core_stack_bytes(core::Method method) {
 
 // The same for a compressed blob rendered from its streams (render.h): the decoder's frames
 // below the band advance, besides the tile path's. Measured by make bench-mcu (--blobs compressed).
-inline constexpr std::size_t core_compressed_stack_bytes_bilinear = 1312;     // measured 1,272 (-O2), 1,300 (-Os)
-inline constexpr std::size_t core_compressed_stack_bytes_zienkiewicz = 1728;  // measured 1,676 (-O2), 1,676 (-Os)
+inline constexpr std::size_t core_compressed_stack_bytes_bilinear = 1408;     // measured 1,376 (-O2), 1,292 (-Os)
+inline constexpr std::size_t core_compressed_stack_bytes_zienkiewicz = 1728;  // measured 1,628 (-O2), 1,604 (-Os)
 
 constexpr std::size_t core_compressed_stack_bytes(core::Method method) {
   return method == core::Method::zienkiewicz ? core_compressed_stack_bytes_zienkiewicz
