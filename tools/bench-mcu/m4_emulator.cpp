@@ -11,10 +11,6 @@ namespace tristream::bench_mcu {
 
 namespace {
 
-void check(uc_err e, const char* what) {
-  if (e != UC_ERR_OK) throw std::runtime_error(std::string("unicorn: ") + what + ": " + uc_strerror(e));
-}
-
 void block_hook(uc_engine*, std::uint64_t address, std::uint32_t size, void* self) {
   static_cast<M4Emulator*>(self)->on_block(std::uint32_t(address), size);
 }
@@ -31,25 +27,11 @@ void divide_hook(uc_engine*, std::uint64_t address, std::uint32_t, void* self) {
 }  // namespace
 
 M4Emulator::M4Emulator(const ElfImage& elf, bool per_instruction, Core core)
-    : elf_(elf), model_(core), taken_extra_(model_.taken_extra()), per_instruction_(per_instruction) {
-  check(uc_open(UC_ARCH_ARM, uc_mode(UC_MODE_THUMB | UC_MODE_MCLASS), &uc_), "open");
-  check(uc_ctl_set_cpu_model(uc_, core == Core::m0plus ? UC_CPU_ARM_CORTEX_M0 : UC_CPU_ARM_CORTEX_M4),
-        "select the CPU model");
-  check(uc_mem_map(uc_, flash_base, flash_size, UC_PROT_READ | UC_PROT_EXEC), "map flash");
-  check(uc_mem_map(uc_, ram_base, ram_size, UC_PROT_READ | UC_PROT_WRITE), "map RAM");
-  check(uc_mem_map(uc_, rom_base, rom_size, UC_PROT_READ), "map the blob region");
-  for (const ElfSegment& s : elf.segments) {
-    const bool in_flash =
-        s.address >= flash_base && std::uint64_t(s.address) + s.memory_size <= flash_base + flash_size;
-    const bool in_ram = s.address >= ram_base && std::uint64_t(s.address) + s.memory_size <= ram_base + ram_size;
-    if (!in_flash && !in_ram) throw std::runtime_error(elf.path + ": a segment lies outside the board's flash and RAM");
-    if (s.executable && !in_flash) throw std::runtime_error(elf.path + ": code outside flash");
-  }
-  reset_data();
-  halt_ = elf.symbol("bench_halt").address;
-  functions_ = elf.functions;
-  functions_.push_back({0, 0, "(no symbol)"});
-  block_index_.assign(flash_size / 2, -1);
+    : UnicornMachine(elf, UC_ARCH_ARM, UC_MODE_THUMB | UC_MODE_MCLASS,
+                     core == Core::m0plus ? UC_CPU_ARM_CORTEX_M0 : UC_CPU_ARM_CORTEX_M4),
+      model_(core),
+      taken_extra_(model_.taken_extra()),
+      per_instruction_(per_instruction) {
   uc_hook h;
   if (per_instruction_)
     check(uc_hook_add(uc_, &h, UC_HOOK_CODE, reinterpret_cast<void*>(insn_hook), this, flash_base,
@@ -73,53 +55,13 @@ M4Emulator::M4Emulator(const ElfImage& elf, bool per_instruction, Core core)
   });
 }
 
-M4Emulator::~M4Emulator() { uc_close(uc_); }
-
-void M4Emulator::write(std::uint32_t address, const void* data, std::size_t size) {
-  check(uc_mem_write(uc_, address, data, size), "write memory");
-}
-
-void M4Emulator::read(std::uint32_t address, void* data, std::size_t size) {
-  check(uc_mem_read(uc_, address, data, size), "read memory");
-}
-
-void M4Emulator::fill(std::uint32_t address, std::uint32_t word, std::size_t words) {
-  const std::vector<std::uint32_t> v(words, word);
-  write(address, v.data(), v.size() * 4);
-}
-
-void M4Emulator::reset_data() {
-  for (const ElfSegment& s : elf_.segments) {
-    std::vector<std::uint8_t> bytes = s.bytes;
-    bytes.resize(s.memory_size, 0);
-    write(s.address, bytes.data(), bytes.size());
-  }
-}
-
 void M4Emulator::exclude(std::uint32_t begin, std::uint32_t end) {
-  exclude_begin_ = begin;
-  exclude_end_ = end;
+  set_excluded(begin, end);
   for (Block& b : blocks_) b.excluded = b.decoded.address >= begin && b.decoded.address < end;
 }
 
-std::uint32_t M4Emulator::function_of(std::uint32_t address) const {
-  auto it = std::upper_bound(functions_.begin(), functions_.end() - 1, address,
-                             [](std::uint32_t a, const ElfFunction& f) { return a < f.begin; });
-  if (it != functions_.begin()) {
-    --it;
-    if (address < it->end) return std::uint32_t(it - functions_.begin());
-  }
-  return std::uint32_t(functions_.size() - 1);
-}
-
-void M4Emulator::fail(const std::string& message) {
-  if (error_.empty()) error_ = message;
-  uc_emu_stop(uc_);
-}
-
 const M4Emulator::Block& M4Emulator::block_at(std::uint32_t address, std::uint32_t size) {
-  const std::uint32_t slot = (address - flash_base) / 2;
-  std::int32_t& index = block_index_[slot];
+  const std::int32_t index = block_index_[(address - flash_base) / 2];
   if (index >= 0 && blocks_[index].decoded.size == size) return blocks_[index];
   // A new block, or one translated again with another size: decode it (and keep the latest).
   std::vector<std::uint8_t> code(size);
@@ -142,16 +84,7 @@ const M4Emulator::Block& M4Emulator::block_at(std::uint32_t address, std::uint32
         !std::binary_search(divides_.begin(), divides_.end(), DivideSite{insn.address},
                             [](const DivideSite& x, const DivideSite& y) { return x.address < y.address; }))
       fail("a division at " + std::to_string(insn.address) + " outside the image's code ranges");
-  b.function = function_of(address);
-  b.entry = address == functions_[b.function].begin;
-  b.excluded = address >= exclude_begin_ && address < exclude_end_;
-  if (index < 0) {
-    index = std::int32_t(blocks_.size());
-    blocks_.push_back(std::move(b));
-  } else {
-    blocks_[index] = std::move(b);
-  }
-  return blocks_[index];
+  return keep_block(blocks_, address, std::move(b));
 }
 
 // A conditional branch ran last: it was taken when execution continues elsewhere than after it.
@@ -345,21 +278,12 @@ void M4Emulator::watch_stack(std::uint32_t address) {
 }
 
 RunCounts M4Emulator::call(std::uint32_t function, std::uint32_t stack_top, const std::vector<std::uint32_t>& args) {
-  if (args.size() > 4) throw std::runtime_error("call: at most 4 register arguments");
-  run_ = RunCounts{};
-  run_.function_cycles.assign(functions_.size(), 0);
-  run_.function_entries.assign(functions_.size(), 0);
-  if (address_profile_) run_.block_runs.assign(flash_size / 2, 0);
-  error_.clear();
+  start_call(args, UC_ARM_REG_R0, "write r0..r3");
   pending_ = false;
   previous_end_ = 0;
   previous_exit_ = InsnContext{};
   current_ = nullptr;
   current_insn_ = 0;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::uint32_t v = args[i];
-    check(uc_reg_write(uc_, UC_ARM_REG_R0 + int(i), &v), "write r0..r3");
-  }
   std::uint32_t sp = stack_top, lr = halt_ | 1u;
   stack_top_ = lowest_sp_ = stack_top;
   check(uc_reg_write(uc_, UC_ARM_REG_SP, &sp), "write SP");

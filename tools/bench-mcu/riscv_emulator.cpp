@@ -10,10 +10,6 @@ namespace tristream::bench_mcu::riscv {
 
 namespace {
 
-void check(uc_err e, const char* what) {
-  if (e != UC_ERR_OK) throw std::runtime_error(std::string("unicorn: ") + what + ": " + uc_strerror(e));
-}
-
 std::string hex(std::uint32_t v) {
   char s[16];
   std::snprintf(s, sizeof s, "0x%08x", unsigned(v));
@@ -37,24 +33,10 @@ bool by_address(const DivideSite& a, const DivideSite& b) { return a.address < b
 
 }  // namespace
 
-RiscvEmulator::RiscvEmulator(const ElfImage& elf, bool per_instruction) : elf_(elf), per_instruction_(per_instruction) {
-  check(uc_open(UC_ARCH_RISCV, UC_MODE_RISCV32, &uc_), "open");
-  check(uc_mem_map(uc_, flash_base, flash_size, UC_PROT_READ | UC_PROT_EXEC), "map flash");
-  check(uc_mem_map(uc_, ram_base, ram_size, UC_PROT_READ | UC_PROT_WRITE), "map RAM");
-  check(uc_mem_map(uc_, rom_base, rom_size, UC_PROT_READ), "map the blob region");
-  for (const ElfSegment& s : elf.segments) {
-    const bool in_rom = s.address >= flash_base && std::uint64_t(s.address) + s.memory_size <= flash_base + flash_size;
-    const bool in_ram = s.address >= ram_base && std::uint64_t(s.address) + s.memory_size <= ram_base + ram_size;
-    if (!in_rom && !in_ram) throw std::runtime_error(elf.path + ": a segment lies outside the board's flash and RAM");
-    if (s.executable && !in_rom) throw std::runtime_error(elf.path + ": code outside flash");
-  }
-  reset_data();
-  halt_ = elf.symbol("bench_halt").address;
+RiscvEmulator::RiscvEmulator(const ElfImage& elf, bool per_instruction)
+    : UnicornMachine(elf, UC_ARCH_RISCV, UC_MODE_RISCV32), per_instruction_(per_instruction) {
   const auto gp = elf.symbols.find("__global_pointer$");
   if (gp != elf.symbols.end()) global_pointer_ = gp->second.address;
-  functions_ = elf.functions;
-  functions_.push_back({0, 0, "(no symbol)"});
-  block_index_.assign(flash_size / 2, -1);
   if (per_instruction_) insn_index_.assign(flash_size / 2, -1);
   uc_hook h;
   const std::uint64_t first = flash_base, last = flash_base + flash_size - 1;
@@ -76,32 +58,8 @@ RiscvEmulator::RiscvEmulator(const ElfImage& elf, bool per_instruction) : elf_(e
             "add a division hook");
 }
 
-RiscvEmulator::~RiscvEmulator() { uc_close(uc_); }
-
-void RiscvEmulator::write(std::uint32_t address, const void* data, std::size_t size) {
-  check(uc_mem_write(uc_, address, data, size), "write memory");
-}
-
-void RiscvEmulator::read(std::uint32_t address, void* data, std::size_t size) {
-  check(uc_mem_read(uc_, address, data, size), "read memory");
-}
-
-void RiscvEmulator::fill(std::uint32_t address, std::uint32_t word, std::size_t words) {
-  const std::vector<std::uint32_t> v(words, word);
-  write(address, v.data(), v.size() * 4);
-}
-
-void RiscvEmulator::reset_data() {
-  for (const ElfSegment& s : elf_.segments) {
-    std::vector<std::uint8_t> bytes = s.bytes;
-    bytes.resize(s.memory_size, 0);
-    write(s.address, bytes.data(), bytes.size());
-  }
-}
-
 void RiscvEmulator::exclude(std::uint32_t begin, std::uint32_t end) {
-  exclude_begin_ = begin;
-  exclude_end_ = end;
+  set_excluded(begin, end);
   for (Cached& b : blocks_) b.excluded = b.decoded.address >= begin && b.decoded.address < end;
 }
 
@@ -109,23 +67,8 @@ void RiscvEmulator::set_stack_chain(bool on) {
   if (on) throw std::runtime_error("bench-mcu: --stack-chain is available on the Cortex-M4 only");
 }
 
-std::uint32_t RiscvEmulator::function_of(std::uint32_t address) const {
-  auto it = std::upper_bound(functions_.begin(), functions_.end() - 1, address,
-                             [](std::uint32_t a, const ElfFunction& f) { return a < f.begin; });
-  if (it != functions_.begin()) {
-    --it;
-    if (address < it->end) return std::uint32_t(it - functions_.begin());
-  }
-  return std::uint32_t(functions_.size() - 1);
-}
-
-void RiscvEmulator::fail(const std::string& message) {
-  if (error_.empty()) error_ = message;
-  uc_emu_stop(uc_);
-}
-
 const RiscvEmulator::Cached* RiscvEmulator::block_at(std::uint32_t address, std::uint32_t size) {
-  std::int32_t& index = block_index_[(address - flash_base) / 2];
+  const std::int32_t index = block_index_[(address - flash_base) / 2];
   if (index >= 0 && blocks_[index].decoded.size == size) return &blocks_[index];
   // A new block, or one translated again with another size: decode it (and keep the latest).
   std::vector<std::uint8_t> code(size);
@@ -138,16 +81,7 @@ const RiscvEmulator::Cached* RiscvEmulator::block_at(std::uint32_t address, std:
   for (const Insn& insn : b.decoded.insns)
     if (insn.divide && !std::binary_search(divides_.begin(), divides_.end(), DivideSite{insn.address}, by_address))
       fail("a division at " + hex(insn.address) + " outside the image's functions");
-  b.function = function_of(address);
-  b.entry = address == functions_[b.function].begin;
-  b.excluded = address >= exclude_begin_ && address < exclude_end_;
-  if (index < 0) {
-    index = std::int32_t(blocks_.size());
-    blocks_.push_back(std::move(b));
-  } else {
-    blocks_[index] = std::move(b);
-  }
-  return &blocks_[index];
+  return &keep_block(blocks_, address, std::move(b));
 }
 
 const Insn* RiscvEmulator::insn_at(std::uint32_t address, std::uint32_t* function) {
@@ -276,19 +210,10 @@ void RiscvEmulator::block_cost(std::uint32_t address, std::uint32_t* size, std::
 }
 
 RunCounts RiscvEmulator::call(std::uint32_t function, std::uint32_t stack_top, const std::vector<std::uint32_t>& args) {
-  if (args.size() > 4) throw std::runtime_error("call: at most 4 register arguments");
-  run_ = RunCounts{};
-  run_.function_cycles.assign(functions_.size(), 0);
-  run_.function_entries.assign(functions_.size(), 0);
-  if (address_profile_) run_.block_runs.assign(flash_size / 2, 0);
-  error_.clear();
+  start_call(args, UC_RISCV_REG_A0, "write a0..a3");
   pending_branch_ = pending_jump_ = false;
   previous_end_ = 0;
   previous_exit_ = Context{};
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::uint32_t v = args[i];
-    check(uc_reg_write(uc_, UC_RISCV_REG_A0 + int(i), &v), "write a0..a3");
-  }
   std::uint32_t sp = stack_top, ra = halt_, gp = global_pointer_;
   check(uc_reg_write(uc_, UC_RISCV_REG_SP, &sp), "write SP");
   check(uc_reg_write(uc_, UC_RISCV_REG_RA, &ra), "write RA");

@@ -5,37 +5,27 @@
 // hook per translation block: each block is decoded once, its static cost cached; taken branches,
 // jump targets and divisions (a hook on each DIV/DIVU/REM/REMU) are added as they run. Every load
 // and store is checked for alignment (the bench fails on a misaligned one: the ESP32-C3 class of
-// core traps or splits them). The board is the Cortex-M4's (m4_emulator.h's memory map). The
+// core traps or splits them). The board is unicorn_machine.h's. The
 // calling convention: arguments in a0..a3, the return address in ra, SP and GP set by the harness.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "elf_image.h"
-#include "m4_emulator.h"
 #include "riscv_cycle_model.h"
-
-struct uc_struct;
+#include "unicorn_machine.h"
 
 namespace tristream::bench_mcu::riscv {
 
-class RiscvEmulator {
+class RiscvEmulator : public UnicornMachine {
  public:
   // per_instruction: count with a hook on every instruction instead (slow; the check that block
   // counting is exact: same instructions and cycles).
   explicit RiscvEmulator(const ElfImage& elf, bool per_instruction = false);
-  ~RiscvEmulator();
-  RiscvEmulator(const RiscvEmulator&) = delete;
-  RiscvEmulator& operator=(const RiscvEmulator&) = delete;
 
-  void write(std::uint32_t address, const void* data, std::size_t size);
-  void read(std::uint32_t address, void* data, std::size_t size);
-  void fill(std::uint32_t address, std::uint32_t word, std::size_t words);
-  void reset_data();
+  // Counts apart the instructions in [begin, end) (the sink of the benchmark program).
   void exclude(std::uint32_t begin, std::uint32_t end);
   RunCounts call(std::uint32_t function, std::uint32_t stack_top, const std::vector<std::uint32_t>& args = {});
-  const std::vector<ElfFunction>& functions() const { return functions_; }
-  void set_address_profile(bool on) { address_profile_ = on; }
   // The stack chain reads Thumb return addresses: not available here (throws when on).
   void set_stack_chain(bool on);
   void block_cost(std::uint32_t address, std::uint32_t* size, std::uint32_t* cycles) const;
@@ -56,27 +46,17 @@ class RiscvEmulator {
   const Cached* block_at(std::uint32_t address, std::uint32_t size);
   // Per-instruction mode: the instruction at `address`, decoded once; its function in *function.
   const Insn* insn_at(std::uint32_t address, std::uint32_t* function);
-  void fail(const std::string& message);
   void resolve_pending(std::uint32_t next_address, std::uint32_t next_size);
   void add(Counts& c, std::uint32_t function, bool excluded, std::uint64_t cycles);
-  std::uint32_t function_of(std::uint32_t address) const;
   bool in_flash(std::uint32_t address) const { return address >= flash_base && address - flash_base < flash_size; }
 
-  const ElfImage& elf_;
-  uc_struct* uc_ = nullptr;
   bool per_instruction_;
-  bool address_profile_ = false;
-  std::uint32_t halt_ = 0, global_pointer_ = 0;
-  std::uint32_t exclude_begin_ = 0, exclude_end_ = 0;
-  std::vector<ElfFunction> functions_;     // the image's, then one for code outside them
-  std::vector<std::int32_t> block_index_;  // by (address - flash_base) / 2: index into blocks_, or -1
+  std::uint32_t global_pointer_ = 0;
   std::vector<Cached> blocks_;
   std::vector<std::int32_t> insn_index_;  // per-instruction mode: index into insns_, or -1
   std::vector<Insn> insns_;
   std::vector<std::uint32_t> insn_functions_;  // the function of each of insns_
   std::vector<DivideSite> divides_;
-  RunCounts run_;
-  std::string error_;
   // The last instruction was a branch (taken when the next is not at pending_fallthrough_) or a
   // jump (its target's alignment is paid when the next instruction is known).
   bool pending_branch_ = false, pending_jump_ = false;
