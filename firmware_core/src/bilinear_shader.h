@@ -157,14 +157,25 @@ struct BilinearShader {
     for (const RowSpan* const end = table + n; table != end; ++table, ++y) {
       const int32_t cs = max2(table->xs, cx0), ce = min2(table->xe, cx1);
       if (cs > ce) continue;
-      // v_ref is at pixel (0, 0), the rounding offset included (begin).
-      const uint32_t dx = uint32_t(cs), dy = uint32_t(y);
-      const BilinearChannel &c0 = ch[0], &c1 = ch[Channels > 1 ? 1 : 0], &c2 = ch[Channels - 1];
-      const uint32_t v0 = c0.at_offset(dx, dy), d0 = c0.step();
-      const uint32_t v1 = Channels == 3 ? c1.at_offset(dx, dy) : 0, d1 = Channels == 3 ? c1.step() : 0;
-      const uint32_t v2 = Channels == 3 ? c2.at_offset(dx, dy) : 0, d2 = Channels == 3 ? c2.step() : 0;
-      writer.template put_span<Dither>(writer.at(cs, y), cs, ce, y, v0, v1, v2, d0, d1, d2);
+      const RoundedStart s = rounded_start(cs, y);
+      writer.template put_span<Dither>(writer.at(cs, y), cs, ce, y, s.v0, s.v1, s.v2, s.d0, s.d1, s.d2);
     }
+  }
+  // The values of pixel (x, y) and their steps along the row, for the writers that take rounded
+  // values (v_ref is at pixel (0, 0), the rounding offset included: begin); channels 1 and 2 are 0
+  // for grey.
+  struct RoundedStart {
+    uint32_t v0, v1, v2, d0, d1, d2;
+  };
+  TS_INLINE RoundedStart rounded_start(int32_t x, int32_t y) const {
+    const uint32_t dx = uint32_t(x), dy = uint32_t(y);
+    const BilinearChannel &c0 = ch[0], &c1 = ch[Channels > 1 ? 1 : 0], &c2 = ch[Channels - 1];
+    return RoundedStart{c0.at_offset(dx, dy),
+                        Channels == 3 ? c1.at_offset(dx, dy) : 0,
+                        Channels == 3 ? c2.at_offset(dx, dy) : 0,
+                        c0.step(),
+                        Channels == 3 ? c1.step() : 0,
+                        Channels == 3 ? c2.step() : 0};
   }
   TS_SPAN_INLINE void span(int32_t y, int32_t, int32_t, int32_t x0, int32_t x1) {
     if constexpr (in_lanes) {
@@ -180,13 +191,8 @@ struct BilinearShader {
       // |y - yr|) / 2 < 2^12 units of it (docs/FIXED_POINT.md, max_dimension <= 4096): v + 2^15
       // stays in [0, 2^24), so (v + 2^15) >> 16 is in [0, 255].
       static_assert(config::max_dimension <= 4096, "the stepped values' error bound needs boxes below 4096 pixels");
-      // v_ref is at pixel (0, 0), the offset included (begin).
-      const uint32_t dx = uint32_t(x0), dy = uint32_t(y);
-      const BilinearChannel &c0 = ch[0], &c1 = ch[Channels > 1 ? 1 : 0], &c2 = ch[Channels - 1];
-      const uint32_t v0 = c0.at_offset(dx, dy), d0 = c0.step();
-      const uint32_t v1 = Channels == 3 ? c1.at_offset(dx, dy) : 0, d1 = Channels == 3 ? c1.step() : 0;
-      const uint32_t v2 = Channels == 3 ? c2.at_offset(dx, dy) : 0, d2 = Channels == 3 ? c2.step() : 0;
-      writer.put_span_in_range(p, x0, x1, y, v0, v1, v2, d0, d1, d2);
+      const RoundedStart s = rounded_start(x0, y);
+      writer.put_span_in_range(p, x0, x1, y, s.v0, s.v1, s.v2, s.d0, s.d1, s.d2);
       return;
     }
     uint32_t v[Channels], dv[Channels];
