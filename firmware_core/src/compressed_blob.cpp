@@ -522,17 +522,20 @@ uint32_t LayerDecoderState::predict(uint32_t a, uint32_t s, uint8_t* ra, uint8_t
 // older than the ring. The walk skips runs of used vertices by their known bytes: a used vertex's
 // byte k (1 .. 255) says it and the k - 1 after it are used (values are never undecoded, and all of
 // them are below decoded_, so in the ring while it is); each run's first byte is set to the run's
-// length as the walk finds it (capped at 255), so later walks skip it in one step.
+// length as the walk finds it (capped at 255), so later walks skip it in one step. The walk ends
+// past a + compressed_fresh_reach (at most that many steps): a farther result is refused by next().
 uint64_t LayerDecoderState::fresh(uint32_t a, uint32_t count, Columns cols) {
   const int S = config::subpixel_bits;
   const uint32_t known_at = 4 + 2 * uint32_t(blob_->values_per_vertex);
   const uint32_t skips = edges_at(uint32_t(blob_->values_per_vertex));
   uint32_t r = a + 1;
-  const uint32_t end = decoded_;
+  // The walk stops past a + compressed_fresh_reach (no vertex there can be the one) or at decoded_.
+  const uint32_t end =
+      decoded_ > a && decoded_ - a > compressed_fresh_reach + 1 ? a + compressed_fresh_reach + 1 : decoded_;
   if (r < end) {
     const uint32_t window = layer_->window, bytes = record_;
     uint8_t* const ring = ring_;
-    const uint32_t back = end - r;
+    const uint32_t back = decoded_ - r;
     if (back > window) return layer_->vertex_count;
     const uint32_t slot = ring_slot(back, window);
     const size_t span = size_t(window) * bytes;
@@ -547,7 +550,7 @@ uint64_t LayerDecoderState::fresh(uint32_t a, uint32_t count, Columns cols) {
         do {
           run += k;
           r += k;
-          p += size_t(k) * bytes;  // k <= end - r before the step, so within one wrap
+          p += size_t(k) * bytes;  // k <= decoded_ - r before the step, so within one wrap
           if (p >= ring_end) p -= span;
           if (r >= end) break;
           k = p[known_at];
@@ -656,7 +659,8 @@ Status LayerDecoderState::next(DecodedTriangle* out) {
     uint32_t count;
     if (!decode_uint(rc_, m_.fresh_count, index_bits, &count)) return fail(Status::bad_index);
     third = fresh(uint32_t(a), count, cols);
-    } else {
+    if (third - uint64_t(a) > compressed_fresh_reach) return fail(Status::bad_index);
+  } else {
     uint32_t gap;
     if (!decode_uint(rc_, m_.third_gap, index_bits, &gap)) return fail(Status::bad_index);
     third = uint64_t(a) + 1 + gap;

@@ -511,7 +511,7 @@ class LayerEncoder {
     const std::uint32_t guess = predict(t.a, x.anchor, x.side);
     if (guess != none) e_.bit(m_.predicted[kind], x.hit);
     if (x.hit) return;
-    const bool fresh = eligible(x.third, cols);
+    const bool fresh = x.third - t.a <= core::compressed_fresh_reach && eligible(x.third, cols);
     e_.bit(m_.fresh[kind], fresh);
     if (fresh) {
       std::uint32_t count = 0;

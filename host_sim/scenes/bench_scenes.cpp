@@ -27,7 +27,41 @@ Triangulation rgb_scene(Mesh mesh, int w, int h) {
   return tri;
 }
 
+// `n` vertices along y at equal steps from x = 0 to 2047, on the 1/16-pixel lattice, appended to
+// `mesh`; their values the photograph's along its row 32.
+void add_row(Mesh& mesh, int n, double y) {
+  const Image& photo = demo_photo();
+  for (int i = 0; i < n; ++i) {
+    const double x = std::round(2047.0 * 16 * i / (n - 1)) / 16;
+    mesh.points.push_back({x, y});
+    for (int c = 0; c < 3; ++c) mesh.values.push_back(photo.at(int(x) % photo.width, 32, c % photo.channels));
+  }
+}
+
 }  // namespace
+
+Triangulation two_row_strip(int per_row) {
+  Mesh mesh;
+  mesh.value_count = 3;
+  add_row(mesh, per_row, 0);
+  add_row(mesh, per_row, 63);
+  const auto n = std::uint32_t(per_row);
+  for (std::uint32_t i = 0; i + 1 < n; ++i) {
+    mesh.triangles.push_back({i, i + 1, n + i});
+    mesh.triangles.push_back({i + 1, n + i + 1, n + i});
+  }
+  return rgb_scene(std::move(mesh), 2048, 64);
+}
+
+Triangulation thin_fan(int rim) {
+  Mesh mesh;
+  mesh.value_count = 3;
+  mesh.points.push_back({1023.5, 0});
+  for (int c = 0; c < 3; ++c) mesh.values.push_back(128);
+  add_row(mesh, rim, 63);
+  for (std::uint32_t i = 1; i < std::uint32_t(rim); ++i) mesh.triangles.push_back({0, i, i + 1});
+  return rgb_scene(std::move(mesh), 2048, 64);
+}
 
 Triangulation bench_scene(int triangles, std::uint32_t seed) {
   const Image& photo = demo_photo();

@@ -18,4 +18,14 @@ Triangulation bench_scene(int triangles, std::uint32_t seed = 1);
 // triangles.
 Triangulation jittered_grid(int points_per_side, unsigned seed);
 
+// Meshes whose connectivity a compressed stream must code far from the triangles' first corners
+// (issue 44 item 4: before the reach limit of compressed_blob.h they decoded in quadratic time),
+// 2048 x 64, RGB from the demo photograph along y = 32, on the 1/16-pixel lattice:
+// A two-row strip: `per_row` vertices along y = 0 and as many along y = 63, each pair of
+// neighbours joined to the other row, 2 (per_row - 1) triangles.
+Triangulation two_row_strip(int per_row);
+// A fan of thin triangles: one apex at the top middle and `rim` vertices along y = 63, rim - 1
+// triangles.
+Triangulation thin_fan(int rim);
+
 }  // namespace tristream::scenes

@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
+#include <ctime>
+#include <tuple>
 #include <random>
 #include <string>
 
@@ -14,6 +17,7 @@
 #include "core_bridge/compress.h"
 #include "core_support.h"
 #include "io/tri_file.h"
+#include "scenes/bench_scenes.h"
 #include "tristream/compressed_blob.h"
 
 using namespace tristream;
@@ -154,6 +158,38 @@ TEST_CASE("compressed demo meshes decode to the same meshes and renders") {
     const Triangulation tri = read_tri_file(std::string(TRISTREAM_SOURCE_DIR) + "/data/demo/" + name);
     for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz})
       round_trip(pack_blob(tri, m), {{32, 32}, {0, 16}});
+  }
+}
+
+// CPU seconds of the fastest of five decodes of `packed`.
+double seconds_to_decode(const std::vector<std::uint8_t>& packed) {
+  double best = 1e30;
+  for (int i = 0; i < 5; ++i) {
+    const std::clock_t t0 = std::clock();
+    const Expanded r = expand(packed);
+    const std::clock_t t1 = std::clock();
+    REQUIRE(r.status == core::Status::ok);
+    best = std::min(best, double(t1 - t0) / CLOCKS_PER_SEC);
+  }
+  return best;
+}
+
+TEST_CASE("meshes coded far from the first corner (a two-row strip, a thin fan) round-trip, in linear time") {
+  // Issue 44 item 4: a third corner coded by its count among the unused vertices after the first
+  // corner made the decoder walk every vertex between them, quadratic in the mesh for these; the
+  // reach limit (compressed_fresh_reach) bounds the walk. Four times the mesh must take at most
+  // about four times the decode (quadratic: sixteen).
+  using Scene = Triangulation (*)(int);
+  for (auto [name, scene, n] : {std::tuple{"strip", Scene(scenes::two_row_strip), 4000},
+                               std::tuple{"fan", Scene(scenes::thin_fan), 8000}}) {
+    CAPTURE(name);
+    for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz})
+      round_trip(pack_blob(scene(500), m), {{32, 32}, {0, 16}});
+    const std::vector<std::uint8_t> small = compress_blob(pack_blob(scene(n), core::Method::bilinear));
+    const std::vector<std::uint8_t> large = compress_blob(pack_blob(scene(4 * n), core::Method::bilinear));
+    const double ts = seconds_to_decode(small), tl = seconds_to_decode(large);
+    std::printf("%s(%d) decoded in %.4f s, %s(%d) in %.4f s (%.1fx)\n", name, n, ts, name, 4 * n, tl, tl / ts);
+    CHECK(tl <= 6 * ts);
   }
 }
 

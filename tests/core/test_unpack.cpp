@@ -94,6 +94,11 @@ TEST_CASE("a damaged compressed blob is a DataError with the byte offset the dec
   std::vector<std::uint8_t> version = tstc;
   version[4] = 9;
   CHECK(message_of(version) == "b.bin: byte 4: unsupported blob version");
+  // Version 2 had no reach limit for fresh third corners (compressed_blob.h): say what to do.
+  version[4] = 2;
+  CHECK(message_of(version) ==
+        "b.bin: byte 4: version 2 compressed blob, whose fresh third corners have no reach limit: pack it again "
+        "with tripack --compress (this core reads version 3)");
   CHECK(message_of({tstc.begin(), tstc.begin() + 60}) == "b.bin: byte 60: blob truncated");
   // Every byte of the stream flipped: refused with the offset where the decoder stood when a
   // check failed (never before the flipped byte, which it has to read first, never past the end),

@@ -8,7 +8,7 @@
 namespace tristream::bench_mcu {
 
 const std::vector<std::string>& mesh_names() {
-  static const std::vector<std::string> names = {"kodim23", "scene4k", "grid40k"};
+  static const std::vector<std::string> names = {"kodim23", "scene4k", "grid40k", "strip5k", "fan4k"};
   return names;
 }
 
@@ -16,7 +16,9 @@ Triangulation make_mesh(const std::string& name) {
   if (name == "kodim23") return read_tri_file(std::string(TRISTREAM_SOURCE_DIR) + "/data/demo/kodim23.rgb.tri");
   if (name == "scene4k") return scenes::bench_scene(4000);
   if (name == "grid40k") return scenes::jittered_grid(142, 1);
-  throw UsageError("unknown mesh '" + name + "' (expected kodim23, scene4k or grid40k)");
+  if (name == "strip5k") return scenes::two_row_strip(2500);
+  if (name == "fan4k") return scenes::thin_fan(4000);
+  throw UsageError("unknown mesh '" + name + "' (expected kodim23, scene4k, grid40k, strip5k or fan4k)");
 }
 
 }  // namespace tristream::bench_mcu

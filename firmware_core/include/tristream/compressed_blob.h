@@ -5,7 +5,7 @@
 // core consumes the mesh (triangles by top row). Layout (little-endian, offsets from byte 0):
 //
 //   header, 64 bytes
-//     0  char[4] magic "TSTC"        4  u16 version (2)         6  u16 header size (64)
+//     0  char[4] magic "TSTC"        4  u16 version (3)         6  u16 header size (64)
 //     8  u32 total size             12  u16 width  14 u16 height
 //    16  u8 colour space   17 u8 method   18 u8 layer count   19 u8 values per vertex
 //    20  u8 sub-pixel bits   21 u8 gradient fraction bits   22 u16 flags (0)
@@ -26,7 +26,12 @@
 
 namespace tristream::core {
 
-inline constexpr uint16_t compressed_version = 2;  // 2: connectivity from open edges
+inline constexpr uint16_t compressed_version = 3;  // 2: connectivity from open edges; 3: fresh_reach
+// A third corner t coded "fresh" (by its count among the unused vertices after the triangle's first
+// corner a) lies at most this many vertices after a: t - a <= compressed_fresh_reach (a farther one
+// is gap-coded). It bounds the decoder's walk per triangle, so every valid stream decodes in time
+// linear in its triangles (version 2 had no bound: a fan or a two-row strip decoded in quadratic time).
+inline constexpr uint32_t compressed_fresh_reach = 2048;
 inline constexpr uint32_t compressed_header_size = 64;
 inline constexpr uint32_t compressed_layer_entry_size = 32;
 
