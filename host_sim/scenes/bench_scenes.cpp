@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "encoder/encoder.h"
+#include "encoder/panel.h"
 #include "geometry/delaunay.h"
 #include "io/image_io.h"
 
@@ -61,6 +63,14 @@ Triangulation thin_fan(int rim) {
   add_row(mesh, rim, 63);
   for (std::uint32_t i = 1; i < std::uint32_t(rim); ++i) mesh.triangles.push_back({0, i, i + 1});
   return rgb_scene(std::move(mesh), 2048, 64);
+}
+
+Triangulation grey_photo_1pct() {
+  const PanelPicture p = fit_to_panel(demo_photo(), 512, 512, Fit::fill);
+  EncodeOptions o;
+  o.vertices = 512 * 512 / 100;
+  o.grey = true;
+  return encode(p.picture, o).triangulation;
 }
 
 Triangulation bench_scene(int triangles, std::uint32_t seed) {

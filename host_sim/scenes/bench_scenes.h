@@ -18,6 +18,11 @@ Triangulation bench_scene(int triangles, std::uint32_t seed = 1);
 // triangles.
 Triangulation jittered_grid(int points_per_side, unsigned seed);
 
+// The demo photograph's central 512 x 512 in grey (BT.601 luma), encoded by the greedy encoder at
+// 1 % of its pixels (2,621 vertices; encode() with its default options): what triencode --grey
+// -n 2621 --width 512 --height 512 --fit fill makes of data/demo/kodim23.png. About a second.
+Triangulation grey_photo_1pct();
+
 // Meshes whose connectivity a compressed stream must code far from the triangles' first corners
 // (issue 44 item 4: before the reach limit of compressed_blob.h they decoded in quadratic time),
 // 2048 x 64, RGB from the demo photograph along y = 32, on the 1/16-pixel lattice:

@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   }
   run_cmd->add_option("--cpus", o.cpus, "m4, m0plus, rv32imc (default: every core whose --<core>-elf-dir is given)")
       ->delimiter(',');
-  run_cmd->add_option("--meshes", o.meshes, "kodim23, scene4k, grid40k, strip5k, fan4k")->delimiter(',')->capture_default_str();
+  run_cmd->add_option("--meshes", o.meshes, "kodim23, grey1pct, scene4k, grid40k, strip5k, fan4k")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--methods", o.methods, "bilinear, zienkiewicz")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--opts", o.opts, "O2, Os")->delimiter(',')->capture_default_str();
   run_cmd->add_option("--dither", o.dithers, "off, on")->delimiter(',')->capture_default_str();

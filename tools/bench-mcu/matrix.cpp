@@ -144,8 +144,9 @@ std::vector<Core> parse_cores(const RunOptions& o) {
 class Programs {
  public:
   explicit Programs(const RunOptions& o) : o_(o) {}
-  Program& get(Core core, const std::string& opt, const std::string& method) {
-    const std::string key = opt + "_" + method;
+  // `grey`: the program whose core is built for grey blobs (bench_<opt>_<method>_grey.elf).
+  Program& get(Core core, const std::string& opt, const std::string& method, bool grey) {
+    const std::string key = opt + "_" + method + (grey ? "_grey" : "");
     auto it = programs_.find(core_name(core) + ("/" + key));
     if (it != programs_.end()) return it->second;
     const std::string& dir = o_.elf_dirs[std::size_t(core)];
@@ -416,7 +417,7 @@ int run_matrix(const RunOptions& o) {
             for (const Tiling& t : matrix.tilings)
               for (const std::string& opt : o.opts)
                 for (const std::string& d : o.dithers) {
-                  Program& prog = programs.get(core, opt, method);
+                  Program& prog = programs.get(core, opt, method, blobs.opened.space == core::ColorSpace::grey);
                   run_configuration(o, prog, Configuration{core, blobs, kind, size, t, opt, d == "on"}, by_core[core]);
                 }
     }
