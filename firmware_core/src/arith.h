@@ -71,6 +71,44 @@ TS_INLINE inline uint32_t mulhi_u32(uint32_t a, uint32_t b) {
   }
 }
 
+// floor(a b / 2^32), the high word of the signed 64-bit product, from four 16 x 16 -> 32 products
+// (Hacker's Delight's mulhs; a = a_hi 2^16 + a_lo with a_hi signed, a_lo in [0, 2^16)): every
+// partial product and sum below stays within int32.
+TS_INLINE inline int32_t mulhi_s32_portable(int32_t a, int32_t b) {
+  const uint32_t a_lo = uint32_t(a) & 0xFFFFu, b_lo = uint32_t(b) & 0xFFFFu;
+  const int32_t a_hi = a >> 16, b_hi = b >> 16;
+  const int32_t t = a_hi * int32_t(b_lo) + int32_t((a_lo * b_lo) >> 16);
+  const int32_t w = int32_t(a_lo) * b_hi + (t & 0xFFFF);
+  return a_hi * b_hi + (t >> 16) + (w >> 16);
+}
+
+// a b, the signed 64-bit product, from the same four products (its low word from their low halves).
+TS_INLINE inline int64_t mul_s32_wide_portable(int32_t a, int32_t b) {
+  const uint32_t a_lo = uint32_t(a) & 0xFFFFu, b_lo = uint32_t(b) & 0xFFFFu;
+  const int32_t a_hi = a >> 16, b_hi = b >> 16;
+  const uint32_t lo_lo = a_lo * b_lo;
+  const int32_t t = a_hi * int32_t(b_lo) + int32_t(lo_lo >> 16);
+  const int32_t w = int32_t(a_lo) * b_hi + (t & 0xFFFF);
+  const uint32_t high = uint32_t(a_hi * b_hi + (t >> 16) + (w >> 16));
+  return int64_t((uint64_t(high) << 32) | (uint32_t(w) << 16) | (lo_lo & 0xFFFFu));
+}
+
+TS_INLINE inline int64_t mul_s32_wide(int32_t a, int32_t b) {
+  if constexpr (tuning::multiplies_wide) {
+    return int64_t(a) * b;  // one SMULL (Cortex-M3 and later), MUL and MULH (RISC-V M)
+  } else {
+    return mul_s32_wide_portable(a, b);
+  }
+}
+
+TS_INLINE inline int32_t mulhi_s32(int32_t a, int32_t b) {
+  if constexpr (tuning::multiplies_wide) {
+    return int32_t((int64_t(a) * b) >> 32);  // one SMULL (Cortex-M3 and later), MULH (RISC-V M)
+  } else {
+    return mulhi_s32_portable(a, b);
+  }
+}
+
 // floor(n / d) and n mod d (*rem) for n < 2^31 and d >= 1, from inv = floor((2^32 - 1) / d): n inv /
 // 2^32 is above n / d - n (d + 1) / (d 2^32) > n / d - 1, so the multiply-high is the quotient or
 // one below, and one correction makes it exact.
@@ -311,8 +349,8 @@ struct SplitProduct {
   TS_INLINE SplitProduct(int64_t x, int32_t y) {
     const int32_t xl = int32_t(uint32_t(x));
     const int32_t xh = int32_t(x >> 32) + int32_t(uint32_t(x) >> 31);
-    const int64_t l = int64_t(xl) * y;
-    high = int64_t(xh) * y + (l >> 32);
+    const int64_t l = mul_s32_wide(xl, y);
+    high = mul_s32_wide(xh, y) + (l >> 32);
     low = uint32_t(l);
   }
 };

@@ -193,7 +193,8 @@ struct ZienkiewiczChannel {
   template <typename Gradients>
   TS_INLINE static int64_t derivative_sum(const int32_t* edge_dx, const int32_t* edge_dy,
                                                                const Gradients& gradients, int edge, int vertex) {
-    return int64_t(edge_dx[edge]) * gradients[2 * vertex] + int64_t(edge_dy[edge]) * gradients[2 * vertex + 1];
+    return mul_s32_wide(edge_dx[edge], gradients[2 * vertex]) +
+           mul_s32_wide(edge_dy[edge], gradients[2 * vertex + 1]);
   }
 
   // dx, dy: domain-space edge vectors AB, BC, CA in position_fx; values q8_8; gradients q19_12
@@ -435,7 +436,7 @@ struct ZienkiewiczChannel {
   // p + the high word of the 64-bit product w t (modulo 2^32; eval_narrow's sums fit): what one
   // SMMLA computes, the instruction of eval32's and steps_at's assembly on Cortex-M4.
   TS_INLINE static int32_t mla_high(int32_t w, int32_t t, int32_t p) {
-    return int32_t(uint32_t(p) + uint32_t(int32_t((int64_t(w) * t) >> 32)));
+    return int32_t(uint32_t(p) + uint32_t(mulhi_s32(w, t)));
   }
 
   // Forward differencing (docs/FIXED_POINT.md, Zienkiewicz): values and differences in 2^-18 grey,
@@ -488,7 +489,7 @@ struct ZienkiewiczChannel {
     const int32_t q01 = int32_t(p01), q02 = int32_t(p02), q03 = int32_t(p03);
     const int32_t q10 = int32_t(p10), q11 = int32_t(p11), q12 = int32_t(p12), q20 = int32_t(p20), q21 = int32_t(p21);
     const int32_t q30 = int32_t(p30);
-    auto mul = [](int32_t x, int32_t y) { return int64_t(x) * y; };
+    auto mul = [](int32_t x, int32_t y) { return mul_s32_wide(x, y); };
     // P(a + m da, b + m db) = P + c1 m + c2 m^2 + c3 m^3 with c1 = P_a da + P_b db = r00 + r10 a
     // + r01 b + r20 a^2 + r11 a b + r02 b^2 (r00 = p10 da + p01 db, r10 = 2 p20 da + p11 db, ...),
     // c2 = c2_00 + c2_10 a + c2_01 b (c2_00 = p20 da^2 + p11 da db + p02 db^2, ...), c3 = p30 da^3 +

@@ -124,6 +124,24 @@ TEST_CASE("mulhi_u32 and its 16-bit form are the high word of the 64-bit product
   }
 }
 
+TEST_CASE("mulhi_s32, mul_s32_wide and their 16-bit forms are the signed 64-bit product and its high word") {
+  std::mt19937_64 rng(33);
+  std::vector<std::int32_t> values = {0, 1, -1, 2, -2, 0xFFFF, -0xFFFF, 0x10000, -0x10000, 0x7FFF, -0x8000,
+                                      0x7FFFFFFF, -0x7FFFFFFF - 1, -0x7FFFFFFF, 0x40000000, -0x40000000};
+  for (int i = 0; i < 2000; ++i) values.push_back(std::int32_t(std::uint32_t(rng() >> (32 + rng() % 32))));
+  for (int i = 0; i < 1000; ++i) values.push_back(-std::int32_t(std::uint32_t(rng() >> (33 + rng() % 31))));
+  for (std::int32_t a : values) {
+    for (std::int32_t b : values) {
+      const std::int32_t want = std::int32_t((std::int64_t(a) * b) >> 32);
+      INFO("a " << a << " b " << b);
+      REQUIRE(mulhi_s32_portable(a, b) == want);
+      REQUIRE(mulhi_s32(a, b) == want);
+      REQUIRE(mul_s32_wide_portable(a, b) == std::int64_t(a) * b);
+      REQUIRE(mul_s32_wide(a, b) == std::int64_t(a) * b);
+    }
+  }
+}
+
 TEST_CASE("divide_by_reciprocal is floor division for n below 2^31") {
   std::mt19937_64 rng(31);
   std::vector<std::uint32_t> divisors = {1, 2, 3, 4095, 4096, 65535, 65536, 131071, 131072, 0x7FFFFFFFu};
