@@ -93,9 +93,17 @@ TS_INLINE inline int64_t mul_s32_wide_portable(int32_t a, int32_t b) {
   return int64_t((uint64_t(high) << 32) | (uint32_t(w) << 16) | (lo_lo & 0xFFFFu));
 }
 
+// The two above as calls, for builds optimized for size: about 20 instructions each, inlined at
+// every product they would add kilobytes; a call still costs less than the library's 64 x 64
+// product.
+TS_NOINLINE inline int64_t mul_s32_wide_call(int32_t a, int32_t b) { return mul_s32_wide_portable(a, b); }
+TS_NOINLINE inline int32_t mulhi_s32_call(int32_t a, int32_t b) { return mulhi_s32_portable(a, b); }
+
 TS_INLINE inline int64_t mul_s32_wide(int32_t a, int32_t b) {
   if constexpr (tuning::multiplies_wide) {
     return int64_t(a) * b;  // one SMULL (Cortex-M3 and later), MUL and MULH (RISC-V M)
+  } else if constexpr (TS_SIZE) {
+    return mul_s32_wide_call(a, b);
   } else {
     return mul_s32_wide_portable(a, b);
   }
@@ -104,6 +112,8 @@ TS_INLINE inline int64_t mul_s32_wide(int32_t a, int32_t b) {
 TS_INLINE inline int32_t mulhi_s32(int32_t a, int32_t b) {
   if constexpr (tuning::multiplies_wide) {
     return int32_t((int64_t(a) * b) >> 32);  // one SMULL (Cortex-M3 and later), MULH (RISC-V M)
+  } else if constexpr (TS_SIZE) {
+    return mulhi_s32_call(a, b);
   } else {
     return mulhi_s32_portable(a, b);
   }
