@@ -146,6 +146,9 @@ Status open_blob(const void* bytes, size_t size, Blob* out, BlobError* error) {
   const uint8_t* b = static_cast<const uint8_t*>(bytes);
   Checker c{b, 0, error};
   if (size < wire::header::bytes) return c.fail(Status::truncated, uint32_t(size));
+  // Where a halfword load needs an even address (ARMv6-M) the tile path reads the blob's arrays
+  // by halfword loads (load_u16_even): a blob at an odd address would fault there.
+  if (!detail::blob_address_fits(uintptr_t(b), TS_UNALIGNED_STORES)) return c.fail(Status::bad_section, 0);
   namespace h = wire::header;
   const char* magic = wire::v1_magic;  // tested byte by byte here: has_magic costs this function registers
   if (b[0] != magic[0] || b[1] != magic[1] || b[2] != magic[2] || b[3] != magic[3])

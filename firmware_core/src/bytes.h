@@ -20,6 +20,24 @@
 namespace tristream::core::detail {
 
 inline uint16_t load_u16(const uint8_t* p) { return uint16_t(p[0] | (p[1] << 8)); }
+// load_u16 of an even address: one halfword load on every target, ARMv6-M included (where
+// load_u16, its address's alignment unknown, is two byte loads). For the tile path's reads of a
+// blob's u16 arrays (sections 4-aligned in a blob at an even address: blob_address_fits) and of
+// the band store's (4-aligned in the workspace).
+inline uint16_t load_u16_even(const uint8_t* p) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ && !TS_UNALIGNED_STORES
+  uint16_t x;
+  memcpy(&x, __builtin_assume_aligned(p, 2), 2);
+  return x;
+#else
+  return load_u16(p);
+#endif
+}
+// Whether a blob at `address` suits this core: any address where halfword loads take any address
+// (`unaligned_access`: TS_UNALIGNED_STORES), else an even one (load_u16_even).
+constexpr bool blob_address_fits(uintptr_t address, bool unaligned_access) {
+  return unaligned_access || (address & 1) == 0;
+}
 inline uint32_t load_u32(const uint8_t* p) {
   return uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24);
 }

@@ -18,8 +18,8 @@ struct BlobRecords {
   static constexpr uint32_t stride = blob_triangle_size;
   // Whether some records in the array are not triangles (their vertex indices not valid).
   static constexpr bool has_flag_records = false;
-  static uint32_t vertex(const uint8_t* p, int k) { return load_u16(p + 2 * k); }
-  static uint16_t flags(const uint8_t* p) { return load_u16(p + 6); }
+  static uint32_t vertex(const uint8_t* p, int k) { return load_u16_even(p + 2 * k); }
+  static uint16_t flags(const uint8_t* p) { return load_u16_even(p + 6); }
 };
 
 // The band store's with more than store_packed_slots slots (its layer's vertex_count): u16 v0,
@@ -33,12 +33,12 @@ struct StoreRecords {
   static constexpr uint32_t guard_bytes = 2;
   static constexpr bool has_flag_records = true;
   // Inlined where the code is optimized for size too (as PackedStoreRecords').
-  TS_INLINE static uint32_t vertex(const uint8_t* p, int k) { return load_u16(p + 2 * k); }
+  TS_INLINE static uint32_t vertex(const uint8_t* p, int k) { return load_u16_even(p + 2 * k); }
   TS_INLINE static bool is_flag_record(const uint8_t* p) {
-    return load_u16(p) == store_flag_marker;
+    return load_u16_even(p) == store_flag_marker;
   }
   TS_INLINE static uint16_t flags(const uint8_t* p) {
-    return is_flag_record(p + stride) ? load_u16(p + stride + 2) : 0;
+    return is_flag_record(p + stride) ? load_u16_even(p + stride + 2) : 0;
   }
 };
 

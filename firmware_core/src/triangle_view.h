@@ -31,8 +31,8 @@ inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map
   for (int k = 0; k < 3; ++k) {
     tv->v[k] = uint16_t(Records::vertex(p, k));
     const uint8_t* pos = layer.positions + 4 * size_t(tv->v[k]);
-    tv->x[k] = map.x(load_u16(pos));
-    tv->y[k] = map.y(load_u16(pos + 2));
+    tv->x[k] = map.x(load_u16_even(pos));
+    tv->y[k] = map.y(load_u16_even(pos + 2));
   }
   tv->flags = Records::flags(p);
   tv->x[3] = tv->y[3] = 0;
@@ -41,9 +41,9 @@ inline void load_triangle(const BlobLayer& layer, uint32_t t, const Mapping& map
 // The domain (unmapped) y of triangle t's vertices (of a v1 blob's layer).
 TS_INLINE inline void raw_ys(const BlobLayer& layer, uint32_t t, int32_t y[3]) {
   const uint8_t* p = layer.triangles + size_t(t) * blob_triangle_size;
-  y[0] = load_u16(layer.positions + 4 * size_t(load_u16(p)) + 2);
-  y[1] = load_u16(layer.positions + 4 * size_t(load_u16(p + 2)) + 2);
-  y[2] = load_u16(layer.positions + 4 * size_t(load_u16(p + 4)) + 2);
+  y[0] = load_u16_even(layer.positions + 4 * size_t(load_u16_even(p)) + 2);
+  y[1] = load_u16_even(layer.positions + 4 * size_t(load_u16_even(p + 2)) + 2);
+  y[2] = load_u16_even(layer.positions + 4 * size_t(load_u16_even(p + 4)) + 2);
 }
 
 // First and last pixel row whose sample points may lie in the triangle.
@@ -65,7 +65,7 @@ inline int32_t raw_max_y(const BlobLayer& layer, uint32_t t) {
 // Values of vertex v for `channels` channels starting at `first` (q8_8).
 inline void vertex_values(const BlobLayer& layer, int per_vertex, int first, int channels, uint16_t v, int32_t* out) {
   const uint8_t* p = layer.values + 2 * (size_t(v) * per_vertex + first);
-  for (int c = 0; c < channels; ++c) out[c] = load_u16(p + 2 * c);
+  for (int c = 0; c < channels; ++c) out[c] = load_u16_even(p + 2 * c);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "arith.h"
+#include "bytes.h"
 
 using namespace tristream::core::detail;
 
@@ -140,6 +141,22 @@ TEST_CASE("mulhi_s32, mul_s32_wide and their 16-bit forms are the signed 64-bit 
       REQUIRE(mul_s32_wide(a, b) == std::int64_t(a) * b);
     }
   }
+}
+
+TEST_CASE("load_u16_even reads load_u16's value; blobs at odd addresses only where halfword loads take them") {
+  alignas(4) const std::uint8_t bytes[8] = {0x34, 0x12, 0xFF, 0x00, 0x01, 0x80, 0xCD, 0xAB};
+  for (int at = 0; at < 8; at += 2) CHECK(load_u16_even(bytes + at) == load_u16(bytes + at));
+  // open_blob's test: any address with unaligned halfword loads; else (ARMv6-M) even ones only,
+  // since the tile path reads the blob's arrays with load_u16_even.
+  for (std::uintptr_t address : {0x20000000u, 0x20000002u, 0x08001234u}) {
+    CHECK(blob_address_fits(address, true));
+    CHECK(blob_address_fits(address, false));
+  }
+  for (std::uintptr_t address : {0x20000001u, 0x08001233u}) {
+    CHECK(blob_address_fits(address, true));
+    CHECK_FALSE(blob_address_fits(address, false));
+  }
+  CHECK(blob_address_fits(0x20000001u, TS_UNALIGNED_STORES) == bool(TS_UNALIGNED_STORES));
 }
 
 TEST_CASE("divide_by_reciprocal is floor division for n below 2^31") {

@@ -151,7 +151,9 @@ void ts_params_init(ts_params* params);
    twice (its CRC-32, then its fields; docs/FORMAT.md has the cost): call it once, not once a
    frame, and keep `blob` for every frame.
    The blob is read in place by every later call: its bytes must stay where they are, unchanged,
-   while `blob` is used. */
+   while `blob` is used. On a core without unaligned halfword loads (ARMv6-M: Cortex-M0, M0+) the
+   blob must start at an even address (tripack's C arrays are 4-aligned): an odd one is
+   TS_BAD_SECTION at offset 0. */
 ts_status ts_open(const void* bytes, size_t size, ts_blob* blob, uint32_t* error_offset);
 /* Bytes of tile buffer and of workspace needed for these parameters. */
 ts_status ts_tile_buffer_size(const ts_blob* blob, const ts_params* params, size_t* bytes);
