@@ -54,13 +54,27 @@ inline uint64_t mulhi_u64_portable(uint64_t a, uint64_t b) {
   return hi_hi + (hi_lo >> 32) + (lo_hi >> 32) + (mid >> 32);
 }
 
-// High 32 bits of the 64-bit product a * b, from four 16 x 16 -> 32 products (ARMv6-M, where a
-// 64-bit product is a library call; the result is the same everywhere).
-TS_INLINE inline uint32_t mulhi_u32_portable(uint32_t a, uint32_t b) {
+// The 64-bit product a * b, from four 16 x 16 -> 32 products (ARMv6-M, where a 64-bit product is
+// a library call; the result is the same everywhere).
+TS_INLINE inline uint64_t mul_u32_wide_portable(uint32_t a, uint32_t b) {
   const uint32_t a_lo = a & 0xFFFFu, a_hi = a >> 16, b_lo = b & 0xFFFFu, b_hi = b >> 16;
   const uint32_t lo_lo = a_lo * b_lo, hi_lo = a_hi * b_lo, lo_hi = a_lo * b_hi, hi_hi = a_hi * b_hi;
   const uint32_t mid = (lo_lo >> 16) + (hi_lo & 0xFFFFu) + (lo_hi & 0xFFFFu);  // below 3 * 2^16
-  return hi_hi + (hi_lo >> 16) + (lo_hi >> 16) + (mid >> 16);
+  const uint32_t high = hi_hi + (hi_lo >> 16) + (lo_hi >> 16) + (mid >> 16);
+  return (uint64_t(high) << 32) | (mid << 16) | (lo_lo & 0xFFFFu);
+}
+
+// Its high 32 bits (the low word's work is dropped).
+TS_INLINE inline uint32_t mulhi_u32_portable(uint32_t a, uint32_t b) {
+  return uint32_t(mul_u32_wide_portable(a, b) >> 32);
+}
+
+TS_INLINE inline uint64_t mul_u32_wide(uint32_t a, uint32_t b) {
+  if constexpr (tuning::multiplies_wide) {
+    return uint64_t(a) * b;  // one UMULL (Cortex-M3 and later), MUL and MULHU (RISC-V M)
+  } else {
+    return mul_u32_wide_portable(a, b);
+  }
 }
 
 TS_INLINE inline uint32_t mulhi_u32(uint32_t a, uint32_t b) {
@@ -328,7 +342,7 @@ class PreinvRoundingDivider {
     // shift_) is u0 >> (32 - shift_) without a shift by 32 when shift_ is 0.
     u1 = (u1 << shift_) | ((u0 >> 1) >> (31 - shift_));
     u0 <<= shift_;
-    const uint64_t p = uint64_t(inv_) * u1 + ((uint64_t(u1) << 32) | u0);
+    const uint64_t p = mul_u32_wide(inv_, u1) + ((uint64_t(u1) << 32) | u0);
     uint32_t q = uint32_t(p >> 32) + 1;
     uint32_t r = u0 - q * norm_;
     if (r > uint32_t(p)) {

@@ -76,10 +76,13 @@ struct BilinearChannel {
   TS_INLINE void setup_from_vertex0(const VertexZeroEdges& e, const Divider& by_area2,
                                                          const int32_t* values) {
     constexpr int shift = q16_16::frac_bits - q8_8::frac_bits;
-    const int64_t u = values[2] - values[1], w = values[0] - values[1];
-    dvdx = uint32_t(by_area2((u * e.a0 + w * e.a1) * (int64_t(1) << shift)));
-    dvdy = uint32_t(by_area2((u * e.b0 + w * e.b1) * (int64_t(1) << shift)));
-    v_ref = (uint32_t(values[0]) << shift) + uint32_t(by_area2((u * e.p + w * e.q) * (int64_t(1) << shift)));
+    const int32_t u = values[2] - values[1], w = values[0] - values[1];
+    const auto sum = [](int32_t u, int32_t x, int32_t w, int32_t y) TS_INLINE {
+      return (mul_s32_wide(u, x) + mul_s32_wide(w, y)) * (int64_t(1) << shift);
+    };
+    dvdx = uint32_t(by_area2(sum(u, e.a0, w, e.a1)));
+    dvdy = uint32_t(by_area2(sum(u, e.b0, w, e.b1)));
+    v_ref = (uint32_t(values[0]) << shift) + uint32_t(by_area2(sum(u, e.p, w, e.q)));
   }
   // q16_16 value at (x, y), modulo 2^32 (exact when the pixel is covered).
   uint32_t at(int32_t x, int32_t y, int32_t xr, int32_t yr) const {

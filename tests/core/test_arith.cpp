@@ -111,7 +111,7 @@ TEST_CASE("ShortRoundingDivider equals round_div wherever |2n + d| 2d < 2^64") {
   }
 }
 
-TEST_CASE("mulhi_u32 and its 16-bit form are the high word of the 64-bit product") {
+TEST_CASE("mulhi_u32, mul_u32_wide and their 16-bit forms are the 64-bit product and its high word") {
   std::mt19937_64 rng(32);
   std::vector<std::uint32_t> values = {0, 1, 2, 0xFFFFu, 0x10000u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFEu, 0xFFFFFFFFu};
   for (int i = 0; i < 2000; ++i) values.push_back(std::uint32_t(rng() >> (32 + rng() % 32)));
@@ -120,6 +120,8 @@ TEST_CASE("mulhi_u32 and its 16-bit form are the high word of the 64-bit product
       const std::uint32_t want = std::uint32_t((std::uint64_t(a) * b) >> 32);
       INFO("a " << a << " b " << b);
       REQUIRE(mulhi_u32_portable(a, b) == want);
+      REQUIRE(mul_u32_wide_portable(a, b) == std::uint64_t(a) * b);
+      REQUIRE(mul_u32_wide(a, b) == std::uint64_t(a) * b);
       REQUIRE(mulhi_u32(a, b) == want);
     }
   }
