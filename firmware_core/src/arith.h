@@ -87,7 +87,9 @@ TS_INLINE inline uint32_t mulhi_u32(uint32_t a, uint32_t b) {
 
 // floor(a b / 2^32), the high word of the signed 64-bit product, from four 16 x 16 -> 32 products
 // (Hacker's Delight's mulhs; a = a_hi 2^16 + a_lo with a_hi signed, a_lo in [0, 2^16)): every
-// partial product and sum below stays within int32.
+// partial product and sum below stays within int32. Written apart from mul_s32_wide_portable
+// (unlike mulhi_u32_portable): as that one's high word, zienkiewicz on the Cortex-M0+ took 0.5 %
+// more cycles at -O2 and 40 bytes more stack.
 TS_INLINE inline int32_t mulhi_s32_portable(int32_t a, int32_t b) {
   const uint32_t a_lo = uint32_t(a) & 0xFFFFu, b_lo = uint32_t(b) & 0xFFFFu;
   const int32_t a_hi = a >> 16, b_hi = b >> 16;
