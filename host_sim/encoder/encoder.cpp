@@ -8,6 +8,7 @@
 
 #include "common/activity.h"
 #include "common/errors.h"
+#include "encoder/flips.h"
 #include "encoder/greedy.h"
 #include "encoder/least_squares.h"
 #include "encoder/pixel_scan.h"
@@ -64,10 +65,17 @@ void run_greedy(GreedyInserter& g, const Planes& target, const EncodeOptions& o,
   }
 }
 
-Mesh finish(Mesh mesh, const Planes& target, VertexFit fit, int relocate_passes) {
+Mesh finish(Mesh mesh, const Planes& target, VertexFit fit, int relocate_passes, int flip_rounds) {
   if (fit == VertexFit::lsq) {
-    encoder::fit_least_squares(mesh, target, relocate_passes <= 0);
+    encoder::fit_least_squares(mesh, target, false);
     if (relocate_passes > 0) encoder::relocate_vertices(mesh, target, relocate_passes);
+    for (int r = 0; r < flip_rounds; ++r) {
+      const encoder::FlipReport flips = encoder::flip_edges(mesh, target);
+      if (relocate_passes > 0)
+        encoder::relocate_vertices(mesh, target, relocate_passes, false, &flips.touched);
+      else
+        encoder::fit_least_squares(mesh, target, false);
+    }
   }
   for (double& v : mesh.values) v = to_byte(v);
   return mesh;
@@ -194,14 +202,14 @@ EncodeResult encode(const Image& image, const EncodeOptions& o) {
       run_greedy(g, target, o, limit, 0.0, 1.0);
       mesh = g.mesh();
     }
-    tri.layers.push_back(finish(std::move(mesh), target, o.fit, o.relocate_passes));
+    tri.layers.push_back(finish(std::move(mesh), target, o.fit, o.relocate_passes, o.flip_rounds));
   } else {
     const char* names[2][3] = {{"r", "g", "b"}, {"y", "cb", "cr"}};
     for (int c = 0; c < 3; ++c) {
       const Planes t = encoder::channel_of(target, c), gd = encoder::channel_of(guide, c);
       GreedyInserter g(t, gd, go, pixel_values(t));
       run_greedy(g, t, o, limit, c / 3.0, 1 / 3.0);
-      Mesh mesh = finish(g.mesh(), t, o.fit, o.relocate_passes);
+      Mesh mesh = finish(g.mesh(), t, o.fit, o.relocate_passes, o.flip_rounds);
       mesh.name = names[tri.space == ColorSpace::ycbcr][c];
       tri.layers.push_back(std::move(mesh));
     }
@@ -291,7 +299,7 @@ Triangulation regular_grid(const Image& image, std::size_t vertices, ColorSpace 
       for (int c = 0; c < target.channels; ++c) mesh.values.push_back(to_byte(target.at(x, y, c)));
     }
   mesh.triangles = delaunay_triangulation(mesh.points);
-  tri.layers.push_back(finish(std::move(mesh), target, fit, 0));
+  tri.layers.push_back(finish(std::move(mesh), target, fit, 0, 0));
   return tri;
 }
 

@@ -48,6 +48,10 @@ struct EncodeOptions {
   double smoothing_sigma = -1;
   // With VertexFit::lsq: passes of vertex relocation after the insertion (encoder/relocate.h).
   int relocate_passes = 4;
+  // With VertexFit::lsq: rounds of data-dependent triangulation after the relocation, each
+  // edge flips where they lower the error (encoder/flips.h), then relocation without the
+  // Delaunay condition. 0 keeps the mesh Delaunay.
+  int flip_rounds = 2;
   // Called now and then with the fraction done, in [0, 1].
   std::function<void(double)> progress;
 };

@@ -4,9 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "encoder/least_squares.h"
+#include "encoder/mesh_adjacency.h"
 #include "encoder/pixel_scan.h"
 #include "geometry/predicates.h"
 
@@ -35,11 +38,49 @@ struct StarSums {
   }
 };
 
+// The interpolant (each channel) and the vertex's weight phi along one run of pixels: values at
+// the run's first pixel and steps per pixel.
+struct RunLine {
+  double phi = 0, dphi = 0;
+  std::array<double, max_channels> value{}, dvalue{};
+};
+
+// Adds a run of n pixels (px: CH floats each) to s. Values are taken at offsets i (value + i *
+// dvalue, not stepped) and the sums go to two interleaved sets of accumulators, so that no
+// chain of dependent additions sets the pace.
+template <int CH>
+void add_run(const RunLine& line, const float* px, int n, StarSums& s) {
+  double ee[2][CH] = {}, ephi[2][CH] = {}, phi2[2] = {};
+  auto pixel = [&](int i, int j) {
+    const double phi = line.phi + line.dphi * i;
+    phi2[j] += phi * phi;
+    for (int c = 0; c < CH; ++c) {
+      const double e = line.value[c] + line.dvalue[c] * i - px[i * CH + c];
+      ee[j][c] += e * e;
+      ephi[j][c] += e * phi;
+    }
+  };
+  int i = 0;
+  for (; i + 1 < n; i += 2) pixel(i, 0), pixel(i + 1, 1);
+  if (i < n) pixel(i, 0);
+  s.phi2 += phi2[0] + phi2[1];
+  for (int c = 0; c < CH; ++c) {
+    s.ee += ee[0][c] + ee[1][c];
+    s.ephi[c] += ephi[0][c] + ephi[1][c];
+  }
+}
+
 class Relocator {
  public:
-  Relocator(Mesh& mesh, const Planes& target) : mesh_(mesh), target_(target), ch_(target.channels) {
+  Relocator(Mesh& mesh, const Planes& target, bool keep_delaunay, const std::vector<std::uint8_t>* first_tried)
+      : mesh_(mesh), target_(target), ch_(target.channels), keep_delaunay_(keep_delaunay) {
+    if (ch_ < 1 || ch_ > max_channels)
+      throw std::invalid_argument("relocate: expected 1 to " + std::to_string(max_channels) + " channels");
     occupied_.assign(std::size_t(target.width) * target.height, 0);
-    active_.assign(mesh.vertex_count(), 1);
+    if (first_tried && first_tried->size() == mesh.vertex_count())
+      active_ = *first_tried;
+    else
+      active_.assign(mesh.vertex_count(), 1);
     for (const Point& p : mesh.points) occupied_[std::size_t(p.y) * target.width + std::size_t(p.x)] = 1;
     const std::size_t n = mesh.vertex_count();
     start_.assign(n + 1, 0);
@@ -50,28 +91,7 @@ class Relocator {
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
       for (std::uint32_t v : mesh.triangles[t].v) star_[fill[v]++] = std::uint32_t(t);
-    // Neighbours: the triangle across edge e (v[e], v[e + 1]) of each triangle.
-    struct HalfEdge {
-      std::uint64_t key;
-      std::uint32_t t;
-      int e;
-    };
-    std::vector<HalfEdge> edges;
-    edges.reserve(mesh.triangles.size() * 3);
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      for (int e = 0; e < 3; ++e) {
-        const std::uint64_t a = mesh.triangles[t].v[e], b = mesh.triangles[t].v[(e + 1) % 3];
-        edges.push_back({std::min(a, b) << 32 | std::max(a, b), std::uint32_t(t), e});
-      }
-    std::sort(edges.begin(), edges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-      return x.key != y.key ? x.key < y.key : x.t < y.t;
-    });
-    across_.assign(mesh.triangles.size(), {none, none, none});
-    for (std::size_t i = 0; i + 1 < edges.size(); ++i)
-      if (edges[i].key == edges[i + 1].key) {
-        across_[edges[i].t][edges[i].e] = edges[i + 1].t;
-        across_[edges[i + 1].t][edges[i + 1].e] = edges[i].t;
-      }
+    across_ = triangle_neighbours(mesh);
   }
 
   // One pass over the vertices; returns the number of moves.
@@ -139,6 +159,7 @@ class Relocator {
       const auto p = corners(star_[i], v, q, k);
       if (orient(p[0], p[1], p[2]) <= 0) return false;
     }
+    if (!keep_delaunay_) return true;
     const Point qp{double(q.x), double(q.y)};
     for (std::size_t i = start_[v]; i < start_[v + 1]; ++i) {
       const std::uint32_t t = star_[i];
@@ -149,7 +170,7 @@ class Relocator {
       }
       for (int e = 0; e < 3; ++e) {
         const std::uint32_t n = across_[t][e];
-        if (n == none) continue;
+        if (n == no_neighbour) continue;
         const auto& nv = mesh_.triangles[n].v;
         const std::uint32_t a = mesh_.triangles[t].v[e], b = mesh_.triangles[t].v[(e + 1) % 3];
         for (std::uint32_t o : nv)
@@ -176,16 +197,22 @@ class Relocator {
         a0[e] = (double(c.y - b.y) * b.x - double(c.x - b.x) * b.y) / area2;
         for (int ch = 0; ch < ch_; ++ch) val[e][ch] = mesh_.value(mesh_.triangles[t].v[e], ch);
       }
-      scan_triangle(p, [&](int x, int y) {
+      // Along a run the interpolant and phi are linear in x: their values at the run's start
+      // and their x-derivatives.
+      RunLine line;
+      line.dphi = ax[k];
+      for (int c = 0; c < ch_; ++c) line.dvalue[c] = ax[0] * val[0][c] + ax[1] * val[1][c] + ax[2] * val[2][c];
+      scan_triangle_runs(p, [&](int y, int first, int last) {
         double l[3];
-        for (int e = 0; e < 3; ++e) l[e] = ax[e] * x + ay[e] * y + a0[e];
-        const double phi = l[k];
-        s.phi2 += phi * phi;
-        const float* px = &target_.v[(std::size_t(y) * target_.width + x) * ch_];
-        for (int c = 0; c < ch_; ++c) {
-          const double e0 = l[0] * val[0][c] + l[1] * val[1][c] + l[2] * val[2][c] - px[c];
-          s.ee += e0 * e0;
-          s.ephi[c] += e0 * phi;
+        for (int e = 0; e < 3; ++e) l[e] = ax[e] * first + ay[e] * y + a0[e];
+        line.phi = l[k];
+        for (int c = 0; c < ch_; ++c) line.value[c] = l[0] * val[0][c] + l[1] * val[1][c] + l[2] * val[2][c];
+        const float* px = &target_.v[(std::size_t(y) * target_.width + first) * ch_];
+        switch (ch_) {
+          case 1: add_run<1>(line, px, last - first + 1, s); break;
+          case 2: add_run<2>(line, px, last - first + 1, s); break;
+          case 3: add_run<3>(line, px, last - first + 1, s); break;
+          default: add_run<4>(line, px, last - first + 1, s); break;  // at most max_channels
         }
       });
     }
@@ -195,22 +222,23 @@ class Relocator {
   Mesh& mesh_;
   const Planes& target_;
   int ch_;
+  bool keep_delaunay_;
   std::vector<std::uint8_t> occupied_;
   std::vector<std::uint8_t> active_;  // v or a neighbour moved since v was last tried
   std::vector<std::size_t> start_;   // star of v: star_[start_[v] .. start_[v + 1])
   std::vector<std::uint32_t> star_;  // triangle indices
-  static constexpr std::uint32_t none = 0xFFFFFFFFu;
   std::vector<std::array<std::uint32_t, 3>> across_;
 };
 
 }  // namespace
 
-RelocateReport relocate_vertices(Mesh& mesh, const Planes& target, int passes) {
+RelocateReport relocate_vertices(Mesh& mesh, const Planes& target, int passes, bool keep_delaunay,
+                                 const std::vector<std::uint8_t>* first_tried) {
   RelocateReport report;
   report.sse_before = linear_squared_error(mesh, target);
   // Every move and value change lowers the squared error of its star, the only pixels it
   // affects, so the total falls monotonically; the refit at the end lowers it further.
-  Relocator relocator(mesh, target);
+  Relocator relocator(mesh, target, keep_delaunay, first_tried);
   for (int i = 0; i < passes; ++i) {
     const std::size_t moves = relocator.pass();
     report.moves += moves;

@@ -23,7 +23,7 @@ struct EncodeArgs {
   std::optional<double> error, sigma;
   std::string method, blob, color, space, cotri, values, rank, fit, name;
   bool grey = false;
-  std::optional<int> relocate;
+  std::optional<int> relocate, flips;
   std::optional<int> width, height;
 };
 
@@ -43,6 +43,7 @@ void check_keywords(const EncodeArgs& a, bool grey) {
     throw py::value_error("error: expected a number above 0, at most 255");
   if (a.sigma && !(*a.sigma >= 0 && *a.sigma <= 10)) throw py::value_error("sigma: expected a number in 0..10");
   if (a.relocate && (*a.relocate < 0 || *a.relocate > 100)) throw py::value_error("relocate: expected 0 to 100");
+  if (a.flips && (*a.flips < 0 || *a.flips > 100)) throw py::value_error("flips: expected 0 to 100");
   if (bool(a.width) != bool(a.height))
     throw py::value_error("width, height: give the panel's width and height together");
   if (a.width && (*a.width < 2 || *a.height < 2 || *a.width > 65535 || *a.height > 65535))
@@ -51,6 +52,7 @@ void check_keywords(const EncodeArgs& a, bool grey) {
     throw py::value_error("color, space, cotri: apply to colour encodings only (not a grey image or grey=True)");
   if (a.color == "separate" && a.cotri != "greedy") throw py::value_error("cotri: applies to color='co' only");
   if (a.values == "pixel" && a.relocate) throw py::value_error("relocate: applies to values='lsq' only");
+  if (a.values == "pixel" && a.flips) throw py::value_error("flips: applies to values='lsq' only");
 }
 
 EncodeOptions options_of(const EncodeArgs& a) {
@@ -65,6 +67,7 @@ EncodeOptions options_of(const EncodeArgs& a) {
   o.rank_by_total_error = one_of("rank", a.rank, {"total", "worst"}) == "total";
   o.smoothing_sigma = a.sigma.value_or(-1);
   if (a.relocate) o.relocate_passes = *a.relocate;
+  if (a.flips) o.flip_rounds = *a.flips;
   return o;
 }
 
@@ -96,21 +99,21 @@ void bind_encode(py::module_& m) {
       [](const py::handle& image, std::optional<long long> vertices, std::optional<long long> max_bytes,
          std::optional<double> error, const std::string& method, const std::string& blob, bool grey,
          const std::string& color, const std::string& space, const std::string& cotri, const std::string& values,
-         const std::string& rank, std::optional<double> sigma, std::optional<int> relocate, std::optional<int> width,
-         std::optional<int> height, const std::string& fit, const std::string& name) {
+         const std::string& rank, std::optional<double> sigma, std::optional<int> relocate, std::optional<int> flips,
+         std::optional<int> width, std::optional<int> height, const std::string& fit, const std::string& name) {
         const EncodeArgs a{vertices, max_bytes, error, sigma, method, blob,     color, space, cotri,
-                           values,   rank,      fit,   name,  grey,   relocate, width, height};
+                           values,   rank,      fit,   name,  grey,   relocate, flips, width, height};
         return encode_array(image, a);
       },
       py::arg("image"), py::arg("vertices") = py::none(), py::kw_only(), py::arg("max_bytes") = py::none(),
       py::arg("error") = py::none(), py::arg("method") = "bilinear", py::arg("blob") = "compressed",
       py::arg("grey") = false, py::arg("color") = "co", py::arg("space") = "rgb", py::arg("cotri") = "greedy",
       py::arg("values") = "lsq", py::arg("rank") = "total", py::arg("sigma") = py::none(),
-      py::arg("relocate") = py::none(), py::arg("width") = py::none(), py::arg("height") = py::none(),
+      py::arg("relocate") = py::none(), py::arg("flips") = py::none(), py::arg("width") = py::none(), py::arg("height") = py::none(),
       py::arg("fit") = "stretch", py::arg("name") = "image",
       "Encodes an image (uint8 (H, W) or (H, W, 3)) as triencode does with the same options: vertices=N (-n), "
       "error=E (-e) or max_bytes=B (--max-bytes, with method= and blob=), and grey, color, space, cotri, values, "
-      "rank, sigma, relocate, width, height, fit. `name` starts the messages of errors in the data.");
+      "rank, sigma, relocate, flips, width, height, fit. `name` starts the messages of errors in the data.");
 }
 
 }  // namespace tristream::python

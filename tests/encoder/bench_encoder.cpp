@@ -18,7 +18,8 @@
 namespace {
 
 void encode_image(benchmark::State& state, const std::string& file, tristream::VertexFit fit,
-                  int relocate_passes = tristream::EncodeOptions{}.relocate_passes) {
+                  int relocate_passes = tristream::EncodeOptions{}.relocate_passes,
+                  int flip_rounds = tristream::EncodeOptions{}.flip_rounds) {
   const std::string path = file.empty() ? tristream::test::demo_image() : tristream::test::shared_image(file);
   if (path.empty()) {
     state.SkipWithError(tristream::test::skip_message(file).c_str());
@@ -29,6 +30,7 @@ void encode_image(benchmark::State& state, const std::string& file, tristream::V
   o.vertices = std::size_t(state.range(0));
   o.fit = fit;
   o.relocate_passes = relocate_passes;
+  o.flip_rounds = flip_rounds;
   double psnr = 0;
   for (auto _ : state) psnr = tristream::encode(img, o).psnr;
   state.counters["psnr_db"] = psnr;
@@ -38,12 +40,18 @@ void grey_pixel(benchmark::State& s) { encode_image(s, "grey/peppers_grey.png", 
 void grey_lsq(benchmark::State& s) { encode_image(s, "grey/peppers_grey.png", tristream::VertexFit::lsq); }
 void colour_pixel(benchmark::State& s) { encode_image(s, "colour/peppers.png", tristream::VertexFit::pixel); }
 void colour_lsq(benchmark::State& s) { encode_image(s, "colour/peppers.png", tristream::VertexFit::lsq); }
-// Without the relocation post-pass (the encoder before it).
+// Without the edge flips (a Delaunay mesh), and without the relocation either.
+void grey_lsq_no_flips(benchmark::State& s) {
+  encode_image(s, "grey/peppers_grey.png", tristream::VertexFit::lsq, tristream::EncodeOptions{}.relocate_passes, 0);
+}
+void colour_lsq_no_flips(benchmark::State& s) {
+  encode_image(s, "colour/peppers.png", tristream::VertexFit::lsq, tristream::EncodeOptions{}.relocate_passes, 0);
+}
 void grey_lsq_no_relocation(benchmark::State& s) {
-  encode_image(s, "grey/peppers_grey.png", tristream::VertexFit::lsq, 0);
+  encode_image(s, "grey/peppers_grey.png", tristream::VertexFit::lsq, 0, 0);
 }
 void colour_lsq_no_relocation(benchmark::State& s) {
-  encode_image(s, "colour/peppers.png", tristream::VertexFit::lsq, 0);
+  encode_image(s, "colour/peppers.png", tristream::VertexFit::lsq, 0, 0);
 }
 // The shipped demo image, always available.
 void demo_lsq(benchmark::State& s) { encode_image(s, "", tristream::VertexFit::lsq); }
@@ -52,6 +60,8 @@ BENCHMARK(grey_pixel)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(grey_lsq)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(colour_pixel)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(colour_lsq)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(grey_lsq_no_flips)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(colour_lsq_no_flips)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(grey_lsq_no_relocation)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(colour_lsq_no_relocation)->Arg(2621)->Arg(10000)->Unit(benchmark::kMillisecond);
 

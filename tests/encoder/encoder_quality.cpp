@@ -79,8 +79,11 @@ struct Setting {
 // The settings --sweep compares; the first is the reference of the gains.
 const std::vector<Setting>& settings() {
   static const std::vector<Setting> all = {
-      {"before", [](EncodeOptions& o) { o.relocate_passes = 0; }},  // no relocation post-pass
+      {"before", [](EncodeOptions& o) { o.relocate_passes = 0, o.flip_rounds = 0; }},  // no post-pass
+      {"delaunay", [](EncodeOptions& o) { o.flip_rounds = 0; }},  // relocation, no edge flips
       {"default", [](EncodeOptions&) {}},
+      {"flips1", [](EncodeOptions& o) { o.flip_rounds = 1; }},
+      {"flips3", [](EncodeOptions& o) { o.flip_rounds = 3; }},
       {"reloc1", [](EncodeOptions& o) { o.relocate_passes = 1; }},
       {"reloc2", [](EncodeOptions& o) { o.relocate_passes = 2; }},
       {"reloc3", [](EncodeOptions& o) { o.relocate_passes = 3; }},
@@ -244,6 +247,9 @@ int main(int argc, char** argv) {
       plain_lsq.fit = VertexFit::lsq;
       EncodeOptions no_relocation = lsq;
       no_relocation.relocate_passes = 0;
+      no_relocation.flip_rounds = 0;
+      EncodeOptions no_flips = lsq;
+      no_flips.flip_rounds = 0;
       const ColorSpace space = img.channels == 1 ? ColorSpace::grey : ColorSpace::rgb;
       std::vector<Row> rows;
       auto t0 = std::chrono::steady_clock::now();
@@ -256,7 +262,8 @@ int main(int argc, char** argv) {
       rows.push_back(encoded(img, "plain G&H, least squares", plain_lsq));
       rows.push_back(encoded(img, "improved, pixel values", improved));
       rows.push_back(encoded(img, "improved, least squares, no relocation", no_relocation));
-      rows.push_back(encoded(img, "improved, least squares, relocation (default)", lsq));
+      rows.push_back(encoded(img, "improved, least squares, relocation, no flips", no_flips));
+      rows.push_back(encoded(img, "improved, least squares, relocation, flips (default)", lsq));
       if (img.channels == 3 && percent == 1.0) {
         // Colour variants, all with the default least-squares values.
         EncodeOptions o = lsq;

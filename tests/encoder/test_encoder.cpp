@@ -101,10 +101,68 @@ TEST_CASE("scan_triangle visits every pixel of a tiled rectangle exactly once", 
   }
 }
 
-TEST_CASE("encode gives exactly the requested vertex count, a Delaunay mesh", "[encoder]") {
+TEST_CASE("scan_triangle's runs are the pixels the ownership rule gives, one test per pixel", "[encoder]") {
+  // The rule of pixel_scan.h, pixel by pixel: p is owned when p + d is inside, d = (-1, -e) turned
+  // inwards on x = 0 and y = 0; an edge function E of p + d is E(p) - dy sx + dx sy e.
+  auto owned = [](const std::array<encoder::IntPoint, 3>& v, int x, int y) {
+    const std::int64_t sx = x == 0 ? 1 : -1, sy = y == 0 ? 1 : -1;
+    for (int e = 0; e < 3; ++e) {
+      const encoder::IntPoint& a = v[e];
+      const encoder::IntPoint& b = v[(e + 1) % 3];
+      const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+      const std::int64_t value = dx * (y - a.y) - dy * (x - a.x);
+      if (value > 0) continue;
+      if (value < 0) return false;
+      const std::int64_t first = -dy * sx;  // the move's first order term, then its e term
+      if (first != 0 ? first < 0 : dx * sy < 0) return false;
+    }
+    return true;
+  };
+  std::mt19937 rng(7);
+  for (int i = 0; i < 1500; ++i) {
+    const int reach = i % 3 == 0 ? 6 : (i % 3 == 1 ? 40 : 1 << 19);
+    std::array<encoder::IntPoint, 3> v;
+    for (auto& p : v) p = {int(rng() % reach), int(rng() % reach)};
+    if (i % 7 == 0) v[1].y = v[0].y;  // a horizontal edge
+    if (i % 11 == 0) v[2].x = v[0].x;  // a vertical edge
+    const std::int64_t area = std::int64_t(v[1].x - v[0].x) * (v[2].y - v[0].y) -
+                              std::int64_t(v[1].y - v[0].y) * (v[2].x - v[0].x);
+    if (area == 0) continue;
+    if (area < 0) std::swap(v[1], v[2]);
+    const int x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
+    const int y0 = std::min({v[0].y, v[1].y, v[2].y}), y1 = std::max({v[0].y, v[1].y, v[2].y});
+    if (reach > 40) {
+      // Coordinates up to 2^19: each row's run against the rule at its two ends and one column
+      // past each (a run is one interval past x = 0), on a sample of rows.
+      int rows = 0;
+      encoder::scan_triangle_runs(v, [&](int y, int first, int last) {
+        if (++rows % 4099 != 1) return;
+        REQUIRE(first <= last);
+        REQUIRE(owned(v, first, y));
+        REQUIRE(owned(v, last, y));
+        if (first > std::max(x0, 1)) REQUIRE_FALSE(owned(v, first - 1, y));
+        if (last < x1) REQUIRE_FALSE(owned(v, last + 1, y));
+      });
+      continue;
+    }
+    std::set<std::pair<int, int>> scanned;
+    encoder::scan_triangle(v, [&](int x, int y) { REQUIRE(scanned.insert({x, y}).second); });
+    std::size_t count = 0;
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        REQUIRE(owned(v, x, y) == (scanned.count({x, y}) == 1));
+        count += owned(v, x, y);
+      }
+    REQUIRE(count == scanned.size());
+  }
+}
+
+TEST_CASE("encode gives exactly the requested vertex count, a Delaunay mesh without flips", "[encoder]") {
   const Image img = synthetic(64, 48, 1);
   for (std::size_t n : {4u, 5u, 17u, 300u, 1500u}) {
-    const EncodeResult r = encode(img, with_vertices(n));
+    EncodeOptions o = with_vertices(n);
+    o.flip_rounds = 0;
+    const EncodeResult r = encode(img, o);
     REQUIRE(r.triangulation.layers.size() == 1);
     const Mesh& m = r.triangulation.layers[0];
     REQUIRE(m.vertex_count() == n);
@@ -230,6 +288,7 @@ TEST_CASE("relocation keeps a Delaunay tiling of distinct pixels and lowers the 
     const encoder::Planes target = encoder::to_planes(img, channels == 1 ? ColorSpace::grey : ColorSpace::rgb);
     EncodeOptions o = with_vertices(300);
     o.relocate_passes = 0;
+    o.flip_rounds = 0;
     const Mesh before = encode(img, o).triangulation.layers[0];
     Mesh m = before;
     const encoder::RelocateReport report = encoder::relocate_vertices(m, target, 4);
@@ -291,8 +350,8 @@ TEST_CASE("encoding is deterministic to the byte", "[encoder]") {
 }
 
 TEST_CASE("encoder output is edge to edge: every mesh passes the reader's mesh check", "[encoder]") {
-  // The reader rejects overlaps and T-junctions (geometry/mesh_check.h); the encoder makes Delaunay
-  // triangulations, relocation included, in every colour mode.
+  // The reader rejects overlaps and T-junctions (geometry/mesh_check.h); the encoder's meshes
+  // (Delaunay, then flipped and relocated) pass it in every colour mode.
   const Image img = synthetic(70, 50, 3, 23);
   for (ColorMode mode : {ColorMode::co, ColorMode::separate})
     for (CotriMethod cotri : {CotriMethod::greedy, CotriMethod::thesis}) {

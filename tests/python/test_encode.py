@@ -29,6 +29,8 @@ class EncodeEqualsTriencode(ScratchTest):
         self.check(small_image(grey=True), dict(error=6.0, values="pixel", rank="worst", sigma=0.0),
                    ["-e", 6, "--values", "pixel", "--rank", "worst", "--sigma", 0])
         self.check(small_image(), dict(vertices=120, grey=True, relocate=1), ["-n", 120, "--grey", "--relocate", 1])
+        self.check(small_image(), dict(vertices=150, flips=0), ["-n", 150, "--flips", 0])
+        self.check(small_image(), dict(vertices=150, flips=1, relocate=0), ["-n", 150, "--flips", 1, "--relocate", 0])
 
     def test_colour_modes(self):
         tri, _ = self.check(small_image(), dict(vertices=80, color="separate", space="ycbcr"),
@@ -64,6 +66,8 @@ class EncodeEqualsTriencode(ScratchTest):
             (dict(vertices=10, fit="crop", width=10, height=10), r"fit: expected stretch\|inside\|fill, found 'crop'"),
             (dict(vertices=10, width=10), r"width, height: give the panel's width and height together"),
             (dict(vertices=10, values="pixel", relocate=2), r"relocate: applies to values='lsq' only"),
+            (dict(vertices=10, values="pixel", flips=1), r"flips: applies to values='lsq' only"),
+            (dict(vertices=10, flips=-1), r"flips: expected 0 to 100"),
             (dict(max_bytes=10), r"max_bytes 10: expected at least \d+ bytes, the smallest compressed blob"),
             (dict(vertices=10, grey=True, space="ycbcr"), r"apply to colour encodings only"),
         ]

@@ -62,8 +62,9 @@ void check_conflicts(const CLI::App& app, bool grey) {
       if (given(colour_only))
         throw UsageError(std::string(colour_only) + ": applies to colour encodings only (not a grey image or --grey)");
   if (separate && given("--cotri")) throw UsageError("--cotri: applies to --color co only");
-  if (given("--relocate") && app.get_option("--values")->as<std::string>() == "pixel")
-    throw UsageError("--relocate: applies to --values lsq only");
+  for (const char* lsq_only : {"--relocate", "--flips"})
+    if (given(lsq_only) && app.get_option("--values")->as<std::string>() == "pixel")
+      throw UsageError(std::string(lsq_only) + ": applies to --values lsq only");
 }
 
 void check_usage(const CLI::App& app) {
@@ -109,6 +110,7 @@ struct Command {
   long long max_bytes = 0;
   double sigma = -1;
   int relocate = EncodeOptions{}.relocate_passes;
+  int flips = EncodeOptions{}.flip_rounds;
   bool grey = false, quiet = false, json = false;
 };
 
@@ -150,6 +152,12 @@ void add_options(CLI::App& app, Command& c) {
   app.add_option("--relocate", c.relocate,
                  "With --values lsq: passes moving vertices to neighbouring pixels where that lowers the error, "
                  "keeping the mesh Delaunay (0: none)")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
+  app.add_option("--flips", c.flips,
+                 "With --values lsq: rounds of data-dependent triangulation after the relocation: edges flip where "
+                 "that lowers the error, then vertices move again without the Delaunay condition (0: the mesh stays "
+                 "Delaunay)")
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
   app.add_option("--width", c.panel_width,
@@ -204,6 +212,7 @@ EncodeOptions encode_options(const CLI::App& app, const Command& c) {
   o.rank_by_total_error = c.rank == "total";
   o.smoothing_sigma = c.sigma;
   o.relocate_passes = c.relocate;
+  o.flip_rounds = c.flips;
   if (c.panel_width && std::uint64_t(c.panel_width) * std::uint64_t(c.panel_height) > limits::max_encode_pixels)
     throw UsageError("--width/--height: expected a panel of at most " + std::to_string(limits::max_encode_pixels) +
                      " pixels (the limit for encoding), found " + std::to_string(c.panel_width) + "x" +
