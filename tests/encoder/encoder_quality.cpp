@@ -243,6 +243,7 @@ int main(int argc, char** argv) {
       EncodeOptions lsq;  // the default: least squares, sigma 0.5
       lsq.vertices = n;
       plain.relocate_passes = 0;
+      plain.flip_rounds = 0;
       EncodeOptions plain_lsq = plain;
       plain_lsq.fit = VertexFit::lsq;
       EncodeOptions no_relocation = lsq;
