@@ -100,7 +100,8 @@ class Flipper {
     const auto& T2 = mesh_.triangles[t2].v;
     const std::uint32_t a = T1[e1], b = T1[(e1 + 1) % 3], c = T1[(e1 + 2) % 3];
     int e2 = 0;
-    while (T2[e2] != b) ++e2;
+    while (e2 < 3 && T2[e2] != b) ++e2;
+    if (e2 == 3) return false;  // not edge to edge (the input breaks the precondition)
     const std::uint32_t d = T2[(e2 + 2) % 3];
     const IntPoint pa = position(a), pb = position(b), pc = position(c), pd = position(d);
     if (orient(pc, pa, pd) <= 0 || orient(pd, pb, pc) <= 0) return false;

@@ -27,7 +27,7 @@ struct FlipReport {
 // is flipped when the two new triangles' squared error over the quadrilateral's pixels (the same
 // pixels either way), with the vertex values held, is below the two old ones' by more than
 // rounding noise. Each flip lowers the total, so the search ends. Triangles stay positively
-// oriented and keep their indices' count; values are unchanged. Deterministic.
+// oriented, their count and the values do not change. Deterministic.
 FlipReport flip_edges(Mesh& mesh, const Planes& target);
 
 }  // namespace tristream::encoder
