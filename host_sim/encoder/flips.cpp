@@ -7,16 +7,13 @@
 #include <deque>
 #include <vector>
 
+#include "encoder/barycentric.h"
 #include "encoder/least_squares.h"
 #include "encoder/mesh_adjacency.h"
 #include "encoder/pixel_scan.h"
 
 namespace tristream::encoder {
 namespace {
-
-std::int64_t orient(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
-  return std::int64_t(b.x - a.x) * (c.y - a.y) - std::int64_t(b.y - a.y) * (c.x - a.x);
-}
 
 class Flipper {
  public:
@@ -61,20 +58,12 @@ class Flipper {
   // Squared error over the pixels triangle (v0, v1, v2) owns, with the vertices' values.
   double error(const std::array<std::uint32_t, 3>& v) const {
     const std::array<IntPoint, 3> p{position(v[0]), position(v[1]), position(v[2])};
-    const double area2 = double(orient(p[0], p[1], p[2]));
-    double ax[3], ay[3], a0[3];
-    for (int e = 0; e < 3; ++e) {
-      const IntPoint& b = p[(e + 1) % 3];
-      const IntPoint& c = p[(e + 2) % 3];
-      ax[e] = -(c.y - b.y) / area2;
-      ay[e] = (c.x - b.x) / area2;
-      a0[e] = (double(c.y - b.y) * b.x - double(c.x - b.x) * b.y) / area2;
-    }
+    const BarycentricPlanes b = barycentric_planes(p);
     const double* value[3] = {&mesh_.values[v[0] * ch_], &mesh_.values[v[1] * ch_], &mesh_.values[v[2] * ch_]};
     double sse = 0;
     scan_triangle(p, [&](int x, int y) {
       double l[3];
-      for (int e = 0; e < 3; ++e) l[e] = ax[e] * x + ay[e] * y + a0[e];
+      for (int e = 0; e < 3; ++e) l[e] = b.ax[e] * x + b.ay[e] * y + b.a0[e];
       const float* px = &target_.v[(std::size_t(y) * target_.width + x) * ch_];
       for (int c = 0; c < ch_; ++c) {
         const double d = l[0] * value[0][c] + l[1] * value[1][c] + l[2] * value[2][c] - px[c];

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "encoder/barycentric.h"
 #include "encoder/least_squares.h"
 #include "encoder/mesh_adjacency.h"
 #include "encoder/pixel_scan.h"
@@ -17,10 +18,6 @@ namespace tristream::encoder {
 namespace {
 
 constexpr int max_channels = 4;
-
-std::int64_t orient(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
-  return std::int64_t(b.x - a.x) * (c.y - a.y) - std::int64_t(b.y - a.y) * (c.x - a.x);
-}
 
 // Sums over the star of one vertex (its triangles, the vertex at a trial position) that give
 // the local squared error as a function of the vertex's value: e0 is the error with the
@@ -186,17 +183,11 @@ class Relocator {
       const std::uint32_t t = star_[i];
       int k = 0;
       const auto p = corners(t, v, q, k);
-      const double area2 = double(orient(p[0], p[1], p[2]));
-      // l_e(x, y) = (ax[e] x + ay[e] y + a0[e]) / area2, from the edge opposite corner e.
-      double ax[3], ay[3], a0[3], val[3][max_channels];
-      for (int e = 0; e < 3; ++e) {
-        const IntPoint& b = p[(e + 1) % 3];
-        const IntPoint& c = p[(e + 2) % 3];
-        ax[e] = -(c.y - b.y) / area2;
-        ay[e] = (c.x - b.x) / area2;
-        a0[e] = (double(c.y - b.y) * b.x - double(c.x - b.x) * b.y) / area2;
+      const BarycentricPlanes b = barycentric_planes(p);
+      const double(&ax)[3] = b.ax, (&ay)[3] = b.ay, (&a0)[3] = b.a0;
+      double val[3][max_channels];
+      for (int e = 0; e < 3; ++e)
         for (int ch = 0; ch < ch_; ++ch) val[e][ch] = mesh_.value(mesh_.triangles[t].v[e], ch);
-      }
       // Along a run the interpolant and phi are linear in x: their values at the run's start
       // and their x-derivatives.
       RunLine line;
