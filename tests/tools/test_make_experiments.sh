@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # make experiments and make experiments-quick build the tools alone (the target tristream_tools:
-# trisim, tripack, triencode), never the whole tree with its tests: their recipes, as make -n
+# trisim, tripack, triencode, tribaseline), never the whole tree with its tests: their recipes, as make -n
 # prints them, build only that target.
 # Usage: test_make_experiments.sh SOURCE_DIR
 set -uo pipefail
