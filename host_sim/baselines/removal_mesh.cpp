@@ -12,41 +12,25 @@ namespace tristream::baselines {
 RemovalMesh::RemovalMesh(int width, int height) : width_(width), height_(height) {
   if (width < 2 || height < 2) throw std::invalid_argument("removal mesh: expected at least 2 x 2 pixels");
   const std::size_t n = std::size_t(width) * height;
-  if (n >= none) throw std::invalid_argument("removal mesh: too many pixels");
+  if (2 * n >= none) throw std::invalid_argument("removal mesh: too many pixels");
   alive_count_ = n;
   alive_.assign(n, 1);
   vertex_triangle_.assign(n, none);
-  tri_.reserve(2 * std::size_t(width - 1) * (height - 1));
-  for (int y = 0; y + 1 < height; ++y)
-    for (int x = 0; x + 1 < width; ++x) {
-      const std::uint32_t a = std::uint32_t(y) * width + x, b = a + 1, c = b + width, d = a + width;
-      // (a, b, c) and (a, c, d): positive in the Mesh winding (y down).
-      for (const Corners& v : {Corners{a, b, c}, Corners{a, c, d}}) {
-        const std::uint32_t t = std::uint32_t(tri_.size());
-        tri_.push_back({v, {none, none, none}});
-        for (std::uint32_t u : v) vertex_triangle_[u] = t;
-      }
-    }
-  link_neighbours();
-}
-
-// Pairs the triangles sharing an edge: sorts every edge by its (lower, higher) vertex.
-void RemovalMesh::link_neighbours() {
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> edges;  // (edge key, slot * 3 + e)
-  edges.reserve(tri_.size() * 3);
-  const std::uint64_t n = std::uint64_t(width_) * height_;
-  for (std::uint32_t t = 0; t < tri_.size(); ++t)
-    for (int e = 0; e < 3; ++e) {
-      const std::uint64_t u = tri_[t].v[e], w = tri_[t].v[(e + 1) % 3];
-      edges.push_back({std::min(u, w) * n + std::max(u, w), t * 3 + std::uint32_t(e)});
-    }
-  std::sort(edges.begin(), edges.end());
-  for (std::size_t i = 0; i + 1 < edges.size(); ++i)
-    if (edges[i].first == edges[i + 1].first) {
-      const std::uint32_t s = edges[i].second, r = edges[i + 1].second;
-      tri_[s / 3].n[s % 3] = r / 3;
-      tri_[r / 3].n[r % 3] = s / 3;
-      ++i;
+  tri_.resize(2 * std::size_t(width - 1) * (height - 1));
+  // Cell (x, y) with corners a = (x, y), b = (x + 1, y), c = (x + 1, y + 1), d = (x, y + 1) holds
+  // slot 2k: (a, b, c) and slot 2k + 1: (a, c, d), k = y (W - 1) + x; both positive in the Mesh
+  // winding (y down). Across a -> b lies the cell above's (a, c, d), across b -> c the right
+  // cell's (a, c, d), across d -> a the left cell's (a, b, c), across c -> d the cell below's
+  // (a, b, c).
+  const std::uint32_t cells_x = std::uint32_t(width - 1), cells_y = std::uint32_t(height - 1);
+  for (std::uint32_t y = 0; y < cells_y; ++y)
+    for (std::uint32_t x = 0; x < cells_x; ++x) {
+      const std::uint32_t a = y * std::uint32_t(width) + x, b = a + 1, c = b + std::uint32_t(width), d = c - 1;
+      const std::uint32_t k = y * cells_x + x, upper = 2 * k, lower = upper + 1;
+      tri_[upper] = {{a, b, c},
+                     {y > 0 ? 2 * (k - cells_x) + 1 : none, x + 1 < cells_x ? 2 * (k + 1) + 1 : none, lower}};
+      tri_[lower] = {{a, c, d}, {upper, y + 1 < cells_y ? 2 * (k + cells_x) : none, x > 0 ? 2 * (k - 1) : none}};
+      for (std::uint32_t u : {a, b, c, d}) vertex_triangle_[u] = u == b ? upper : lower;
     }
 }
 

@@ -68,7 +68,6 @@ class RemovalMesh {
   };
   Point point(std::uint32_t v) const { return {double(v % std::uint32_t(width_)), double(v / std::uint32_t(width_))}; }
   static int index_of(const Slot& s, std::uint32_t v);
-  void link_neighbours();
   std::uint32_t new_slot(const Corners& v);
 
   int width_, height_;
