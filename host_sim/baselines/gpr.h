@@ -24,8 +24,11 @@
 namespace tristream::baselines {
 
 // The removal loop on one image (encoder::Planes of 1 to 4 channels whose values are the
-// 8-bit pixel values, as to_planes gives grey and rgb). Deterministic: the significances are
-// computed in one order of operations, and ties go to the lowest vertex index (y * W + x).
+// 8-bit pixel values, as to_planes gives grey and rgb; it must outlive the object).
+// Deterministic: the significances are computed in one order of operations, and ties go to the
+// lowest vertex index (y * W + x). Memory grows with the pixels: two triangles per pixel at the
+// start, each with its neighbours and error, and the queue (tribaseline: 50 MB resident for a
+// 512 x 512 grey image).
 class PointRemoval {
  public:
   explicit PointRemoval(const encoder::Planes& target);
