@@ -82,6 +82,13 @@ class EndToEndTest(unittest.TestCase):
                                     str(Path(tmp) / "out"), "--report-only"], capture_output=True, text=True)
             self.assertEqual(again.returncode, 0, again.stderr)
             self.assertEqual(again.stdout, p.stdout)
+            # Every result is cached; a second run takes them from the cache (times included).
+            self.assertEqual(len(list((Path(tmp) / "out/cache").glob("*.json"))), 6)
+            cached = subprocess.run([sys.executable, str(REPO / "tools/experiments/baselines.py"), str(BIN),
+                                     str(Path(tmp) / "out"), "--images", str(images), "--densities", "2,10"],
+                                    capture_output=True, text=True)
+            self.assertEqual(cached.returncode, 0, cached.stderr)
+            self.assertEqual(cached.stdout, p.stdout)
 
     def test_bad_arguments(self):
         p = subprocess.run([sys.executable, str(REPO / "tools/experiments/baselines.py"), str(BIN), "/tmp/x",

@@ -3,7 +3,7 @@
 """triencode against the literature's baseline, greedy point removal (GPR), at equal vertex counts.
 
 Usage: baselines.py BIN_DIR OUT_DIR [--images DIR] [--densities 0.5,1,2,3,4] [--jobs N] [--quick]
-                    [--report-only]
+                    [--force] [--report-only]
 
 For each image and vertex density (a share of the pixels, N = round(density W H), at least 4):
 triencode -n N (its defaults), tribaseline gpr -n N --values lsq (GPR + LSQ) and --values pixel
@@ -13,6 +13,9 @@ triencode minus GPR + LSQ and minus GPR, the image where triencode does worst ag
 and the mean times; then whether issue 43's target holds (triencode's mean at least 1.0 dB above
 GPR + LSQ at every density, no image more than 0.3 dB below). Images: every PNG under --images DIR
 (default $TRISTREAM_IMAGES), else the ones shipped in data/; --quick: the demo image at 1 %.
+Each result is cached in OUT_DIR/cache/ under the SHA-256 of the tool's and the image's bytes and
+the options, so a rebuilt triencode reruns triencode alone (GPR takes seconds an image and is
+rerun only when tribaseline changes); --force runs everything again.
 """
 import argparse
 import csv
@@ -69,6 +72,7 @@ def parse_args(argv):
     p.add_argument("--densities", help="vertices as percentages of the pixels, comma-separated (default 0.5,1,2,3,4)")
     p.add_argument("--quick", action="store_true", help="the demo image alone at 1 %% (for ctest)")
     p.add_argument("--jobs", type=int, default=1, help="encodings run at once (default 1)")
+    p.add_argument("--force", action="store_true", help="run every encoding again, ignoring OUT_DIR/cache/")
     p.add_argument("--report-only", action="store_true",
                    help="run nothing: the table from OUT_DIR/baselines.csv of an earlier run")
     args = p.parse_args(argv)
@@ -101,20 +105,46 @@ def vertex_count(width, height, density):
     return max(4, int(math.floor(density / 100.0 * width * height + 0.5)))
 
 
+def cache_path(cache_dir, command, path, n, bin_dir):
+    """Where the result of `command` on image `path` with N vertices is cached: keyed by the bytes
+    of the tool and the image and the options."""
+    from runner import file_sha256, key_of
+    key = key_of({"tool": file_sha256(Path(bin_dir) / command[0]), "image": file_sha256(path),
+                  "options": list(command[1:]), "vertices": n})
+    return Path(cache_dir) / f"{key}.json"
+
+
 def measure(case):
-    """One encoder on one image at one density: the row of the CSV."""
-    path, name, width, height, density, encoder, bin_dir = case
+    """One encoder on one image at one density: the row of the CSV (from the cache when there)."""
+    path, name, width, height, density, encoder, bin_dir, cache_dir, force = case
     prefix, _, command = next(e for e in ENCODERS if e[0] == encoder)
     n = vertex_count(width, height, density)
     row = dict.fromkeys(COLUMNS, "")
     row.update(image=name, width=width, height=height, density_pct=density, vertices=n, encoder=prefix)
+    cached = cache_path(cache_dir, command, path, n, bin_dir)
+    if not force and cached.is_file():
+        try:
+            row.update({k: v for k, v in json.loads(cached.read_text()).items() if k in ("psnr", "seconds")},
+                       status="ok")
+            return row
+        except (OSError, ValueError):
+            pass  # unreadable: measured again
+    run_case(row, path, n, command, bin_dir)
+    if row["status"] == "ok":
+        from runner import atomic_write_json
+        atomic_write_json(cached, {"psnr": row["psnr"], "seconds": row["seconds"]})
+    return row
+
+
+def run_case(row, path, n, command, bin_dir):
+    """Runs the encoder; fills the row's psnr, seconds and status (or error)."""
     with tempfile.TemporaryDirectory(prefix="baselines-") as tmp:
         args = [str(Path(bin_dir) / command[0]), *command[1:], str(path), "-n", str(n), "-q", "--json",
                 "-o", str(Path(tmp) / "x.tri")]
         p = subprocess.run(args, capture_output=True, text=True)
     if p.returncode != 0:
         row.update(status="failed", error=f"{command[0]}: exit {p.returncode}: {p.stderr.strip()[:400]}")
-        return row
+        return
     try:
         j = json.loads(p.stdout.splitlines()[0])
         psnr = math.inf if j["psnr_linear"] is None else float(j["psnr_linear"])
@@ -123,7 +153,6 @@ def measure(case):
             row.update(status="failed", error=f"{command[0]}: {j['vertices']} vertices, expected {n}")
     except (ValueError, KeyError, IndexError) as e:
         row.update(status="failed", error=f"{command[0]}: unreadable summary ({e})")
-    return row
 
 
 # --- inputs and outputs -------------------------------------------------------------------
@@ -252,8 +281,8 @@ def main(argv):
         if not (t.is_file() and os.access(t, os.X_OK)):
             fail(EXIT_NOINPUT, f"{t}: expected an executable (build it with 'make tools'), found none")
     images = find_images(args.quick, args.images)
-    cases = [(str(p), name, w, h, d, e, str(bin_dir)) for p, name, w, h in images for d in args.densities
-             for e, _, _ in ENCODERS]
+    cases = [(str(p), name, w, h, d, e, str(bin_dir), str(out / "cache"), args.force) for p, name, w, h in images
+             for d in args.densities for e, _, _ in ENCODERS]
     note(f"{len(images)} image(s) x {len(args.densities)} densities x {len(ENCODERS)} encoders = {len(cases)} runs")
     try:
         out.mkdir(parents=True, exist_ok=True)
