@@ -2,14 +2,14 @@
 # tristream: every target installs what it needs first (tools/install-deps.sh), then builds.
 #   make run     build the tools only, then render the demo data with every method into out/ and print a table
 #   make test    build, then run every test through ctest
-# More: make build | tools | python | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | rd | clean
+# More: make build | tools | python | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | rd | baselines | clean
 
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
 FUZZ_TIME  ?= 60
 BENCH_MCU_ARGS ?=
 
-.PHONY: all deps build tools python run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick rd
+.PHONY: all deps build tools python run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick rd baselines
 
 all: build
 
@@ -98,3 +98,10 @@ experiments-quick: tools
 rd: tools
 	@bash tools/install-deps.sh experiments
 	/usr/bin/python3 tools/experiments/rate_distortion.py $(BUILD)/bin out/rd --jobs 2
+
+# triencode against greedy point removal (GPR and GPR + LSQ, tribaseline) at 0.5 to 4 % of the pixels as
+# vertices, on every PNG under IMAGES (default $TRISTREAM_IMAGES, else the shipped ones), into
+# out/baselines/ (baselines.csv) and a table on stdout (tools/experiments/README.md).
+IMAGES ?=
+baselines: tools
+	/usr/bin/python3 tools/experiments/baselines.py $(BUILD)/bin out/baselines --jobs 2 $(if $(IMAGES),--images $(IMAGES))

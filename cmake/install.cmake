@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 # cmake --install: component "core" (the library as libtristream.a, its headers with the
 # configuration it was built with in tristream/config_build.h, the CMake package tristream::core
-# with its version file, and tristream.pc), component "tools" (trisim, tripack, triencode; none in
+# with its version file, and tristream.pc), component "tools" (trisim, tripack, triencode, tribaseline; none in
 # a TRISTREAM_CORE_ONLY build). Consumers: find_package(tristream CONFIG) or pkg-config tristream.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -57,5 +57,5 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/tristream.pc.in ${PROJECT_BINARY_DIR}/t
 install(FILES ${PROJECT_BINARY_DIR}/tristream.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT core)
 
 if(NOT TRISTREAM_CORE_ONLY)
-  install(TARGETS trisim tripack triencode RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
+  install(TARGETS trisim tripack triencode tribaseline RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
 endif()
