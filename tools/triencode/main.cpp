@@ -193,8 +193,8 @@ void add_options(CLI::App& app, Command& c) {
   app.add_flag("--json", c.json, "Print the summary as one JSON object");
   app.footer(
       "How many vertices: --max-bytes finds the count for a flash budget in a few encodes. As a guide (the demo\n"
-      "picture at 2,000 to 6,600 vertices), bytes per vertex: compressed bilinear 4.5 to 4.9 in colour, 2.9 to 3.3\n"
-      "in grey, zienkiewicz 16.5 and 7.3; v1 bilinear 26 and 22, zienkiewicz 50 and 30; plus 120 to 250 a blob.");
+      "picture at 2,000 to 6,600 vertices), bytes per vertex: compressed bilinear 4.7 to 5.2 in colour, 3.4 to 3.7\n"
+      "in grey, zienkiewicz 17 and 7.6; v1 bilinear 26 and 22, zienkiewicz 50 and 30; plus 120 to 250 a blob.");
 }
 
 // The encoder's options; throws UsageError for a vertex count below 4 or a panel too large.
