@@ -110,27 +110,9 @@ Mesh PointRemoval::mesh() const {
   return m;
 }
 
-namespace {
-
-void check_gpr_input(const Image& image, const GprOptions& o) {
-  if (image.width < 2 || image.height < 2)
-    throw DataError("image of " + std::to_string(image.width) + " x " + std::to_string(image.height) +
-                    " pixels: expected at least 2 x 2");
-  if (image.channels != 1 && image.channels != 3)
-    throw DataError("expected a grey or RGB image, found " + std::to_string(image.channels) + " channels");
-  const std::size_t pixels = std::size_t(image.width) * image.height;
-  if (o.vertices < 4)
-    throw UsageError("--vertices " + std::to_string(o.vertices) + ": expected at least 4 (the corners)");
-  if (o.vertices > pixels)
-    throw UsageError("--vertices " + std::to_string(o.vertices) + ": expected at most the pixel count " +
-                     std::to_string(pixels) + " (" + std::to_string(image.width) + " x " +
-                     std::to_string(image.height) + ")");
-}
-
-}  // namespace
-
 GprResult greedy_point_removal(const Image& image, const GprOptions& o) {
-  check_gpr_input(image, o);
+  check_image_shape(image);
+  check_vertex_count(image, o.vertices);
   const Activity activity("greedy point removal on a " + std::to_string(image.width) + " x " +
                           std::to_string(image.height) + " image");
   const auto start = std::chrono::steady_clock::now();

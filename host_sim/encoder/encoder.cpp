@@ -133,19 +133,9 @@ Mesh encode_thesis_cotri(const Planes& target, const Planes& guide, const Encode
 }
 
 void check_options(const Image& image, const EncodeOptions& o) {
-  if (image.width < 2 || image.height < 2)
-    throw DataError("image of " + std::to_string(image.width) + " x " + std::to_string(image.height) +
-                    " pixels: expected at least 2 x 2");
-  if (image.channels != 1 && image.channels != 3)
-    throw DataError("expected a grey or RGB image, found " + std::to_string(image.channels) + " channels");
+  check_image_shape(image);
   if (o.vertices == 0 && !(o.max_rms > 0)) throw UsageError("give a vertex count or an error target");
-  const std::size_t pixels = std::size_t(image.width) * image.height;
-  if (o.vertices != 0 && o.vertices < 4)
-    throw UsageError("--vertices " + std::to_string(o.vertices) + ": expected at least 4 (the corners)");
-  if (o.vertices > pixels)
-    throw UsageError("--vertices " + std::to_string(o.vertices) + ": expected at most the pixel count " +
-                     std::to_string(pixels) + " (" + std::to_string(image.width) + " x " +
-                     std::to_string(image.height) + ")");
+  if (o.vertices != 0) check_vertex_count(image, o.vertices);
   if (!(o.max_rms >= 0)) throw UsageError("--error must be positive");
   if (image.channels == 3 && !o.grey && o.space == ColorSpace::grey)
     throw UsageError("a colour image needs the rgb or ycbcr space (or --grey)");
@@ -159,6 +149,23 @@ EncodeResult encode(const Image& image, const EncodeOptions& options, const std:
   } catch (const DataError& e) {
     throw DataError(name + ": " + e.what());
   }
+}
+
+void check_image_shape(const Image& image) {
+  if (image.width < 2 || image.height < 2)
+    throw DataError("image of " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                    " pixels: expected at least 2 x 2");
+  if (image.channels != 1 && image.channels != 3)
+    throw DataError("expected a grey or RGB image, found " + std::to_string(image.channels) + " channels");
+}
+
+void check_vertex_count(const Image& image, std::size_t vertices) {
+  const std::size_t pixels = std::size_t(image.width) * image.height;
+  if (vertices < 4) throw UsageError("--vertices " + std::to_string(vertices) + ": expected at least 4 (the corners)");
+  if (vertices > pixels)
+    throw UsageError("--vertices " + std::to_string(vertices) + ": expected at most the pixel count " +
+                     std::to_string(pixels) + " (" + std::to_string(image.width) + " x " +
+                     std::to_string(image.height) + ")");
 }
 
 void check_encodable(const Image& image, const std::string& name) {

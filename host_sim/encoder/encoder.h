@@ -76,6 +76,13 @@ EncodeResult encode(const Image& image, const EncodeOptions& options, const std:
 // largest a .tri file holds) or limits::max_encode_pixels pixels. Throws DataError naming `name`.
 void check_encodable(const Image& image, const std::string& name);
 
+// What any mesh of pixel positions needs: an image of at least 2 x 2 pixels, grey or RGB
+// (DataError otherwise).
+void check_image_shape(const Image& image);
+
+// A vertex count from 4 (the corners) to the image's pixel count (UsageError otherwise).
+void check_vertex_count(const Image& image, std::size_t vertices);
+
 // The image a triangulation encodes: luma for a grey triangulation of a colour image.
 Image encoded_original(const Image& image, const Triangulation& tri);
 

@@ -15,22 +15,15 @@
 #include "io/image_io.h"
 #include "io/tri_file.h"
 
+#include "../support/tool_run.h"
+
 namespace fs = std::filesystem;
 using namespace tristream;
 
 namespace {
 
-struct Run {
-  int code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::Run;
+using test::slurp;
 
 const fs::path& dir() {
   static const fs::path d = [] {
@@ -50,12 +43,7 @@ const fs::path& dir() {
   return d;
 }
 
-Run run(const std::string& args) {
-  const fs::path out = dir() / "stdout.txt", err = dir() / "stderr.txt";
-  const std::string cmd = std::string(TRIBASELINE_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-}
+Run run(const std::string& args) { return test::run_tool(TRIBASELINE_PATH, args, dir()); }
 
 std::string in() { return (dir() / "in.png").string(); }
 std::string at(const char* name) { return (dir() / name).string(); }

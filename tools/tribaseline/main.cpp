@@ -14,6 +14,7 @@
 #include "common/cli_validators.h"
 #include "common/errors.h"
 #include "common/json_name.h"
+#include "common/progress_bar.h"
 #include "common/tool_main.h"
 #include "encoder/encoder.h"
 #include "io/image_io.h"
@@ -23,27 +24,6 @@
 using namespace tristream;
 
 namespace {
-
-// A one-line bar on stderr, redrawn when the whole percentage changes.
-class ProgressBar {
- public:
-  void operator()(double fraction) {
-    const int percent = int(fraction * 100);
-    if (percent == last_) return;
-    last_ = percent;
-    constexpr int width = 40;
-    const int filled = percent * width / 100;
-    std::fprintf(stderr, "\r[%.*s%*s] %3d%%", filled, "########################################", width - filled, "",
-                 percent);
-    std::fflush(stderr);
-  }
-  void finish() {
-    if (last_ >= 0) std::fprintf(stderr, "\n");
-  }
-
- private:
-  int last_ = -1;
-};
 
 struct Command {
   std::string input, output;
