@@ -16,7 +16,7 @@ namespace tristream::encoder {
 struct FlipReport {
   std::size_t flips = 0;  // edges flipped
   std::vector<std::uint8_t> touched;  // per vertex: 1 if a triangle around it changed
-  double sse_before = 0;  // linear_squared_error before and after (values unrounded)
+  double sse_before = 0;  // squared error of the linear interpolant before and after (values unrounded)
   double sse_after = 0;
 };
 

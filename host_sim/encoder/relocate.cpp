@@ -74,10 +74,9 @@ class Relocator {
     if (ch_ < 1 || ch_ > max_channels)
       throw std::invalid_argument("relocate: expected 1 to " + std::to_string(max_channels) + " channels");
     occupied_.assign(std::size_t(target.width) * target.height, 0);
-    if (first_tried && first_tried->size() == mesh.vertex_count())
-      active_ = *first_tried;
-    else
-      active_.assign(mesh.vertex_count(), 1);
+    if (first_tried && first_tried->size() != mesh.vertex_count())
+      throw std::invalid_argument("relocate: expected one first_tried flag per vertex");
+    active_ = first_tried ? *first_tried : std::vector<std::uint8_t>(mesh.vertex_count(), 1);
     for (const Point& p : mesh.points) occupied_[std::size_t(p.y) * target.width + std::size_t(p.x)] = 1;
     const std::size_t n = mesh.vertex_count();
     start_.assign(n + 1, 0);
