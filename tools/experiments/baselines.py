@@ -17,9 +17,6 @@ Each result is cached in OUT_DIR/cache/ under the SHA-256 of the tool's and the 
 the options, so a rebuilt triencode reruns triencode alone (GPR takes seconds an image and is
 rerun only when tribaseline changes); --force runs everything again.
 """
-import argparse
-import csv
-import io
 import json
 import math
 import os
@@ -36,7 +33,10 @@ HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
 sys.path.insert(0, str(HERE))
 
-EXIT_USAGE, EXIT_DATA, EXIT_NOINPUT, EXIT_SOFTWARE, EXIT_CANTCREAT = 64, 65, 66, 70, 73
+from script import EXIT_CANTCREAT, EXIT_DATA, EXIT_NOINPUT, EXIT_SOFTWARE, EXIT_USAGE, Script  # noqa: E402,F401 (EXIT_USAGE: for the tests)
+
+SCRIPT = Script("baselines")
+fail, note = SCRIPT.fail, SCRIPT.note
 DENSITIES = (0.5, 1.0, 2.0, 3.0, 4.0)
 # (column prefix, label, command after the tool: the encoders compared)
 ENCODERS = (
@@ -48,23 +48,8 @@ TARGET_MEAN_DB, TARGET_WORST_DB = 1.0, -0.3  # issue 43
 COLUMNS = ["image", "width", "height", "density_pct", "vertices", "encoder", "psnr", "seconds", "status", "error"]
 
 
-def fail(code, message):
-    print(f"baselines: {message}", file=sys.stderr)
-    sys.exit(code)
-
-
-def note(message):
-    print(f"baselines: {message}", file=sys.stderr)
-
-
-class Parser(argparse.ArgumentParser):
-    def error(self, message):
-        self.print_usage(sys.stderr)
-        fail(EXIT_USAGE, message)
-
-
 def parse_args(argv):
-    p = Parser(prog="baselines.py", description=__doc__.split("\n\n")[0])
+    p = SCRIPT.parser(prog="baselines.py", description=__doc__.split("\n\n")[0])
     p.add_argument("bin_dir", help="directory with triencode and tribaseline (e.g. build/bin)")
     p.add_argument("out_dir", help="output directory (e.g. out/baselines)")
     p.add_argument("--images", default=os.environ.get("TRISTREAM_IMAGES") or None,
@@ -182,24 +167,12 @@ def find_images(quick, images_dir):
 
 
 def write_csv(path, rows):
-    from runner import atomic_write_text
-    buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
-    w.writeheader()
-    for r in rows:
-        w.writerow(r)
-    atomic_write_text(path, buf.getvalue())
+    SCRIPT.write_csv(path, COLUMNS, rows)
 
 
 def read_csv(path):
     """Rows of an earlier run, numbers as numbers (as measure() makes them)."""
-    try:
-        with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        fail(EXIT_NOINPUT, f"{path}: cannot read: {e.strerror}")
-    if not rows or set(COLUMNS) - set(rows[0]):
-        fail(EXIT_DATA, f"{path}: expected the columns {', '.join(COLUMNS)}")
+    rows = SCRIPT.read_csv(path, COLUMNS)
     for i, r in enumerate(rows, start=2):
         try:
             r["density_pct"] = float(r["density_pct"])

@@ -14,8 +14,6 @@ and density. Images: the shipped ones (data/**/*.png) and every PNG under --imag
 $TRISTREAM_IMAGES; without it only the shipped ones, and it says so); --quick: the demo image
 at two densities.
 """
-import argparse
-import csv
 import hashlib
 import io
 import json
@@ -33,7 +31,10 @@ HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
 sys.path.insert(0, str(HERE))
 
-EXIT_USAGE, EXIT_DATA, EXIT_NOINPUT, EXIT_SOFTWARE, EXIT_CANTCREAT = 64, 65, 66, 70, 73
+from script import EXIT_CANTCREAT, EXIT_DATA, EXIT_NOINPUT, EXIT_SOFTWARE, Script  # noqa: E402
+
+SCRIPT = Script("rate_distortion")
+fail, note = SCRIPT.fail, SCRIPT.note
 DENSITIES = (0.5, 1.0, 2.0, 5.0)
 QUICK_DENSITIES = (0.5, 1.0)
 CODECS = ("jpeg", "webp", "jp2")
@@ -49,23 +50,8 @@ for _b in BLOBS:
 COLUMNS += ["status", "error"]
 
 
-def fail(code, message):
-    print(f"rate_distortion: {message}", file=sys.stderr)
-    sys.exit(code)
-
-
-def note(message):
-    print(f"rate_distortion: {message}", file=sys.stderr)
-
-
-class Parser(argparse.ArgumentParser):
-    def error(self, message):
-        self.print_usage(sys.stderr)
-        fail(EXIT_USAGE, message)
-
-
 def parse_args(argv):
-    p = Parser(prog="rate_distortion.py", description=__doc__.split("\n\n")[0])
+    p = SCRIPT.parser(prog="rate_distortion.py", description=__doc__.split("\n\n")[0])
     p.add_argument("bin_dir", help="directory with triencode, tripack and trisim (e.g. build/bin)")
     p.add_argument("out_dir", help="output directory (e.g. out/rd)")
     p.add_argument("--images", default=os.environ.get("TRISTREAM_IMAGES") or None,
@@ -298,13 +284,7 @@ def find_images(quick, images_dir):
 
 
 def write_csv(path, rows):
-    from runner import atomic_write_text
-    buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
-    w.writeheader()
-    for r in rows:
-        w.writerow(r)
-    atomic_write_text(path, buf.getvalue())
+    SCRIPT.write_csv(path, COLUMNS, rows)
 
 
 def medians(rows):
@@ -379,13 +359,7 @@ def summary(table, failed):
 
 def read_csv(path):
     """Rows of an earlier run, numbers as numbers (as measure() makes them)."""
-    try:
-        with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        fail(EXIT_NOINPUT, f"{path}: cannot read: {e.strerror}")
-    if not rows or set(COLUMNS) - set(rows[0]):
-        fail(EXIT_DATA, f"{path}: expected the columns {', '.join(COLUMNS)}")
+    rows = SCRIPT.read_csv(path, COLUMNS)
     for i, r in enumerate(rows, start=2):
         try:
             r["density_pct"] = float(r["density_pct"])
