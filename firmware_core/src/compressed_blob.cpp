@@ -79,8 +79,12 @@ Status open_compressed_blob(const void* bytes, size_t size, CompressedBlob* out,
     layer.stream_bytes = load_u32(b + e + L::stream_bytes);
     layer.window = load_u32(b + e + L::window);
     layer.pinned = load_u32(b + e + L::pinned);
+    layer.gradient_shift = b[e + L::gradient_step];
     for (uint32_t k = L::reserved; k < L::bytes; ++k)
       if (b[e + k] != 0) return fail(Status::bad_header, e + k);
+    // A gradient step only where there are gradients.
+    if (layer.gradient_shift > (blob.method == Method::zienkiewicz ? compressed_max_gradient_shift : 0u))
+      return fail(Status::bad_header, e + L::gradient_step);
     if (layer.vertex_count < 3 || layer.vertex_count > blob_max_vertices)
       return fail(Status::too_large, e + L::vertex_count);
     if (layer.triangle_count < 1 || layer.triangle_count > blob_max_triangles)
@@ -387,11 +391,14 @@ Status LayerDecoderState::decode_values_of(uint8_t* rec, uint32_t index, const u
   int32_t gradients[3][2] = {{0, 0}, {0, 0}, {0, 0}};
   if (blob.method == Method::zienkiewicz) {
     const int64_t limit = int64_t(config::max_gradient) << config::gradient_frac_bits;
+    // In units of the layer's step 2^s: the prediction floored to a multiple of it, plus r steps.
+    const uint32_t shift = layer_->gradient_shift, step_mask = ~((1u << shift) - 1u);
     for (int c = 0; c < nv; ++c)
       for (int a = 0; a < 2; ++a) {
         int64_t r;
         if (!decode_int(coder, value_models_[nv + a], gradient_bits, &r)) return fail(Status::value_out_of_range);
-        const int32_t g = int32_t(uint32_t(gradient_prediction(p0, p1, nv, c, a, last_gradients_[c][a])) + uint32_t(r));
+        const uint32_t p = uint32_t(gradient_prediction(p0, p1, nv, c, a, last_gradients_[c][a])) & step_mask;
+        const int32_t g = int32_t(p + (uint32_t(r) << shift));
         if (g > limit || g < -limit) return fail(Status::value_out_of_range);
         gradients[c][a] = g;
       }

@@ -107,7 +107,8 @@ inline constexpr uint32_t stream_offset = 8;   // u32
 inline constexpr uint32_t stream_bytes = 12;   // u32
 inline constexpr uint32_t window = 16;         // u32
 inline constexpr uint32_t pinned = 20;         // u32
-inline constexpr uint32_t reserved = 24;       // zero to the end of the entry
+inline constexpr uint32_t gradient_step = 24;  // u8: gradient components coded in units of 2^this
+inline constexpr uint32_t reserved = 25;       // zero to the end of the entry
 inline constexpr uint32_t bytes = compressed_layer_entry_size;
 }  // namespace compressed_layer
 

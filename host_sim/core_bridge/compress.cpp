@@ -158,6 +158,7 @@ struct LayerStream {
   std::uint32_t window = 0;
   std::uint32_t pinned = 0;
   std::size_t ram = 0;  // the decoder's ring and pinned slots, and their tags
+  std::uint32_t gradient_shift = 0;  // the layer's gradient step bits
 };
 
 // A triangle by the raster ranks of its corners.
@@ -208,7 +209,7 @@ class LayerEncoder {
     // The slots' records, the pinned slots' indices and every slot's tag (compressed_ring_bytes and
     // compressed_tag_bytes, less the value models, which every reach has).
     const std::size_t slots = std::size_t(window_) + pinned_slots_;
-    return LayerStream{e_.finish(), window_, pinned_slots_, slots * (record + 2) + 4 * pinned_slots_};
+    return LayerStream{e_.finish(), window_, pinned_slots_, slots * (record + 2) + 4 * pinned_slots_, shift_};
   }
 
  private:
@@ -230,6 +231,18 @@ class LayerEncoder {
         x.gradients[c][1] = g ? load_i32(g + w::gradient::gy) : 0;
       }
     }
+    gradient_step();
+  }
+
+  // The gradient step bits s: the largest s <= 24 for which every gradient component of the layer
+  // is a multiple of 2^s (0 when all are 0, and for bilinear, whose components are all 0).
+  void gradient_step() {
+    std::uint32_t bits = 0;
+    for (const Vertex& x : in_)
+      for (int c = 0; c < nv_; ++c) bits |= std::uint32_t(x.gradients[c][0]) | std::uint32_t(x.gradients[c][1]);
+    shift_ = 0;
+    if (bits == 0) return;
+    while (shift_ < core::compressed_max_gradient_shift && ((bits >> shift_) & 1u) == 0) ++shift_;
   }
 
   // Raster order: pixel row, pixel column, then the sub-pixel bits (ties kept in input order).
@@ -360,8 +373,11 @@ class LayerEncoder {
             const std::int64_t g0 = in_[order_[p0]].gradients[c][a];
             guess = p1 >= 0 ? std::int32_t((g0 + in_[order_[p1]].gradients[c][a]) >> 1) : std::int32_t(g0);
           }
+          // In units of 2^s: the difference to the guess floored to a multiple of 2^s (the decoder's
+          // prediction), which the gradient, a multiple of 2^s, is an exact number of steps from.
+          const std::uint32_t floored = std::uint32_t(guess) & ~((1u << shift_) - 1u);
           encode_int(e_, gradient_model_[a], gradient_bits,
-                     std::int32_t(std::uint32_t(x.gradients[c][a]) - std::uint32_t(guess)));
+                     std::int32_t(std::uint32_t(x.gradients[c][a]) - floored) >> shift_);
         }
     }
     for (int c = 0; c < 3; ++c) {
@@ -579,6 +595,7 @@ class LayerEncoder {
   std::vector<Tri> tris_;
   std::vector<char> lift_;  // per triangle corner
   std::uint32_t window_ = 3, pinned_slots_ = 0;
+  std::uint32_t shift_ = 0;  // gradient step bits (gradient_step)
   std::uint32_t encoded_ = 0, pixel_ = 0;
   std::uint32_t last_values_[3] = {0, 0, 0};
   std::int32_t last_gradients_[3][2] = {};
@@ -637,6 +654,7 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
     store_u32(entry + L::stream_bytes, std::uint32_t(ls.bytes.size()));
     store_u32(entry + L::window, ls.window);
     store_u32(entry + L::pinned, ls.pinned);
+    entry[L::gradient_step] = std::uint8_t(ls.gradient_shift);
     out.insert(out.end(), ls.bytes.begin(), ls.bytes.end());
     st.vertices += blob.layers[l].vertex_count;
     st.triangles += blob.layers[l].triangle_count;
@@ -646,6 +664,7 @@ std::vector<std::uint8_t> compress_blob(const std::vector<std::uint8_t>& v1, std
     st.connectivity_bits += e.cost[connectivity];
     st.flag_bits += e.cost[flags];
     st.window = std::max(st.window, ls.window);
+    st.gradient_step_bits.push_back(ls.gradient_shift);
   }
   store_u32(out.data() + h::total_size, std::uint32_t(out.size()));
   st.bytes = out.size();

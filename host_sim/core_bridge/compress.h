@@ -18,6 +18,7 @@ struct CompressStats {
   std::uint64_t vertices = 0, triangles = 0;  // over all layers
   double position_bits = 0, value_bits = 0, gradient_bits = 0, connectivity_bits = 0, flag_bits = 0;
   std::uint32_t window = 0;  // the largest layer's vertex window
+  std::vector<std::uint32_t> gradient_step_bits;  // per layer: gradients coded in units of 2^this (0 bilinear)
 };
 
 // Compresses a v1 blob; throws DataError ("<name>: byte N: ...") when open_blob refuses it.

@@ -13,7 +13,9 @@
 //    32  u32 max triangle height in rows (informative, as in v1)   36..63 reserved, zero
 //   layer table: layer count entries of 32 bytes
 //     0 u32 vertex count   4 u32 triangle count   8 u32 stream offset   12 u32 stream bytes
-//    16 u32 vertex window (ring slots the decoder needs)   20 u32 pinned slots   24..31 reserved, zero
+//    16 u32 vertex window (ring slots the decoder needs)   20 u32 pinned slots
+//    24 u8 gradient step bits s (0 .. 24; 0 unless zienkiewicz: every gradient component of the
+//       layer is a multiple of 2^s, coded in units of 2^s)   25..31 reserved, zero
 //   streams: one per layer, inside [header + table, total size), in layer order.
 //
 // Fields 12..35 mean what they mean in v1. The decoder (LayerDecoder) checks every symbol as it
@@ -34,6 +36,8 @@ inline constexpr uint16_t compressed_version = 3;  // 2: connectivity from open 
 inline constexpr uint32_t compressed_fresh_reach = 2048;
 inline constexpr uint32_t compressed_header_size = 64;
 inline constexpr uint32_t compressed_layer_entry_size = 32;
+// The largest gradient step bits of a layer (its table entry's byte 24).
+inline constexpr uint32_t compressed_max_gradient_shift = 24;
 
 struct CompressedLayer {
   uint32_t vertex_count = 0;
@@ -43,6 +47,7 @@ struct CompressedLayer {
   uint32_t stream_offset = 0;  // of `stream` in the blob (for error offsets)
   uint32_t window = 0;         // vertex ring slots: 3 .. vertex_count
   uint32_t pinned = 0;         // slots for vertices decoded ahead of the ring: 0 .. vertex_count
+  uint8_t gradient_shift = 0;  // gradient step bits s: components are multiples of 2^s (0 .. 24)
 };
 
 // A compressed blob whose header and layer table are valid; a view of the caller's bytes.
