@@ -30,6 +30,11 @@ void print_compressed_text(const PackReport& r, const std::string& tiles) {
               static_cast<unsigned long long>(s.vertices), static_cast<unsigned long long>(s.triangles),
               s.position_bits / n, s.value_bits / n, s.gradient_bits / n, s.connectivity_bits / n, s.flag_bits / n,
               8.0 * double(c.bytes) / n);
+  if (r.method == "zienkiewicz") {
+    std::string steps;
+    for (std::uint32_t b : s.gradient_step_bits) steps += (steps.empty() ? "" : ", ") + std::to_string(b);
+    std::printf("gradient step bits per layer (each gradient component coded in units of 2^bits): %s\n", steps.c_str());
+  }
   std::printf("decoder RAM: ring %zu + state %zu bytes; expanded v1 blob %zu bytes\n", c.decoder_ring_bytes,
               c.decoder_state_bytes, c.expanded_bytes);
   const core::CompressedWorkspace& f = c.workspace;
@@ -67,6 +72,7 @@ nlohmann::json compressed_json(const CompressedReport& c) {
                           {"connectivity", s.connectivity_bits / n},
                           {"flags", s.flag_bits / n},
                           {"total", 8.0 * double(c.bytes) / n}};
+  j["gradient_step_bits"] = s.gradient_step_bits;
   return j;
 }
 
