@@ -9,6 +9,7 @@
 #include "../support/random_mesh.h"
 #include "core_bridge/pack.h"
 #include "core_bridge/render_core.h"
+#include "core_bridge/unpack.h"
 #include "geometry/delaunay.h"
 
 namespace tristream::testing {
@@ -51,6 +52,22 @@ struct Tiling {
   int w, h;
 };
 // The core's parameters of a host render's options with the tiling t.
+// A zienkiewicz blob of `tri` whose gradients are the packer's estimate rounded to multiples of
+// 2^bits (as a fitted encoder's coarse step), given to pack_blob explicitly. `odd`: one component
+// of each layer then moved by one toward 0, so that the compressor's step is 0.
+inline std::vector<std::uint8_t> stepped_gradient_blob(const Triangulation& tri, int bits, bool odd = false) {
+  UnpackedBlob u = unpack_blob(pack_blob(tri, core::Method::zienkiewicz), "stepped");
+  const std::int32_t half = std::int32_t(1) << (bits - 1), mask = ~((std::int32_t(1) << bits) - 1);
+  for (auto& layer : u.gradients)
+    for (std::int32_t& g : layer) g = g >= 0 ? (g + half) & mask : -((-g + half) & mask);
+  if (odd)
+    for (auto& layer : u.gradients) {
+      std::int32_t& g = layer[layer.size() / 2];
+      g = g > 0 ? g - 1 : g + 1;
+    }
+  return pack_blob(u.tri, core::Method::zienkiewicz, "stepped", &u.gradients);
+}
+
 inline core::RenderParams params_of(const CoreOptions& o, Tiling t) {
   core::RenderParams p;
   p.output_width = std::uint16_t(o.width);

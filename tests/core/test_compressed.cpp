@@ -223,9 +223,11 @@ TEST_CASE("any valid v1 blob round-trips: rotated triangles, value fractions, su
 }
 
 TEST_CASE("every damaged byte and every truncation of a compressed blob ends in a status, in bounds") {
-  const std::vector<std::uint8_t> v1 =
-      pack_blob(single_mesh(random_lattice_mesh(24, 18, 30, 9, 2, 3), 24, 18, ColorSpace::rgb), core::Method::zienkiewicz);
+  const Triangulation tri = single_mesh(random_lattice_mesh(24, 18, 30, 9, 2, 3), 24, 18, ColorSpace::rgb);
+  // The estimated gradients (step 0), and the same rounded to a step of 2^6.
+  for (const std::vector<std::uint8_t>& v1 : {pack_blob(tri, core::Method::zienkiewicz), stepped_gradient_blob(tri, 6)}) {
   const std::vector<std::uint8_t> good = compress_blob(v1);
+  CAPTURE(int(good[64 + 24]));
   REQUIRE(expand(good).status == core::Status::ok);
   std::size_t refused = 0, trials = 0;
   for (std::size_t at = 0; at < good.size(); ++at)
@@ -248,6 +250,77 @@ TEST_CASE("every damaged byte and every truncation of a compressed blob ends in 
     std::vector<std::uint8_t> b(good.begin(), good.begin() + std::ptrdiff_t(n));
     CAPTURE(n);
     CHECK(expand(b).status != core::Status::ok);
+  }
+  }
+}
+
+TEST_CASE("gradients on a coarse step are coded in units of it: the layer table's step bits") {
+  const Triangulation rgb = single_mesh(random_lattice_mesh(60, 40, 150, 31, 0, 3), 60, 40, ColorSpace::rgb);
+  for (const Triangulation& tri : {rgb, layered_mesh(33, 27, 8)}) {
+    const std::vector<std::uint8_t> v1 = stepped_gradient_blob(tri, 6);
+    CompressStats stats;
+    const std::vector<std::uint8_t> packed = compress_blob(v1, "test", &stats);
+    REQUIRE(stats.gradient_step_bits.size() == tri.layers.size());
+    for (std::size_t l = 0; l < tri.layers.size(); ++l) {
+      CHECK(packed[64 + 32 * l + 24] == 6);
+      CHECK(stats.gradient_step_bits[l] == 6);
+    }
+    core::CompressedBlob blob;
+    REQUIRE(core::open_compressed_blob(packed.data(), packed.size(), &blob) == core::Status::ok);
+    CHECK(blob.layers[0].gradient_shift == 6);
+    // Expanded: exactly the v1 blob's gradients (and everything else), and the same renders.
+    round_trip(v1, {{32, 32}, {0, 0}});
+    // One odd component: step 0, the low 6 bits of every component coded again (a bit each).
+    CompressStats odd_stats;
+    const std::vector<std::uint8_t> odd = compress_blob(stepped_gradient_blob(tri, 6, true), "test", &odd_stats);
+    CHECK(odd[64 + 24] == 0);
+    const double components = 2.0 * double(stats.vertices) * tri.layers[0].value_count;
+    CAPTURE(packed.size(), odd.size(), components);
+    CHECK(packed.size() < odd.size());
+    CHECK(odd_stats.gradient_bits - stats.gradient_bits > 5.0 * components);
+  }
+  // Bilinear blobs and gradients of 0 keep step 0; so do the estimated gradients (odd ones).
+  CHECK(compress_blob(pack_blob(rgb, core::Method::bilinear))[64 + 24] == 0);
+  CHECK(compress_blob(pack_blob(rgb, core::Method::zienkiewicz))[64 + 24] == 0);
+}
+
+TEST_CASE("a layer's gradient step beyond 24, or on a bilinear blob, is refused at its byte") {
+  const Triangulation tri = layered_mesh(33, 27, 8);
+  const std::vector<std::uint8_t> stepped = compress_blob(stepped_gradient_blob(tri, 6));
+  const std::vector<std::uint8_t> bilinear = compress_blob(pack_blob(tri, core::Method::bilinear));
+  for (std::size_t l = 0; l < 3; ++l) {
+    const std::size_t at = 64 + 32 * l + 24;
+    CAPTURE(l);
+    for (std::uint8_t step : {std::uint8_t(25), std::uint8_t(0xFF)}) {
+      std::vector<std::uint8_t> b = stepped;
+      b[at] = step;
+      const Expanded r = expand(b);
+      CHECK(r.status == core::Status::bad_header);
+      CHECK(r.offset == at);
+    }
+    for (std::uint8_t step : {std::uint8_t(1), std::uint8_t(6), std::uint8_t(24)}) {
+      std::vector<std::uint8_t> b = bilinear;
+      b[at] = step;
+      const Expanded r = expand(b);
+      CHECK(r.status == core::Status::bad_header);
+      CHECK(r.offset == at);
+    }
+    // Any step up to 24 opens; one other than the encoder's decodes to other gradients or a
+    // status, in bounds (under ASan), and whatever expands is a valid v1 blob.
+    for (std::uint8_t step : {std::uint8_t(0), std::uint8_t(5), std::uint8_t(7), std::uint8_t(24)}) {
+      std::vector<std::uint8_t> b = stepped;
+      b[at] = step;
+      core::CompressedBlob blob;
+      REQUIRE(core::open_compressed_blob(b.data(), b.size(), &blob) == core::Status::ok);
+      CHECK(blob.layers[l].gradient_shift == step);
+      const Expanded r = expand(b);
+      if (r.status == core::Status::ok) {
+        core::Blob v1;
+        CHECK(core::open_blob(r.v1.data(), r.v1.size(), &v1) == core::Status::ok);
+      } else {
+        CHECK(r.offset <= b.size());
+      }
+    }
   }
 }
 

@@ -165,6 +165,21 @@ TEST_CASE("a compressed blob renders from its streams as its v1 blob does: gener
   }
 }
 
+TEST_CASE("a compressed blob renders from its streams as its v1 blob does: gradients on a step of 2^6") {
+  SECTION("rgb") {
+    const std::vector<std::uint8_t> v1 =
+        stepped_gradient_blob(single_mesh(random_lattice_mesh(37, 23, 60, 2, 0, 3), 37, 23, ColorSpace::rgb), 6);
+    REQUIRE(compress_blob(v1)[64 + 24] == 6);
+    round_trip(v1, all_tilings(), 37, 23);
+  }
+  SECTION("three layers") {
+    const std::vector<std::uint8_t> v1 = stepped_gradient_blob(layered_mesh(33, 27, 4), 6);
+    const std::vector<std::uint8_t> packed = compress_blob(v1);
+    for (int l = 0; l < 3; ++l) CHECK(packed[64 + 32 * l + 24] == 6);
+    round_trip(v1, all_tilings(), 33, 27);
+  }
+}
+
 TEST_CASE("a compressed blob renders from its streams as its v1 blob does: demo meshes") {
   for (const char* name : {"kodim23.grey.tri", "kodim23.rgb.tri", "kodim23.ycbcr-layers.tri"}) {
     CAPTURE(name);
@@ -208,9 +223,12 @@ TEST_CASE("a compressed render stops at the workspace's end only in the band tha
 }
 
 TEST_CASE("every damaged byte and every truncation of a compressed blob renders to a status, in bounds") {
-  for (core::Method m : {core::Method::bilinear, core::Method::zienkiewicz}) {
-    const std::vector<std::uint8_t> good =
-        compress_blob(pack_blob(single_mesh(random_lattice_mesh(24, 18, 30, 9, 2, 3), 24, 18, ColorSpace::rgb), m));
+  const Triangulation tri = single_mesh(random_lattice_mesh(24, 18, 30, 9, 2, 3), 24, 18, ColorSpace::rgb);
+  // Both methods, and zienkiewicz with its gradients on a step of 2^6 (coded in units of it).
+  for (const std::vector<std::uint8_t>& v1 : {pack_blob(tri, core::Method::bilinear),
+                                              pack_blob(tri, core::Method::zienkiewicz), stepped_gradient_blob(tri, 6)}) {
+    const std::vector<std::uint8_t> good = compress_blob(v1);
+    CAPTURE(int(good[17]), int(good[64 + 24]));
     const core::RenderParams p = params_of(CoreOptions{}, {8, 4});
     std::size_t big = 0;
     {
