@@ -225,8 +225,9 @@ TEST_CASE("a compressed render stops at the workspace's end only in the band tha
 TEST_CASE("every damaged byte and every truncation of a compressed blob renders to a status, in bounds") {
   const Triangulation tri = single_mesh(random_lattice_mesh(24, 18, 30, 9, 2, 3), 24, 18, ColorSpace::rgb);
   // Both methods, and zienkiewicz with its gradients on a step of 2^6 (coded in units of it).
-  for (const std::vector<std::uint8_t>& v1 : {pack_blob(tri, core::Method::bilinear),
-                                              pack_blob(tri, core::Method::zienkiewicz), stepped_gradient_blob(tri, 6)}) {
+  for (const std::vector<std::uint8_t>& v1 :
+       {pack_blob(tri, core::Method::bilinear), pack_blob(tri, core::Method::zienkiewicz),
+        stepped_gradient_blob(tri, 6)}) {
     const std::vector<std::uint8_t> good = compress_blob(v1);
     CAPTURE(int(good[17]), int(good[64 + 24]));
     const core::RenderParams p = params_of(CoreOptions{}, {8, 4});
