@@ -2,6 +2,7 @@
 #include "core_bridge/unpack.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "core_bridge/blob_error.h"
 #include "geometry/mesh_check.h"
 #include "tristream/compressed_blob.h"
+#include "tristream/config.h"
 #include "bytes.h"
 #include "wire_layout.h"
 
@@ -120,6 +122,9 @@ UnpackedBlob unpack_blob(const core::Blob& blob, std::string_view name) {
         g[2 * k] = load_i32(p + w::gradient::gx);
         g[2 * k + 1] = load_i32(p + w::gradient::gy);
       }
+      // The reference draws with the blob's gradients, not an estimate of its own.
+      mesh.gradients.resize(g.size());
+      for (std::size_t k = 0; k < g.size(); ++k) mesh.gradients[k] = std::ldexp(double(g[k]), -core::config::gradient_frac_bits);
       out.gradients.push_back(std::move(g));
     }
     out.tri.layers.push_back(std::move(mesh));

@@ -26,6 +26,7 @@ namespace {
 using limits::max_image_side;
 constexpr long max_vertices = 50'000'000;
 constexpr long max_triangles = 100'000'000;
+constexpr double max_gradient = 65536;  // values per pixel; the core takes far less (config.h)
 
 // 64-bit: a file of more than 2^31 lines cannot reach the reader (limits::max_input_bytes),
 // but parse_tri takes any text.
@@ -211,6 +212,24 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
       mesh.values.push_back(parser.number(tokens[2 + c], line.number, "a value", 0, 255));
   }
 
+  if (!parser.at_end() && Parser::split(parser.peek().text)[0] == "gradients") {
+    auto gh = parser.keyword_line("gradients", 1, "gradients <N>");
+    const LineNumber gradients_line = parser.current_line();
+    parser.integer(gh[1], gradients_line, "a gradient count equal to the vertex count " + std::to_string(n), n, n);
+    const std::string usage = value_count == 1 ? "<gx> <gy>" : "<gx0> <gy0> <gx1> <gy1> <gx2> <gy2>";
+    mesh.gradients.reserve(mesh.values.size() * 2);
+    for (long i = 0; i < n; ++i) {
+      Line line = parser.next("gradient line " + std::to_string(i + 1) + " of " + std::to_string(n) + " ('" + usage +
+                              "')");
+      auto tokens = Parser::split(line.text);
+      if (tokens.size() != std::size_t(2 * value_count))
+        parser.fail(line.number, "a gradient line '" + usage + "'", quoted(line.text));
+      for (const auto& token : tokens)
+        mesh.gradients.push_back(
+            parser.number(token, line.number, "a gradient in values per pixel", -max_gradient, max_gradient));
+    }
+  }
+
   const bool has_triangles = !parser.at_end() && Parser::split(parser.peek().text)[0] == "triangles";
   long m = 0;
   LineNumber triangles_line = 0;
@@ -266,6 +285,16 @@ void format_mesh(std::string& out, const Mesh& mesh) {
       out += format_number(mesh.value(i, c));
     }
     out += '\n';
+  }
+  if (mesh.has_gradients()) {
+    out += "gradients " + std::to_string(mesh.points.size()) + "\n";
+    for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+      for (int k = 0; k < 2 * mesh.value_count; ++k) {
+        if (k) out += ' ';
+        out += format_number(mesh.gradients[i * 2 * mesh.value_count + std::size_t(k)]);
+      }
+      out += '\n';
+    }
   }
   out += "triangles " + std::to_string(mesh.triangles.size()) + "\n";
   for (const Triangle& t : mesh.triangles)

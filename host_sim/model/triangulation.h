@@ -34,6 +34,11 @@ struct Mesh {
   int value_count = 1;
   std::vector<Point> points;
   std::vector<double> values;  // points.size() * value_count, each in [0, 255]
+  // Vertex gradients for the methods that take them (zienkiewicz, clough-tocher): empty, and
+  // they are estimated from the surface (reference/gradients.h), or points.size() * value_count
+  // pairs (gx, gy) in value units per pixel, vertex by vertex and value by value (a .tri file's
+  // `gradients` section; the encoder's fit for those methods, encoder/hermite_fit.h).
+  std::vector<double> gradients;
   std::vector<Triangle> triangles;
   // Where the mesh was read from, for messages: each vertex's line in its .tri file (empty for a
   // mesh made otherwise, e.g. by the encoder), and whether the reader computed the triangles (a
@@ -43,6 +48,11 @@ struct Mesh {
 
   std::size_t vertex_count() const { return points.size(); }
   double value(std::size_t vertex, int c) const { return values[vertex * value_count + c]; }
+  bool has_gradients() const { return !gradients.empty(); }
+  // The stored gradient of value c at `vertex` (has_gradients() must hold): gx, then gy.
+  double gradient(std::size_t vertex, int c, int axis) const {
+    return gradients[(vertex * value_count + c) * 2 + axis];
+  }
   // Signed doubled area (b-a) x (c-a) of triangle t.
   double doubled_area(std::size_t t) const;
   // Reorders vertex indices so that every triangle has positive doubled_area().

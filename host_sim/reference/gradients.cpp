@@ -6,6 +6,14 @@
 namespace tristream {
 
 std::vector<Gradient> vertex_gradients(const Mesh& mesh, const Topology& topo, int value_index) {
+  if (!mesh.has_gradients()) return estimated_vertex_gradients(mesh, topo, value_index);
+  std::vector<Gradient> out(mesh.vertex_count());
+  for (std::size_t v = 0; v < out.size(); ++v)
+    out[v] = {mesh.gradient(v, value_index, 0), mesh.gradient(v, value_index, 1)};
+  return out;
+}
+
+std::vector<Gradient> estimated_vertex_gradients(const Mesh& mesh, const Topology& topo, int value_index) {
   const std::size_t nv = mesh.vertex_count();
   std::vector<Gradient> out(nv);
   // Unit normal of each triangle in (x, y, I) space, oriented so n_I > 0 (Mesh winding

@@ -189,3 +189,35 @@ TEST_CASE("small things of issue 17: a BOM, leading zeros, underflow") {
 TEST_CASE("files that are missing give InputError") {
   CHECK_THROWS_AS(read_tri_file("/nonexistent/x.tri"), InputError);
 }
+
+TEST_CASE("a gradients section: read, written back, and its errors") {
+  const std::string three = header(3) + "0 0 1\n9 0 2\n0 9 3\n";
+  const Triangulation t = parse_tri(three + "gradients 3\n1.5 -2\n0 0\n0.015625 1e3\ntriangles 1\n0 1 2\n", "in.tri");
+  const Mesh& m = t.layers[0];
+  REQUIRE(m.has_gradients());
+  CHECK(m.gradients == std::vector<double>{1.5, -2, 0, 0, 0.015625, 1000});
+  CHECK(m.gradient(2, 0, 1) == 1000);
+  const std::string text = format_tri(t);
+  CHECK_THAT(text, Catch::Contains("gradients 3\n1.5 -2\n0 0\n0.015625 1000\ntriangles 1\n"));
+  CHECK(parse_tri(text, "again.tri").layers[0].gradients == m.gradients);
+  CHECK(format_tri(parse_tri(text, "again.tri")) == text);
+  // Without the section a mesh has none, and the writer writes none.
+  CHECK(!parse_tri(three, "in.tri").layers[0].has_gradients());
+  CHECK_THAT(format_tri(parse_tri(three, "in.tri")), !Catch::Contains("gradients"));
+  // RGB: six numbers a line; with the Delaunay triangulation (no triangles section).
+  const Triangulation rgb =
+      parse_tri(header(3, "rgb") + "0 0 1 2 3\n9 0 2 3 4\n0 9 3 4 5\ngradients 3\n1 2 3 4 5 6\n0 0 0 0 0 0\n-1 -2 -3 -4 -5 -6\n",
+                "rgb.tri");
+  CHECK(rgb.layers[0].gradient(0, 2, 1) == 6);
+  CHECK(rgb.layers[0].gradient(2, 1, 0) == -3);
+  CHECK_THAT(error_of(three + "gradients 2\n0 0\n0 0\n"),
+             Catch::Contains("in.tri:8: expected a gradient count equal to the vertex count 3"));
+  CHECK_THAT(error_of(three + "gradients 3\n0 0\n0\n0 0\n"),
+             Catch::Contains("in.tri:10: expected a gradient line '<gx> <gy>', found '0'"));
+  CHECK_THAT(error_of(three + "gradients 3\n0 0\n0 nan\n0 0\n"),
+             Catch::Contains("in.tri:10: expected a gradient in values per pixel"));
+  CHECK_THAT(error_of(three + "gradients 3\n0 0\n0 70000\n0 0\n"), Catch::Contains("found '70000'"));
+  CHECK_THAT(error_of(three + "gradients 3\n0 0\n"), Catch::Contains("in.tri:10: expected gradient line 2 of 3"));
+  CHECK_THAT(error_of(header(3, "rgb") + "0 0 1 2 3\n9 0 2 3 4\n0 9 3 4 5\ngradients 3\n1 2\n"),
+             Catch::Contains("'<gx0> <gy0> <gx1> <gy1> <gx2> <gy2>'"));
+}
