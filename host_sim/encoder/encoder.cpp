@@ -10,6 +10,7 @@
 #include "common/errors.h"
 #include "encoder/flips.h"
 #include "encoder/greedy.h"
+#include "encoder/hermite_fit.h"
 #include "encoder/least_squares.h"
 #include "encoder/pixel_scan.h"
 #include "encoder/planes.h"
@@ -17,6 +18,7 @@
 #include "geometry/delaunay.h"
 #include "io/limits.h"
 #include "model/color.h"
+#include "reference/render.h"
 
 namespace tristream {
 namespace {
@@ -65,7 +67,22 @@ void run_greedy(GreedyInserter& g, const Planes& target, const EncodeOptions& o,
   }
 }
 
-Mesh finish(Mesh mesh, const Planes& target, VertexFit fit, int relocate_passes, int flip_rounds) {
+// What follows the greedy insertion.
+struct Finish {
+  VertexFit fit = VertexFit::lsq;
+  int relocate_passes = 0;
+  int flip_rounds = 0;
+  FitMethod method = FitMethod::bilinear;
+  int gradient_step_bits = 0;
+};
+
+Finish finish_of(const EncodeOptions& o) {
+  return {o.fit, o.relocate_passes, o.flip_rounds, o.method, o.gradient_step_bits};
+}
+
+Mesh finish(Mesh mesh, const Planes& target, const Finish& o) {
+  const VertexFit fit = o.fit;
+  const int relocate_passes = o.relocate_passes, flip_rounds = o.flip_rounds;
   if (fit == VertexFit::lsq) {
     encoder::fit_least_squares(mesh, target, false);
     if (relocate_passes > 0) encoder::relocate_vertices(mesh, target, relocate_passes);
@@ -76,6 +93,13 @@ Mesh finish(Mesh mesh, const Planes& target, VertexFit fit, int relocate_passes,
       else
         encoder::fit_least_squares(mesh, target, false);
     }
+  }
+  if (o.method != FitMethod::bilinear) {
+    encoder::HermiteFitOptions h;
+    h.method = o.method == FitMethod::zienkiewicz ? encoder::HermiteMethod::zienkiewicz
+                                                  : encoder::HermiteMethod::clough_tocher;
+    h.gradient_step_bits = o.gradient_step_bits;
+    encoder::fit_hermite(mesh, target, h);
   }
   for (double& v : mesh.values) v = to_byte(v);
   return mesh;
@@ -139,6 +163,16 @@ void check_options(const Image& image, const EncodeOptions& o) {
   if (!(o.max_rms >= 0)) throw UsageError("--error must be positive");
   if (image.channels == 3 && !o.grey && o.space == ColorSpace::grey)
     throw UsageError("a colour image needs the rgb or ycbcr space (or --grey)");
+  if (o.method != FitMethod::bilinear && o.fit != VertexFit::lsq)
+    throw UsageError("a fit for zienkiewicz or clough-tocher needs least-squares values (not --values pixel)");
+  if (o.gradient_step_bits < 0 || o.gradient_step_bits > 12)
+    throw UsageError("--gradient-step " + std::to_string(o.gradient_step_bits) + ": expected 0 to 12");
+}
+
+// The reference's render of a gradient method, 8-bit.
+Image render_fitted(const Triangulation& tri, FitMethod method) {
+  const MethodInfo* info = find_reference_method(method == FitMethod::zienkiewicz ? "zienkiewicz" : "clough-tocher");
+  return render_reference(tri, *info, RenderOptions{});
 }
 
 }  // namespace
@@ -209,14 +243,14 @@ EncodeResult encode(const Image& image, const EncodeOptions& o) {
       run_greedy(g, target, o, limit, 0.0, 1.0);
       mesh = g.mesh();
     }
-    tri.layers.push_back(finish(std::move(mesh), target, o.fit, o.relocate_passes, o.flip_rounds));
+    tri.layers.push_back(finish(std::move(mesh), target, finish_of(o)));
   } else {
     const char* names[2][3] = {{"r", "g", "b"}, {"y", "cb", "cr"}};
     for (int c = 0; c < 3; ++c) {
       const Planes t = encoder::channel_of(target, c), gd = encoder::channel_of(guide, c);
       GreedyInserter g(t, gd, go, pixel_values(t));
       run_greedy(g, t, o, limit, c / 3.0, 1 / 3.0);
-      Mesh mesh = finish(g.mesh(), t, o.fit, o.relocate_passes, o.flip_rounds);
+      Mesh mesh = finish(g.mesh(), t, finish_of(o));
       mesh.name = names[tri.space == ColorSpace::ycbcr][c];
       tri.layers.push_back(std::move(mesh));
     }
@@ -224,7 +258,7 @@ EncodeResult encode(const Image& image, const EncodeOptions& o) {
   EncodeResult r;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const Mesh& m : tri.layers) r.vertices += m.vertex_count(), r.triangles += m.triangles.size();
-  const Image rendered = render_linear(tri);
+  const Image rendered = o.method == FitMethod::bilinear ? render_linear(tri) : render_fitted(tri, o.method);
   const Image original = encoded_original(image, tri);
   double sse = 0;
   for (std::size_t i = 0; i < rendered.pixels.size(); ++i) {
@@ -306,7 +340,7 @@ Triangulation regular_grid(const Image& image, std::size_t vertices, ColorSpace 
       for (int c = 0; c < target.channels; ++c) mesh.values.push_back(to_byte(target.at(x, y, c)));
     }
   mesh.triangles = delaunay_triangulation(mesh.points);
-  tri.layers.push_back(finish(std::move(mesh), target, fit, 0, 0));
+  tri.layers.push_back(finish(std::move(mesh), target, Finish{fit}));
   return tri;
 }
 

@@ -25,6 +25,12 @@ enum class VertexFit : std::uint8_t {
   lsq,    // least-squares refit over all pixels, rounded to 8 bits
 };
 
+// The method the triangulation will be shown with. The mesh is chosen for the linear interpolant
+// (the greedy insertion, relocation and flips score it); zienkiewicz and clough_tocher then fit
+// values and gradients on their own basis (encoder/hermite_fit.h) and store the gradients in the
+// triangulation. tools/experiments/README.md ("Methods at equal bytes") compares them with bilinear at equal bytes.
+enum class FitMethod : std::uint8_t { bilinear, zienkiewicz, clough_tocher };
+
 struct EncodeOptions {
   // Stop criteria; at least one must be set, the first one reached stops. `vertices` counts
   // the vertices of each mesh (of each layer with ColorMode::separate), four corners included.
@@ -52,6 +58,11 @@ struct EncodeOptions {
   // edge flips where they lower the error (encoder/flips.h), then relocation without the
   // Delaunay condition. 0 keeps the mesh Delaunay.
   int flip_rounds = 2;
+  // With VertexFit::lsq: the method the values (and gradients) are fitted for.
+  FitMethod method = FitMethod::bilinear;
+  // With a gradient method: gradients in steps of 2^-(12 - gradient_step_bits) values per pixel
+  // (HermiteFitOptions::gradient_step_bits).
+  int gradient_step_bits = 9;
   // Called now and then with the fraction done, in [0, 1].
   std::function<void(double)> progress;
 };
@@ -60,7 +71,7 @@ struct EncodeResult {
   Triangulation triangulation;
   std::size_t vertices = 0;   // summed over layers
   std::size_t triangles = 0;  // summed over layers
-  double psnr = 0;            // of the 8-bit linear interpolant against the encoded image
+  double psnr = 0;            // of the 8-bit render of options.method against the encoded image
   double seconds = 0;         // wall time of the encoding
 };
 

@@ -23,7 +23,7 @@ struct EncodeArgs {
   std::optional<double> error, sigma;
   std::string method, blob, color, space, cotri, values, rank, fit, name;
   bool grey = false;
-  std::optional<int> relocate, flips;
+  std::optional<int> relocate, flips, gradient_step;
   std::optional<int> width, height;
 };
 
@@ -53,6 +53,14 @@ void check_keywords(const EncodeArgs& a, bool grey) {
   if (a.color == "separate" && a.cotri != "greedy") throw py::value_error("cotri: applies to color='co' only");
   if (a.values == "pixel" && a.relocate) throw py::value_error("relocate: applies to values='lsq' only");
   if (a.values == "pixel" && a.flips) throw py::value_error("flips: applies to values='lsq' only");
+  if (a.values == "pixel" && a.method != "bilinear")
+    throw py::value_error("method: " + a.method + " fits its values and gradients by least squares (values='lsq')");
+  if (a.gradient_step && a.method == "bilinear")
+    throw py::value_error("gradient_step: applies to method='zienkiewicz' or 'clough-tocher' only");
+  if (a.gradient_step && (*a.gradient_step < 0 || *a.gradient_step > 12))
+    throw py::value_error("gradient_step: expected 0 to 12");
+  if (a.max_bytes && a.method == "clough-tocher")
+    throw py::value_error("method: the core does not draw clough-tocher, so there is no blob for max_bytes");
 }
 
 EncodeOptions options_of(const EncodeArgs& a) {
@@ -68,13 +76,17 @@ EncodeOptions options_of(const EncodeArgs& a) {
   o.smoothing_sigma = a.sigma.value_or(-1);
   if (a.relocate) o.relocate_passes = *a.relocate;
   if (a.flips) o.flip_rounds = *a.flips;
+  o.method = a.method == "zienkiewicz"     ? FitMethod::zienkiewicz
+             : a.method == "clough-tocher" ? FitMethod::clough_tocher
+                                           : FitMethod::bilinear;
+  if (a.gradient_step) o.gradient_step_bits = *a.gradient_step;
   return o;
 }
 
 Triangulation encode_array(const py::handle& array, const EncodeArgs& a) {
   const Image image = image_from_array(array, a.name);
+  one_of("method", a.method, {"bilinear", "zienkiewicz", "clough-tocher"});
   EncodeOptions o = options_of(a);
-  one_of("method", a.method, {"bilinear", "zienkiewicz"});
   one_of("blob", a.blob, {"compressed", "v1"});
   const std::optional<Fit> fit = find_fit(a.fit);
   if (!fit) throw py::value_error("fit: expected stretch|inside|fill, found '" + a.fit + "'");
@@ -100,19 +112,23 @@ void bind_encode(py::module_& m) {
          std::optional<double> error, const std::string& method, const std::string& blob, bool grey,
          const std::string& color, const std::string& space, const std::string& cotri, const std::string& values,
          const std::string& rank, std::optional<double> sigma, std::optional<int> relocate, std::optional<int> flips,
-         std::optional<int> width, std::optional<int> height, const std::string& fit, const std::string& name) {
-        const EncodeArgs a{vertices, max_bytes, error, sigma, method, blob,     color, space, cotri,
-                           values,   rank,      fit,   name,  grey,   relocate, flips, width, height};
+         std::optional<int> gradient_step, std::optional<int> width, std::optional<int> height, const std::string& fit,
+         const std::string& name) {
+        const EncodeArgs a{vertices, max_bytes, error, sigma,    method, blob,          color, space, cotri,
+                           values,   rank,      fit,   name,     grey,   relocate,      flips, gradient_step,
+                           width,    height};
         return encode_array(image, a);
       },
       py::arg("image"), py::arg("vertices") = py::none(), py::kw_only(), py::arg("max_bytes") = py::none(),
       py::arg("error") = py::none(), py::arg("method") = "bilinear", py::arg("blob") = "compressed",
       py::arg("grey") = false, py::arg("color") = "co", py::arg("space") = "rgb", py::arg("cotri") = "greedy",
       py::arg("values") = "lsq", py::arg("rank") = "total", py::arg("sigma") = py::none(),
-      py::arg("relocate") = py::none(), py::arg("flips") = py::none(), py::arg("width") = py::none(), py::arg("height") = py::none(),
+      py::arg("relocate") = py::none(), py::arg("flips") = py::none(), py::arg("gradient_step") = py::none(),
+      py::arg("width") = py::none(), py::arg("height") = py::none(),
       py::arg("fit") = "stretch", py::arg("name") = "image",
       "Encodes an image (uint8 (H, W) or (H, W, 3)) as triencode does with the same options: vertices=N (-n), "
-      "error=E (-e) or max_bytes=B (--max-bytes, with method= and blob=), and grey, color, space, cotri, values, "
+      "error=E (-e) or max_bytes=B (--max-bytes, with blob=), and method (-m: the values, and gradients for "
+      "zienkiewicz and clough-tocher, fitted for it), gradient_step, grey, color, space, cotri, values, "
       "rank, sigma, relocate, flips, width, height, fit. `name` starts the messages of errors in the data.");
 }
 

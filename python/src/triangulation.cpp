@@ -118,6 +118,14 @@ py::array_t<std::uint32_t> triangles_of(const Mesh& m) {
   return out;
 }
 
+// None when the mesh stores no gradients (zienkiewicz and clough-tocher then estimate them).
+py::object gradients_of(const Mesh& m) {
+  if (!m.has_gradients()) return py::none();
+  py::array_t<double> out({py::ssize_t(m.points.size()), py::ssize_t(2 * m.value_count)});
+  std::copy(m.gradients.begin(), m.gradients.end(), out.mutable_data());
+  return out;
+}
+
 // The one mesh of a triangulation that is not layered.
 const Mesh& single_mesh(const Triangulation& tri) {
   if (tri.layered())
@@ -133,6 +141,9 @@ void bind_mesh(py::module_& m) {
       .def_property_readonly("vertices", &vertices_of, "float64 (N, 2): x, y in pixels (y down)")
       .def_property_readonly("values", &values_of, "float64 (N, C): each vertex's values, 0 to 255")
       .def_property_readonly("triangles", &triangles_of, "uint32 (M, 3): vertex indices, clockwise on screen")
+      .def_property_readonly("gradients", &gradients_of,
+                             "float64 (N, 2C): each vertex's gradient per value (gx, gy in values per pixel), as "
+                             "encode(method='zienkiewicz'|'clough-tocher') fits them; None when the mesh has none")
       .def("__repr__", [](const Mesh& mesh) {
         return "<tristream.Mesh '" + mesh.name + "': " + std::to_string(mesh.vertex_count()) + " vertices, " +
                std::to_string(mesh.triangles.size()) + " triangles>";

@@ -110,6 +110,23 @@ TEST_CASE("triencode --json", "[triencode]") {
   REQUIRE(r.out.find("\"vertices\"") != std::string::npos);
 }
 
+TEST_CASE("triencode -m zienkiewicz: gradients in the .tri on the step, the compressed blob codes the step",
+          "[triencode]") {
+  const std::string z = (dir() / "z.tri").string(), zb = (dir() / "z.bin").string();
+  const Run r = run(in() + " -n 300 -m zienkiewicz --json -o " + z);
+  REQUIRE(r.code == 0);
+  REQUIRE(r.out.find("\"method\":\"zienkiewicz\"") != std::string::npos);
+  REQUIRE(r.out.find("\"gradient_step_bits\":9") != std::string::npos);
+  REQUIRE(r.out.find("psnr_linear") == std::string::npos);  // the PSNR is zienkiewicz's
+  const Triangulation tri = read_tri_file(z);
+  const Mesh& m = tri.layers.at(0);
+  REQUIRE(m.has_gradients());
+  for (double g : m.gradients) REQUIRE(g * 8 == std::round(g * 8));
+  const Run pack = run_tool(TRIPACK_PATH, z + " -m zienkiewicz --compress --json -o " + zb);
+  REQUIRE(pack.code == 0);
+  REQUIRE(nlohmann::json::parse(pack.out)["gradient_step_bits"] == nlohmann::json::array({9}));
+}
+
 TEST_CASE("triencode --relocate: 0 keeps the inserted positions, the default lowers the error", "[triencode]") {
   const std::string a = (dir() / "r0.tri").string(), b = (dir() / "r4.tri").string();
   const Run none = run(in() + " -n 200 --grey --relocate 0 --json -o " + a);
@@ -348,7 +365,10 @@ TEST_CASE("triencode panel and budget usage errors: 64", "[triencode][panel]") {
   refused("-n 10 --width 1 --height 40", "--width");
   refused("-n 10 --max-bytes 5000", "--max-bytes");
   refused("-e 5 --max-bytes 5000", "--max-bytes");
-  refused("-n 10 -m zienkiewicz", "--method: applies to --max-bytes only");
+  refused("-n 10 --gradient-step 3", "--gradient-step: applies to --method zienkiewicz or clough-tocher only");
+  refused("-n 10 -m zienkiewicz --gradient-step 13", "--gradient-step");
+  refused("-n 10 -m zienkiewicz --values pixel", "--values lsq only");
+  refused("--max-bytes 5000 -m clough-tocher", "--method clough-tocher: the core does not draw it");
   refused("--max-bytes 0", "--max-bytes");
   refused("--max-bytes 5000 -m bezier", "--method");
   refused("", "--max-bytes");

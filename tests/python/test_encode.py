@@ -52,6 +52,18 @@ class EncodeEqualsTriencode(ScratchTest):
         tri, _ = self.check(small_image(), dict(max_bytes=1500), ["--max-bytes", 1500])
         self.assertLessEqual(len(tristream.pack(tri, "bilinear", compress=True)), 1500)
 
+    def test_methods_fit_gradients(self):
+        tri, _ = self.check(small_image(), dict(vertices=150), ["-n", 150])
+        self.assertIsNone(tri.layers[0].gradients)
+        for method in ("zienkiewicz", "clough-tocher"):
+            fitted, _ = self.check(small_image(), dict(vertices=150, method=method), ["-n", 150, "-m", method])
+            self.assertEqual(fitted.layers[0].gradients.shape, (150, 6))
+            self.assertTrue(np.array_equal(fitted.vertices, tri.vertices))  # the same mesh
+        stepped, _ = self.check(small_image(), dict(vertices=150, method="zienkiewicz", gradient_step=4),
+                                ["-n", 150, "-m", "zienkiewicz", "--gradient-step", 4])
+        g = stepped.layers[0].gradients * 256  # steps of 2^(4 - 12)
+        self.assertTrue(np.array_equal(g, np.round(g)))
+
     def test_float_image_of_integers(self):
         image = small_image()
         self.assertEqual(tristream.encode(image.astype(np.float64), 50), tristream.encode(image, 50))
@@ -70,6 +82,11 @@ class EncodeEqualsTriencode(ScratchTest):
             (dict(vertices=10, flips=-1), r"flips: expected 0 to 100"),
             (dict(max_bytes=10), r"max_bytes 10: expected at least \d+ bytes, the smallest compressed blob"),
             (dict(vertices=10, grey=True, space="ycbcr"), r"apply to colour encodings only"),
+            (dict(vertices=10, method="coons"), r"method: expected bilinear\|zienkiewicz\|clough-tocher"),
+            (dict(vertices=10, gradient_step=3), r"gradient_step: applies to method='zienkiewicz'"),
+            (dict(vertices=10, method="zienkiewicz", gradient_step=13), r"gradient_step: expected 0 to 12"),
+            (dict(vertices=10, method="zienkiewicz", values="pixel"), r"method: zienkiewicz fits"),
+            (dict(max_bytes=5000, method="clough-tocher"), r"method: the core does not draw clough-tocher"),
         ]
         for kwargs, message in cases:
             with self.subTest(**{k: str(v) for k, v in kwargs.items()}):

@@ -42,9 +42,12 @@ void check_conflicts(const CLI::App& app, bool grey) {
       if (given(colour_only))
         throw UsageError(std::string(colour_only) + ": applies to colour encodings only (not a grey image or --grey)");
   if (separate && given("--cotri")) throw UsageError("--cotri: applies to --color co only");
+  const bool pixel_values = app.get_option("--values")->as<std::string>() == "pixel";
   for (const char* lsq_only : {"--relocate", "--flips"})
-    if (given(lsq_only) && app.get_option("--values")->as<std::string>() == "pixel")
-      throw UsageError(std::string(lsq_only) + ": applies to --values lsq only");
+    if (given(lsq_only) && pixel_values) throw UsageError(std::string(lsq_only) + ": applies to --values lsq only");
+  if (pixel_values && app.get_option("--method")->as<std::string>() != "bilinear")
+    throw UsageError("--method " + app.get_option("--method")->as<std::string>() +
+                     ": fits its values and gradients by least squares, so it takes --values lsq only");
 }
 
 void check_usage(const CLI::App& app) {
@@ -54,10 +57,15 @@ void check_usage(const CLI::App& app) {
       throw UsageError("--max-bytes: chooses the vertex count itself; give it without --vertices and --error");
   } else {
     if (!given("--vertices") && !given("--error")) throw UsageError("give --vertices N, --error E or --max-bytes B");
-    for (const char* budget_only : {"--method", "--blob"})
+    for (const char* budget_only : {"--blob"})
       if (given(budget_only))
         throw UsageError(std::string(budget_only) + ": applies to --max-bytes only (the blob it measures)");
   }
+  if (given("--gradient-step") && app.get_option("--method")->as<std::string>() == "bilinear")
+    throw UsageError("--gradient-step: applies to --method zienkiewicz or clough-tocher only (bilinear has no gradients)");
+  if (given("--max-bytes") && app.get_option("--method")->as<std::string>() == "clough-tocher")
+    throw UsageError("--method clough-tocher: the core does not draw it, so there is no blob for --max-bytes to measure "
+                     "(its data are zienkiewicz's: measure -m zienkiewicz)");
   if (given("--width") != given("--height"))
     throw UsageError(std::string(given("--width") ? "--width" : "--height") +
                      ": give the panel's --width and --height together");
@@ -91,6 +99,7 @@ struct Command {
   double sigma = -1;
   int relocate = EncodeOptions{}.relocate_passes;
   int flips = EncodeOptions{}.flip_rounds;
+  int gradient_step = EncodeOptions{}.gradient_step_bits;
   bool grey = false, quiet = false, json = false;
 };
 
@@ -160,9 +169,17 @@ void add_options(CLI::App& app, Command& c) {
                  "most this many bytes, and at least 0.85 times as many; prints the bytes and the PSNR reached")
       ->transform(decimal_in(1, 1LL << 40, "a number of bytes from 1 to " + std::to_string(1LL << 40)));
   app.add_option("-m,--method", c.method,
-                 "With --max-bytes: the interpolation method the blob is packed for (tripack -m; zienkiewicz adds "
-                 "gradients, about 3.6 times the compressed bytes of bilinear) and the PSNR is of")
-      ->check(CLI::IsMember({"bilinear", "zienkiewicz"}))
+                 "The interpolation method the picture will be shown with: zienkiewicz and clough-tocher fit values "
+                 "and gradients by least squares on their own basis and store the gradients in the .tri (the mesh is "
+                 "chosen for bilinear). With --max-bytes the blob is packed for it (tripack -m) and the PSNR is of "
+                 "its render. Bilinear is recommended: at equal compressed bytes it is ahead of both on photographs "
+                 "(tools/experiments/README.md, methods at equal bytes)")
+      ->check(CLI::IsMember({"bilinear", "zienkiewicz", "clough-tocher"}))
+      ->capture_default_str();
+  app.add_option("--gradient-step", c.gradient_step,
+                 "With --method zienkiewicz or clough-tocher: gradients in steps of 2^(BITS-12) values per pixel (the "
+                 "core keeps 12 fraction bits; the compressed blob codes whole steps)")
+      ->check(CLI::Range(0, 12))
       ->capture_default_str();
   app.add_option("--blob", c.blob,
                  "With --max-bytes: the blob measured, compressed (tripack --compress, rendered from its streams) "
@@ -193,6 +210,10 @@ EncodeOptions encode_options(const CLI::App& app, const Command& c) {
   o.smoothing_sigma = c.sigma;
   o.relocate_passes = c.relocate;
   o.flip_rounds = c.flips;
+  o.method = c.method == "zienkiewicz"     ? FitMethod::zienkiewicz
+             : c.method == "clough-tocher" ? FitMethod::clough_tocher
+                                           : FitMethod::bilinear;
+  o.gradient_step_bits = c.gradient_step;
   if (c.panel_width && std::uint64_t(c.panel_width) * std::uint64_t(c.panel_height) > limits::max_encode_pixels)
     throw UsageError("--width/--height: expected a panel of at most " + std::to_string(limits::max_encode_pixels) +
                      " pixels (the limit for encoding), found " + std::to_string(c.panel_width) + "x" +
@@ -234,10 +255,11 @@ void print_summary(const Command& c, const PanelPicture& panel, const Encoded& e
     j["layers"] = tri.layers.size();
     j["vertices"] = r.vertices;
     j["triangles"] = r.triangles;
-    j["psnr_linear"] = json_db(r.psnr);
+    if (c.method == "bilinear") j["psnr_linear"] = json_db(r.psnr);
+    j["method"] = c.method;
+    j["psnr"] = json_db(psnr_method);
+    if (c.method != "bilinear") j["gradient_step_bits"] = c.gradient_step;
     if (c.max_bytes) {
-      j["method"] = c.method;
-      j["psnr"] = json_db(psnr_method);
       j["max_bytes"] = c.max_bytes;
       j["blob"] = c.blob;
       j["blob_bytes"] = e.search.chosen.bytes;
@@ -261,8 +283,9 @@ void print_summary(const Command& c, const PanelPicture& panel, const Encoded& e
                  : "",
         psnr_method, c.method.c_str(), picture.width, picture.height, e.search.trials.size(), e.seconds);
   } else {
-    std::printf("%s: %zu vertices, %zu triangles, PSNR %.2f dB (linear interpolant), %.3f s\n", c.output.c_str(),
-                r.vertices, r.triangles, r.psnr, e.seconds);
+    std::printf("%s: %zu vertices, %zu triangles, PSNR %.2f dB (%s), %.3f s\n", c.output.c_str(), r.vertices,
+                r.triangles, r.psnr, c.method == "bilinear" ? "linear interpolant" : (c.method + " render").c_str(),
+                e.seconds);
   }
 }
 
