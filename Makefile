@@ -2,14 +2,14 @@
 # tristream: every target installs what it needs first (tools/install-deps.sh), then builds.
 #   make run     build the tools only, then render the demo data with every method into out/ and print a table
 #   make test    build, then run every test through ctest
-# More: make build | tools | python | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | rd | baselines | clean
+# More: make build | tools | python | test-sanitize | fuzz | cross | bench | bench-mcu | experiments | experiments-quick | rd | baselines | methods | clean
 
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
 FUZZ_TIME  ?= 60
 BENCH_MCU_ARGS ?=
 
-.PHONY: all deps build tools python run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick rd baselines
+.PHONY: all deps build tools python run test test-sanitize fuzz cross bench bench-mcu clean experiments experiments-quick rd baselines methods
 
 all: build
 
@@ -105,3 +105,10 @@ rd: tools
 IMAGES ?=
 baselines: tools
 	/usr/bin/python3 tools/experiments/baselines.py $(BUILD)/bin out/baselines --jobs 2 $(if $(IMAGES),--images $(IMAGES))
+
+# zienkiewicz and clough-tocher (values and gradients fitted for each) against bilinear at equal
+# compressed-blob bytes, on every PNG under IMAGES (default $TRISTREAM_IMAGES, else the shipped ones),
+# into out/methods/ (methods.csv) and a table on stdout (tools/experiments/README.md).
+methods: tools
+	@bash tools/install-deps.sh experiments
+	/usr/bin/python3 tools/experiments/methods_at_equal_bytes.py $(BUILD)/bin out/methods --jobs 2 $(if $(IMAGES),--images $(IMAGES))

@@ -70,6 +70,14 @@ for key in method engine mse psnr ssim ms; do
   grep -q "\"$key\":" "$tmp/out" && passes=$((passes + 1)) || { echo "FAIL: compare --json lacks '$key'"; failures=$((failures + 1)); }
 done
 expect 65 "expected an image of 20x20" "$bin/trisim" compare "$tri" --width 20 --height 20 --original "$tmp/a.png"
+# The gradient methods: where the gradients come from, and bilinear recommended at equal bytes;
+# nothing of it for bilinear alone.
+expect 0 "" "$bin/trisim" compare "$tri" --method bilinear zienkiewicz --original "$tmp/a.png"
+for line in "# gradients: estimated from the surface" "bilinear is the recommended method"; do
+  grep -qF -- "$line" "$tmp/out" && passes=$((passes + 1)) || { echo "FAIL: compare -m zienkiewicz lacks '$line'"; failures=$((failures + 1)); }
+done
+expect 0 "" "$bin/trisim" compare "$tri" --method bilinear --original "$tmp/a.png"
+grep -qF "recommended" "$tmp/out" && { echo "FAIL: compare -m bilinear prints the methods' note"; failures=$((failures + 1)); } || passes=$((passes + 1))
 # --fit (docs/CONVENTIONS.md "Fitting"): 24 x 16 inside 47 x 47 and filling 40 x 31 are scaled by
 # 2 (a border of 8 rows above and below; 4 columns cropped on the left, 3 on the right), where the
 # core stays within the tolerance of the reference (bilinear 1, zienkiewicz 2).
