@@ -16,7 +16,9 @@ namespace {
 
 // A first guess of the bytes per vertex; the search measures the real slope after one step.
 // Compressed (docs/COMPRESSED_BLOB.md, measured on the demo): about 17 bits of positions,
-// connectivity and flags, 6.5 of values per channel and 32 of zienkiewicz gradients per channel.
+// connectivity and flags, 6.5 of values per channel and 32 of zienkiewicz gradients per channel
+// (estimated gradients; fitted ones on triencode's default step cost about 17, which the search's
+// measured slope corrects).
 // v1 (tristream/blob.h): a vertex's position 4 bytes and 2 per value, about two triangles of 8 bytes,
 // zienkiewicz gradients 8 bytes per value.
 double bytes_per_vertex_guess(int channels, core::Method method, bool compressed) {

@@ -128,21 +128,36 @@ struct BlockMatrix {
 };
 
 // The inverse of the free part of each diagonal block (the first unknown held when
-// `values_fixed`): block-Jacobi preconditioning.
+// `values_fixed`): block-Jacobi preconditioning. A block that is not positive definite (a vertex no
+// triangle uses has no value term) falls back to the inverse of its diagonal, 0 where that is 0: the
+// preconditioner stays finite and positive semi-definite, and such an unknown keeps its start.
 std::vector<BlockMatrix::Block> inverse_diagonal(const BlockMatrix& a, bool values_fixed) {
   const std::size_t n = a.row.size() - 1;
   std::vector<BlockMatrix::Block> inv(n, BlockMatrix::Block{});
   for (std::size_t v = 0; v < n; ++v) {
     const auto& d = a.block[a.row[v]];
     auto& r = inv[v];
+    auto diagonal = [&] {
+      r = BlockMatrix::Block{};
+      for (int k = values_fixed ? 1 : 0; k < per_vertex; ++k)
+        r[k * per_vertex + k] = d[k * per_vertex + k] > 0 ? 1 / d[k * per_vertex + k] : 0;
+    };
     if (values_fixed) {
       const double a11 = d[4], a12 = d[5], a21 = d[7], a22 = d[8];
       const double det = a11 * a22 - a12 * a21;
+      if (!(a11 > 0 && det > 1e-12 * a11 * a22)) {
+        diagonal();
+        continue;
+      }
       r[4] = a22 / det, r[5] = -a12 / det, r[7] = -a21 / det, r[8] = a11 / det;
       continue;
     }
     const double c00 = d[4] * d[8] - d[5] * d[7], c01 = d[5] * d[6] - d[3] * d[8], c02 = d[3] * d[7] - d[4] * d[6];
     const double det = d[0] * c00 + d[1] * c01 + d[2] * c02;
+    if (!(d[0] > 0 && c00 > 0 && det > 1e-12 * d[0] * d[4] * d[8])) {
+      diagonal();
+      continue;
+    }
     r[0] = c00 / det, r[3] = c01 / det, r[6] = c02 / det;
     r[1] = (d[2] * d[7] - d[1] * d[8]) / det, r[4] = (d[0] * d[8] - d[2] * d[6]) / det,
     r[7] = (d[1] * d[6] - d[0] * d[7]) / det;
@@ -201,6 +216,7 @@ Solve conjugate_gradients(const BlockMatrix& a, const std::vector<double>& b, st
     mask(q);
     double pq = 0;
     for (std::size_t i = 0; i < m; ++i) pq += p[i] * q[i];
+    if (!(pq > 0 && rz > 0)) break;  // nothing left the preconditioner can see
     const double alpha = rz / pq;
     for (std::size_t i = 0; i < m; ++i) x[i] += alpha * p[i], r[i] -= alpha * q[i];
     precondition(r, z);

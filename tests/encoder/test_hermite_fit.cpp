@@ -122,6 +122,24 @@ TEST_CASE("hermite fit beats the estimated gradients and the linear fit on smoot
   }
 }
 
+TEST_CASE("hermite fit: a vertex no triangle uses keeps finite data", "[encoder][hermite]") {
+  const auto target = planes_of(40, 30, 1, smooth);
+  Mesh m = random_mesh(40, 30, 20, 1, 2);
+  // The last vertex leaves the triangulation: the mesh of the others.
+  const Point unused = m.points.back();
+  m.points.pop_back();
+  m.values.pop_back();
+  m.triangles = delaunay_triangulation(m.points);
+  m.normalize_winding();
+  m.points.push_back(unused);
+  m.values.push_back(77);
+  const auto report = encoder::fit_hermite(m, target, {HermiteMethod::zienkiewicz, 9});
+  CHECK(report.residual < 1e-8);  // the solves converge: the unused vertex's blocks are not inverted
+  for (double v : m.values) CHECK(std::isfinite(v));
+  for (double g : m.gradients) CHECK(std::isfinite(g));
+  CHECK(m.values.back() == 77);
+}
+
 TEST_CASE("hermite_squared_error equals the reference render's error", "[encoder][hermite]") {
   // The fit's basis is the reference's interpolant: the unrounded field of the reference has the
   // same squared error as hermite_squared_error.

@@ -136,7 +136,7 @@ def measure(case):
                 rows.append(dict(image=name, density_pct=density, method=method, vertices=v, bytes=size,
                                  psnr=round(q, 4), bilinear_psnr_at_bytes=round(at, 4),
                                  difference_db=round(q - at, 4), status="ok", error=""))
-    except (RuntimeError, OSError, ValueError, KeyError) as e:
+    except (RuntimeError, OSError, ValueError, KeyError, ArithmeticError) as e:
         rows.append(dict.fromkeys(COLUMNS, "") | dict(image=name, density_pct=density, method="all",
                                                       status="failed", error=str(e)))
     return rows

@@ -355,9 +355,10 @@ void print_gradient_notes(const std::vector<std::string>& methods, const Input& 
   if (std::none_of(methods.begin(), methods.end(), takes_gradients)) return;
   bool stored = true;
   for (const Mesh& mesh : in.tri.layers) stored = stored && mesh.has_gradients();
-  std::printf("# gradients: %s\n", in.is_blob() ? "the blob's"
-                                    : stored     ? "the file's (triencode -m zienkiewicz|clough-tocher fits them)"
-                                                 : "estimated from the surface (thesis Eq. 3.2)");
+  // A zienkiewicz blob's unpacked mesh has its gradients; a bilinear blob has none.
+  std::printf("# gradients: %s\n", !stored         ? "estimated from the surface (thesis Eq. 3.2)"
+                                    : in.is_blob() ? "the blob's"
+                                                   : "the file's (triencode -m zienkiewicz|clough-tocher fits them)");
   std::printf("# %s\n", equal_bytes_note);
 }
 
