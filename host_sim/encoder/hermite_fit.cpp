@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "encoder/barycentric.h"
+#include "encoder/mesh_adjacency.h"
 #include "encoder/pixel_scan.h"
 #include "model/topology.h"
 #include "reference/gradients.h"
@@ -79,37 +80,13 @@ void for_each_pixel(const std::array<IntPoint, 3>& p, Visit&& visit) {
   });
 }
 
-// The normal equations in 3 x 3 blocks: row v lists v, then its edge neighbours in increasing
-// order (as fit_least_squares's matrix, one block per entry).
-struct BlockMatrix {
+// The normal equations in 3 x 3 blocks, one per entry of the vertices' rows (as
+// fit_least_squares's matrix).
+struct BlockMatrix : VertexRows {
   using Block = std::array<double, per_vertex * per_vertex>;
-  std::vector<std::size_t> row;
-  std::vector<std::uint32_t> col;
   std::vector<Block> block;
 
-  explicit BlockMatrix(const Mesh& mesh) {
-    const std::size_t n = mesh.vertex_count();
-    std::vector<std::vector<std::uint32_t>> adjacent(n);
-    for (const Triangle& t : mesh.triangles)
-      for (int e = 0; e < 3; ++e)
-        adjacent[t.v[e]].push_back(t.v[(e + 1) % 3]), adjacent[t.v[e]].push_back(t.v[(e + 2) % 3]);
-    row.assign(n + 1, 0);
-    for (std::size_t v = 0; v < n; ++v) {
-      auto& a = adjacent[v];
-      std::sort(a.begin(), a.end());
-      a.erase(std::unique(a.begin(), a.end()), a.end());
-      col.push_back(std::uint32_t(v));
-      col.insert(col.end(), a.begin(), a.end());
-      row[v + 1] = col.size();
-    }
-    block.assign(col.size(), Block{});
-  }
-
-  std::size_t entry(std::uint32_t i, std::uint32_t j) const {
-    if (i == j) return row[i];
-    const auto begin = col.begin() + std::ptrdiff_t(row[i]) + 1, end = col.begin() + std::ptrdiff_t(row[i + 1]);
-    return std::size_t(std::lower_bound(begin, end, j) - col.begin());
-  }
+  explicit BlockMatrix(const Mesh& mesh) : VertexRows(vertex_rows(mesh)), block(col.size(), Block{}) {}
 
   // out = A in, over unknowns 3 v + k.
   void multiply(const std::vector<double>& in, std::vector<double>& out) const {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "encoder/mesh_adjacency.h"
 #include "encoder/pixel_scan.h"
 
 namespace tristream::encoder {
@@ -70,27 +71,11 @@ LeastSquaresReport fit_least_squares(Mesh& mesh, const Planes& target, bool roun
   const std::size_t n = mesh.vertex_count();
   const int ch = target.channels;
 
-  // Sparsity: vertex v couples with itself and its edge neighbours. Row v of the CSR matrix
-  // lists v first, then its neighbours in increasing order.
-  std::vector<std::vector<std::uint32_t>> adjacent(n);
-  for (const Triangle& t : mesh.triangles)
-    for (int e = 0; e < 3; ++e)
-      adjacent[t.v[e]].push_back(t.v[(e + 1) % 3]), adjacent[t.v[e]].push_back(t.v[(e + 2) % 3]);
-  std::vector<std::size_t> row(n + 1, 0);
-  std::vector<std::uint32_t> col;
-  for (std::size_t v = 0; v < n; ++v) {
-    auto& a = adjacent[v];
-    std::sort(a.begin(), a.end());
-    a.erase(std::unique(a.begin(), a.end()), a.end());
-    col.push_back(std::uint32_t(v));
-    col.insert(col.end(), a.begin(), a.end());
-    row[v + 1] = col.size();
-  }
-  auto entry = [&](std::uint32_t i, std::uint32_t j) {
-    if (i == j) return row[i];
-    const auto begin = col.begin() + std::ptrdiff_t(row[i]) + 1, end = col.begin() + std::ptrdiff_t(row[i + 1]);
-    return std::size_t(std::lower_bound(begin, end, j) - col.begin());
-  };
+  // Sparsity: vertex v couples with itself and its edge neighbours.
+  const VertexRows rows = vertex_rows(mesh);
+  const auto& row = rows.row;
+  const auto& col = rows.col;
+  auto entry = [&](std::uint32_t i, std::uint32_t j) { return rows.entry(i, j); };
   std::vector<double> a(col.size(), 0.0), b(n * ch, 0.0);
   for (std::size_t t = 0; t < scans.size(); ++t) {
     const auto& v = mesh.triangles[t].v;

@@ -30,4 +30,29 @@ std::vector<std::array<std::uint32_t, 3>> triangle_neighbours(const Mesh& mesh) 
   return across;
 }
 
+VertexRows vertex_rows(const Mesh& mesh) {
+  const std::size_t n = mesh.vertex_count();
+  std::vector<std::vector<std::uint32_t>> adjacent(n);
+  for (const Triangle& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e)
+      adjacent[t.v[e]].push_back(t.v[(e + 1) % 3]), adjacent[t.v[e]].push_back(t.v[(e + 2) % 3]);
+  VertexRows r;
+  r.row.assign(n + 1, 0);
+  for (std::size_t v = 0; v < n; ++v) {
+    auto& a = adjacent[v];
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+    r.col.push_back(std::uint32_t(v));
+    r.col.insert(r.col.end(), a.begin(), a.end());
+    r.row[v + 1] = r.col.size();
+  }
+  return r;
+}
+
+std::size_t VertexRows::entry(std::uint32_t i, std::uint32_t j) const {
+  if (i == j) return row[i];
+  const auto begin = col.begin() + std::ptrdiff_t(row[i]) + 1, end = col.begin() + std::ptrdiff_t(row[i + 1]);
+  return std::size_t(std::lower_bound(begin, end, j) - col.begin());
+}
+
 }  // namespace tristream::encoder

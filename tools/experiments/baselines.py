@@ -21,7 +21,6 @@ import json
 import math
 import os
 import statistics
-import struct
 import subprocess
 import sys
 import tempfile
@@ -64,25 +63,11 @@ def parse_args(argv):
     if args.jobs < 1:
         p.error("--jobs: expected a positive number")
     text = args.densities or ("1" if args.quick else ",".join(f"{d:g}" for d in DENSITIES))
-    try:
-        args.densities = [float(d) for d in text.split(",")]
-    except ValueError:
-        p.error(f"--densities: expected numbers separated by commas, found '{text}'")
-    if not all(0 < d <= 100 for d in args.densities):
-        p.error(f"--densities: expected percentages above 0 and at most 100, found '{text}'")
+    args.densities = SCRIPT.densities(p, text, 100)
     return args
 
 
 # --- measuring ------------------------------------------------------------------------------
-
-
-def png_size(path):
-    """(width, height) from a PNG's IHDR chunk; None when the file is not a PNG."""
-    with open(path, "rb") as f:
-        head = f.read(24)
-    if len(head) < 24 or head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
-        return None
-    return struct.unpack(">II", head[16:24])
 
 
 def vertex_count(width, height, density):
@@ -141,29 +126,6 @@ def run_case(row, path, n, command, bin_dir):
 
 
 # --- inputs and outputs -------------------------------------------------------------------
-
-
-def find_images(quick, images_dir):
-    """(path, name, width, height) of every image measured."""
-    if quick or not images_dir:
-        if not quick:
-            note("TRISTREAM_IMAGES is unset (and no --images): only the images shipped in data/ are measured")
-        paths = [REPO / "data/demo/kodim23.png"] if quick else sorted((REPO / "data").rglob("*.png"))
-        found = [(p, str(p.relative_to(REPO))) for p in paths]
-    else:
-        root = Path(images_dir)
-        if not root.is_dir():
-            fail(EXIT_NOINPUT, f"{root}: expected a directory of images (--images or $TRISTREAM_IMAGES)")
-        found = [(p, str(p.relative_to(root))) for p in sorted(root.rglob("*.png"))]
-        if not found:
-            fail(EXIT_NOINPUT, f"{root}: expected PNG images, found none")
-    out = []
-    for path, name in found:
-        size = png_size(path)
-        if size is None:
-            fail(EXIT_DATA, f"{path}: expected a PNG image")
-        out.append((path, name, *size))
-    return out
 
 
 def write_csv(path, rows):
@@ -253,7 +215,7 @@ def main(argv):
         t = bin_dir / tool
         if not (t.is_file() and os.access(t, os.X_OK)):
             fail(EXIT_NOINPUT, f"{t}: expected an executable (build it with 'make tools'), found none")
-    images = find_images(args.quick, args.images)
+    images = SCRIPT.find_images(REPO, args.quick, args.images)
     cases = [(str(p), name, w, h, d, e, str(bin_dir), str(out / "cache"), args.force) for p, name, w, h in images
              for d in args.densities for e, _, _ in ENCODERS]
     note(f"{len(images)} image(s) x {len(args.densities)} densities x {len(ENCODERS)} encoders = {len(cases)} runs")

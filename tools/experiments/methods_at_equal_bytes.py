@@ -36,7 +36,7 @@ HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
 sys.path.insert(0, str(HERE))
 
-from script import EXIT_CANTCREAT, EXIT_DATA, EXIT_NOINPUT, Script  # noqa: E402
+from script import EXIT_CANTCREAT, EXIT_NOINPUT, Script, png_size  # noqa: E402
 
 SCRIPT = Script("methods_at_equal_bytes")
 fail, note = SCRIPT.fail, SCRIPT.note
@@ -62,12 +62,7 @@ def parse_args(argv):
     if args.jobs < 1:
         p.error("--jobs: expected a positive number")
     text = args.densities or ("1" if args.quick else ",".join(f"{d:g}" for d in DENSITIES))
-    try:
-        args.densities = [float(d) for d in text.split(",")]
-    except ValueError:
-        p.error(f"--densities: expected numbers separated by commas, found '{text}'")
-    if not all(0 < d <= 50 for d in args.densities):
-        p.error(f"--densities: expected percentages above 0 and at most 50, found '{text}'")
+    args.densities = SCRIPT.densities(p, text, 50)
     return args
 
 
@@ -109,10 +104,8 @@ def interpolate(points, x):
 
 def measure(case):
     """One image at one density: a row per method."""
-    from PIL import Image
     path, name, density, bin_dir = case
-    with Image.open(path) as im:
-        width, height = im.size
+    width, height = png_size(path)
     n = max(4, round(density / 100.0 * width * height))
     rows = []
     try:
@@ -143,21 +136,6 @@ def measure(case):
 
 
 # --- inputs and outputs -------------------------------------------------------------------
-
-
-def find_images(quick, images_dir):
-    if quick:
-        return [REPO / "data" / "demo" / "kodim23.png"]
-    if images_dir:
-        d = Path(images_dir)
-        if not d.is_dir():
-            fail(EXIT_NOINPUT, f"--images {images_dir}: not a directory")
-        found = sorted(d.rglob("*.png"))
-        if not found:
-            fail(EXIT_DATA, f"--images {images_dir}: expected PNG images under it, found none")
-        return found
-    note("no --images and no $TRISTREAM_IMAGES: the shipped images alone")
-    return sorted((REPO / "data").rglob("*.png"))
 
 
 def summary(rows):
@@ -197,10 +175,8 @@ def main(argv):
         for tool in ("triencode", "tripack"):
             if not (bin_dir / tool).is_file():
                 fail(EXIT_NOINPUT, f"{bin_dir / tool}: not found (build the tools first: make tools)")
-        images = find_images(args.quick, args.images)
-        names = [p.name for p in images]
-        cases = [(str(p), p.name if names.count(p.name) == 1 else str(p), d, str(bin_dir))
-                 for p in images for d in args.densities]
+        images = SCRIPT.find_images(REPO, args.quick, args.images)
+        cases = [(str(path), name, d, str(bin_dir)) for path, name, _, _ in images for d in args.densities]
         rows = []
         with ProcessPoolExecutor(max_workers=args.jobs) as pool:
             for k, result in enumerate(pool.map(measure, cases), 1):

@@ -4,7 +4,9 @@ the script, an argument parser whose errors exit 64, and CSV tables read and wri
 import argparse
 import csv
 import io
+import struct
 import sys
+from pathlib import Path
 
 from runner import EXIT_USAGE, atomic_write_text
 
@@ -55,3 +57,45 @@ class Script:
         if not rows or set(columns) - set(rows[0]):
             self.fail(EXIT_DATA, f"{path}: expected the columns {', '.join(columns)}")
         return rows
+
+    def densities(self, parser, text, upper):
+        """Percentages separated by commas, each above 0 and at most `upper`; a usage error otherwise."""
+        try:
+            values = [float(d) for d in text.split(",")]
+        except ValueError:
+            parser.error(f"--densities: expected numbers separated by commas, found '{text}'")
+        if not all(0 < d <= upper for d in values):
+            parser.error(f"--densities: expected percentages above 0 and at most {upper:g}, found '{text}'")
+        return values
+
+    def find_images(self, repo, quick, images_dir):
+        """(path, name, width, height) of every PNG measured: the demo image with `quick`, every PNG
+        under `images_dir` (named by its path there), else the ones shipped in the repository's data/."""
+        if quick or not images_dir:
+            if not quick:
+                self.note("TRISTREAM_IMAGES is unset (and no --images): only the images shipped in data/ are measured")
+            paths = [repo / "data/demo/kodim23.png"] if quick else sorted((repo / "data").rglob("*.png"))
+            found = [(p, str(p.relative_to(repo))) for p in paths]
+        else:
+            root = Path(images_dir)
+            if not root.is_dir():
+                self.fail(EXIT_NOINPUT, f"{root}: expected a directory of images (--images or $TRISTREAM_IMAGES)")
+            found = [(p, str(p.relative_to(root))) for p in sorted(root.rglob("*.png"))]
+            if not found:
+                self.fail(EXIT_NOINPUT, f"{root}: expected PNG images, found none")
+        out = []
+        for path, name in found:
+            size = png_size(path)
+            if size is None:
+                self.fail(EXIT_DATA, f"{path}: expected a PNG image")
+            out.append((path, name, *size))
+        return out
+
+
+def png_size(path):
+    """(width, height) from a PNG's IHDR chunk; None when the file is not a PNG."""
+    with open(path, "rb") as f:
+        head = f.read(24)
+    if len(head) < 24 or head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
+        return None
+    return struct.unpack(">II", head[16:24])
