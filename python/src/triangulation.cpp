@@ -68,12 +68,21 @@ Mesh mesh_from_arrays(const py::handle& vertices, const py::handle& values, cons
 Triangulation checked(const Triangulation& tri) { return parse_tri(format_tri(tri), "Triangulation"); }
 
 Triangulation make_single(int width, int height, const std::string& space, const py::handle& vertices,
-                          const py::handle& values, const py::handle& triangles) {
+                          const py::handle& values, const py::handle& triangles, const py::handle& gradients) {
   Triangulation tri;
   tri.width = width;
   tri.height = height;
   tri.space = space_of(space);
-  tri.layers.push_back(mesh_from_arrays(vertices, values, triangles, tri.channels(), "Triangulation"));
+  Mesh mesh = mesh_from_arrays(vertices, values, triangles, tri.channels(), "Triangulation");
+  if (!gradients.is_none()) {
+    const auto g = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(gradients);
+    const std::size_t n = mesh.vertex_count(), per_vertex = 2 * std::size_t(tri.channels());
+    if (!g || g.ndim() != 2 || std::size_t(g.shape(0)) != n || std::size_t(g.shape(1)) != per_vertex)
+      throw py::value_error("Triangulation: expected gradients as an array of shape (" + std::to_string(n) + ", " +
+                            std::to_string(per_vertex) + ") (gx, gy per value), or None (estimated)");
+    mesh.gradients.assign(g.data(), g.data() + n * per_vertex);
+  }
+  tri.layers.push_back(std::move(mesh));
   return checked(tri);
 }
 
@@ -158,9 +167,10 @@ void bind_triangulation(py::module_& m) {
                             "A triangulation-represented image (docs/FORMAT.md): size, colour space and one mesh, or "
                             "one mesh per channel (layered).")
       .def(py::init(&make_single), py::arg("width"), py::arg("height"), py::arg("space"), py::arg("vertices"),
-           py::arg("values"), py::arg("triangles") = py::none(),
+           py::arg("values"), py::arg("triangles") = py::none(), py::kw_only(), py::arg("gradients") = py::none(),
            "From arrays: vertices (N, 2), values (N, C) for C channels of `space` (grey, rgb, ycbcr), triangles "
-           "(M, 3) or None for the Delaunay triangulation. Checked as the .tri reader checks a file.")
+           "(M, 3) or None for the Delaunay triangulation, gradients (N, 2C: gx, gy per value, for zienkiewicz and "
+           "clough-tocher) or None to estimate them. Checked as the .tri reader checks a file.")
       .def_static("from_layers", &make_layered, py::arg("width"), py::arg("height"), py::arg("space"),
                   py::arg("layers"),
                   "A layered triangulation: three (vertices, values[, triangles]) of one value per vertex.")

@@ -31,6 +31,25 @@ class Arrays(unittest.TestCase):
             tri.width, tri.height, "ycbcr", [(m.vertices, m.values, m.triangles) for m in tri.layers])
         self.assertEqual(again, tri)
 
+    def test_gradients(self):
+        square = np.array([[0, 0], [9, 0], [0, 9], [9, 9]], float)
+        values = np.array([0.0, 90.0, 45.0, 135.0])  # 10 x + 5 y
+        gradients = np.tile([10.0, 5.0], (4, 1))
+        tri = tristream.Triangulation(10, 10, "grey", square, values, gradients=gradients)
+        self.assertTrue(np.array_equal(tri.layers[0].gradients, gradients))
+        self.assertIn("gradients 4\n10 5\n", tri.to_text())
+        self.assertEqual(tristream.Triangulation.from_text(tri.to_text()), tri)
+        # Exact gradients of linear data: zienkiewicz draws the plane.
+        image = tristream.render(tri, "zienkiewicz")
+        self.assertEqual((image[0, 9], image[9, 0], image[5, 4]), (90, 45, 65))  # rows are y
+        # Others than the estimate change the render.
+        steep = tristream.Triangulation(10, 10, "grey", square, values, gradients=gradients * 3)
+        self.assertFalse(np.array_equal(tristream.render(steep, "zienkiewicz"), image))
+        with self.assertRaisesRegex(ValueError, r"expected gradients as an array of shape \(4, 2\)"):
+            tristream.Triangulation(10, 10, "grey", square, values, gradients=np.zeros((4, 6)))
+        with self.assertRaisesRegex(ValueError, r"Triangulation:\d+: expected a gradient"):
+            tristream.Triangulation(10, 10, "grey", square, values, gradients=gradients * 1e5)
+
     def test_delaunay_when_no_triangles(self):
         vertices = np.array([[0, 0], [9, 0], [0, 9], [9, 9], [4, 5]], float)
         tri = tristream.Triangulation(10, 10, "grey", vertices, np.arange(5) * 10.0)
