@@ -2,6 +2,7 @@
 #include "core_bridge/compress.h"
 
 #include <algorithm>
+#include <bit>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -240,9 +241,7 @@ class LayerEncoder {
     std::uint32_t bits = 0;
     for (const Vertex& x : in_)
       for (int c = 0; c < nv_; ++c) bits |= std::uint32_t(x.gradients[c][0]) | std::uint32_t(x.gradients[c][1]);
-    shift_ = 0;
-    if (bits == 0) return;
-    while (shift_ < core::compressed_max_gradient_shift && ((bits >> shift_) & 1u) == 0) ++shift_;
+    shift_ = bits == 0 ? 0 : std::min(std::uint32_t(std::countr_zero(bits)), core::compressed_max_gradient_shift);
   }
 
   // Raster order: pixel row, pixel column, then the sub-pixel bits (ties kept in input order).

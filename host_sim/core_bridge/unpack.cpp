@@ -124,7 +124,8 @@ UnpackedBlob unpack_blob(const core::Blob& blob, std::string_view name) {
       }
       // The reference draws with the blob's gradients, not an estimate of its own.
       mesh.gradients.resize(g.size());
-      for (std::size_t k = 0; k < g.size(); ++k) mesh.gradients[k] = std::ldexp(double(g[k]), -core::config::gradient_frac_bits);
+      for (std::size_t k = 0; k < g.size(); ++k)
+        mesh.gradients[k] = std::ldexp(double(g[k]), -core::config::gradient_frac_bits);
       out.gradients.push_back(std::move(g));
     }
     out.tri.layers.push_back(std::move(mesh));

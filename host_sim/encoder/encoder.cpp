@@ -67,29 +67,15 @@ void run_greedy(GreedyInserter& g, const Planes& target, const EncodeOptions& o,
   }
 }
 
-// What follows the greedy insertion.
-struct Finish {
-  VertexFit fit = VertexFit::lsq;
-  int relocate_passes = 0;
-  int flip_rounds = 0;
-  FitMethod method = FitMethod::bilinear;
-  int gradient_step_bits = 0;
-};
-
-Finish finish_of(const EncodeOptions& o) {
-  return {o.fit, o.relocate_passes, o.flip_rounds, o.method, o.gradient_step_bits};
-}
-
-Mesh finish(Mesh mesh, const Planes& target, const Finish& o) {
-  const VertexFit fit = o.fit;
-  const int relocate_passes = o.relocate_passes, flip_rounds = o.flip_rounds;
-  if (fit == VertexFit::lsq) {
+// What follows the greedy insertion: the fit, relocation, flips and the fit for o.method.
+Mesh finish(Mesh mesh, const Planes& target, const EncodeOptions& o) {
+  if (o.fit == VertexFit::lsq) {
     encoder::fit_least_squares(mesh, target, false);
-    if (relocate_passes > 0) encoder::relocate_vertices(mesh, target, relocate_passes);
-    for (int r = 0; r < flip_rounds; ++r) {
+    if (o.relocate_passes > 0) encoder::relocate_vertices(mesh, target, o.relocate_passes);
+    for (int r = 0; r < o.flip_rounds; ++r) {
       const encoder::FlipReport flips = encoder::flip_edges(mesh, target);
-      if (relocate_passes > 0)
-        encoder::relocate_vertices(mesh, target, relocate_passes, false, &flips.touched);
+      if (o.relocate_passes > 0)
+        encoder::relocate_vertices(mesh, target, o.relocate_passes, false, &flips.touched);
       else
         encoder::fit_least_squares(mesh, target, false);
     }
@@ -171,8 +157,7 @@ void check_options(const Image& image, const EncodeOptions& o) {
 
 // The reference's render of a gradient method, 8-bit.
 Image render_fitted(const Triangulation& tri, FitMethod method) {
-  const MethodInfo* info = find_reference_method(method == FitMethod::zienkiewicz ? "zienkiewicz" : "clough-tocher");
-  return render_reference(tri, *info, RenderOptions{});
+  return render_reference(tri, *find_reference_method(to_string(method)), RenderOptions{});
 }
 
 }  // namespace
@@ -200,6 +185,18 @@ void check_vertex_count(const Image& image, std::size_t vertices) {
     throw UsageError("--vertices " + std::to_string(vertices) + ": expected at most the pixel count " +
                      std::to_string(pixels) + " (" + std::to_string(image.width) + " x " +
                      std::to_string(image.height) + ")");
+}
+
+std::string_view to_string(FitMethod method) {
+  return method == FitMethod::zienkiewicz     ? "zienkiewicz"
+         : method == FitMethod::clough_tocher ? "clough-tocher"
+                                              : "bilinear";
+}
+
+FitMethod parse_fit_method(std::string_view name) {
+  for (FitMethod m : {FitMethod::bilinear, FitMethod::zienkiewicz, FitMethod::clough_tocher})
+    if (to_string(m) == name) return m;
+  throw UsageError("--method " + std::string(name) + ": expected bilinear, zienkiewicz or clough-tocher");
 }
 
 void check_encodable(const Image& image, const std::string& name) {
@@ -243,14 +240,14 @@ EncodeResult encode(const Image& image, const EncodeOptions& o) {
       run_greedy(g, target, o, limit, 0.0, 1.0);
       mesh = g.mesh();
     }
-    tri.layers.push_back(finish(std::move(mesh), target, finish_of(o)));
+    tri.layers.push_back(finish(std::move(mesh), target, o));
   } else {
     const char* names[2][3] = {{"r", "g", "b"}, {"y", "cb", "cr"}};
     for (int c = 0; c < 3; ++c) {
       const Planes t = encoder::channel_of(target, c), gd = encoder::channel_of(guide, c);
       GreedyInserter g(t, gd, go, pixel_values(t));
       run_greedy(g, t, o, limit, c / 3.0, 1 / 3.0);
-      Mesh mesh = finish(g.mesh(), t, finish_of(o));
+      Mesh mesh = finish(g.mesh(), t, o);
       mesh.name = names[tri.space == ColorSpace::ycbcr][c];
       tri.layers.push_back(std::move(mesh));
     }
@@ -340,7 +337,11 @@ Triangulation regular_grid(const Image& image, std::size_t vertices, ColorSpace 
       for (int c = 0; c < target.channels; ++c) mesh.values.push_back(to_byte(target.at(x, y, c)));
     }
   mesh.triangles = delaunay_triangulation(mesh.points);
-  tri.layers.push_back(finish(std::move(mesh), target, Finish{fit}));
+  EncodeOptions o;
+  o.fit = fit;
+  o.relocate_passes = 0;
+  o.flip_rounds = 0;
+  tri.layers.push_back(finish(std::move(mesh), target, o));
   return tri;
 }
 

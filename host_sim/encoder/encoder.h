@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <string_view>
 
 #include "model/image.h"
 #include "model/triangulation.h"
@@ -30,6 +31,11 @@ enum class VertexFit : std::uint8_t {
 // values and gradients on their own basis (encoder/hermite_fit.h) and store the gradients in the
 // triangulation. tools/experiments/README.md ("Methods at equal bytes") compares them with bilinear at equal bytes.
 enum class FitMethod : std::uint8_t { bilinear, zienkiewicz, clough_tocher };
+
+// The method's name as the tools and the reference spell it (clough_tocher: "clough-tocher"), and
+// back (UsageError for another name).
+std::string_view to_string(FitMethod method);
+FitMethod parse_fit_method(std::string_view name);
 
 struct EncodeOptions {
   // Stop criteria; at least one must be set, the first one reached stops. `vertices` counts

@@ -225,14 +225,16 @@ HermiteFitReport fit_hermite(Mesh& mesh, const Planes& target, const HermiteFitO
     const auto p = pixel_corners(mesh, t, target);
     const auto& v = mesh.triangles[t].v;
     const TriangleBasis basis(options.method, {mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]]});
-    double local[3][3][per_vertex * per_vertex] = {};
+    // The triangle's 9 x 9 matrix, symmetric: its upper half summed over the pixels, unknown
+    // i * per_vertex + k being corner i's k.
+    constexpr int d = 3 * per_vertex;
+    double local[d][d] = {};
     for_each_pixel(p, [&](int x, int y, double l0, double l1, double l2) {
       double w[3][per_vertex];
       basis.weights(l0, l1, l2, w);
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          for (int k = 0; k < per_vertex; ++k)
-            for (int l = 0; l < per_vertex; ++l) local[i][j][k * per_vertex + l] += w[i][k] * w[j][l];
+      const double* u = &w[0][0];
+      for (int r = 0; r < d; ++r)
+        for (int q = r; q < d; ++q) local[r][q] += u[r] * u[q];
       for (int c = 0; c < ch; ++c) {
         const double value = target.at(x, y, c);
         for (int i = 0; i < 3; ++i)
@@ -242,7 +244,11 @@ HermiteFitReport fit_hermite(Mesh& mesh, const Planes& target, const HermiteFitO
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         auto& blk = a.block[a.entry(v[i], v[j])];
-        for (int k = 0; k < per_vertex * per_vertex; ++k) blk[k] += local[i][j][k];
+        for (int k = 0; k < per_vertex; ++k)
+          for (int l = 0; l < per_vertex; ++l) {
+            const int r = i * per_vertex + k, q = j * per_vertex + l;
+            blk[k * per_vertex + l] += r <= q ? local[r][q] : local[q][r];
+          }
       }
   }
 

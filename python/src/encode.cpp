@@ -76,9 +76,7 @@ EncodeOptions options_of(const EncodeArgs& a) {
   o.smoothing_sigma = a.sigma.value_or(-1);
   if (a.relocate) o.relocate_passes = *a.relocate;
   if (a.flips) o.flip_rounds = *a.flips;
-  o.method = a.method == "zienkiewicz"     ? FitMethod::zienkiewicz
-             : a.method == "clough-tocher" ? FitMethod::clough_tocher
-                                           : FitMethod::bilinear;
+  o.method = parse_fit_method(a.method);
   if (a.gradient_step) o.gradient_step_bits = *a.gradient_step;
   return o;
 }

@@ -211,9 +211,7 @@ EncodeOptions encode_options(const CLI::App& app, const Command& c) {
   o.smoothing_sigma = c.sigma;
   o.relocate_passes = c.relocate;
   o.flip_rounds = c.flips;
-  o.method = c.method == "zienkiewicz"     ? FitMethod::zienkiewicz
-             : c.method == "clough-tocher" ? FitMethod::clough_tocher
-                                           : FitMethod::bilinear;
+  o.method = parse_fit_method(c.method);
   o.gradient_step_bits = c.gradient_step;
   if (c.panel_width && std::uint64_t(c.panel_width) * std::uint64_t(c.panel_height) > limits::max_encode_pixels)
     throw UsageError("--width/--height: expected a panel of at most " + std::to_string(limits::max_encode_pixels) +
