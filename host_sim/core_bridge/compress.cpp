@@ -2,8 +2,8 @@
 #include "core_bridge/compress.h"
 
 #include <algorithm>
-#include <bit>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <map>

@@ -22,8 +22,8 @@ bool is_blob(std::span<const std::uint8_t> bytes);
 // The mesh a blob draws. Positions are the blob's fixed-point positions in pixels, values its
 // q8_8 values / 256, triangles in the blob's order and rotation (positively oriented), for
 // zienkiewicz the gradients (Mesh::gradients, q19_12 / 4096, so the reference draws with the
-// blob's gradients); layer names as a .tri file has them (r g b, y cb cr). pack_blob(tri, method, name, &gradients) gives the
-// blob's bytes back.
+// blob's gradients); layer names as a .tri file has them (r g b, y cb cr). pack_blob(tri, method, name, &gradients)
+// gives the blob's bytes back.
 struct UnpackedBlob {
   Triangulation tri;
   core::Method method = core::Method::bilinear;

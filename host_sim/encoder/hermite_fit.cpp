@@ -283,7 +283,8 @@ HermiteFitReport fit_hermite(Mesh& mesh, const Planes& target, const HermiteFitO
     for (std::size_t v = 0; v < n; ++v) {
       mesh.values[v * ch + c] = x[per_vertex * v];
       for (int k = 0; k < 2; ++k)
-        gradients[(v * ch + c) * 2 + k] = std::clamp(std::round(x[per_vertex * v + 1 + k] / unit) * unit, -limit, limit);
+        gradients[(v * ch + c) * 2 + k] =
+            std::clamp(std::round(x[per_vertex * v + 1 + k] / unit) * unit, -limit, limit);
     }
   }
   mesh.gradients = std::move(gradients);

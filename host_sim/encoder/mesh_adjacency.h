@@ -19,7 +19,7 @@ std::vector<std::array<std::uint32_t, 3>> triangle_neighbours(const Mesh& mesh);
 // The sparsity of the least-squares fits' normal equations (compressed sparse rows): row v lists v
 // itself, then its edge neighbours in increasing order.
 struct VertexRows {
-  std::vector<std::size_t> row;   // vertex v's entries are [row[v], row[v + 1])
+  std::vector<std::size_t> row;  // vertex v's entries are [row[v], row[v + 1])
   std::vector<std::uint32_t> col;
   // The entry of (i, j), j being i or one of its neighbours.
   std::size_t entry(std::uint32_t i, std::uint32_t j) const;

@@ -219,8 +219,8 @@ Mesh parse_mesh(Parser& parser, int value_count, int width, int height, const st
     const std::string usage = value_count == 1 ? "<gx> <gy>" : "<gx0> <gy0> <gx1> <gy1> <gx2> <gy2>";
     mesh.gradients.reserve(mesh.values.size() * 2);
     for (long i = 0; i < n; ++i) {
-      Line line = parser.next("gradient line " + std::to_string(i + 1) + " of " + std::to_string(n) + " ('" + usage +
-                              "')");
+      Line line =
+          parser.next("gradient line " + std::to_string(i + 1) + " of " + std::to_string(n) + " ('" + usage + "')");
       auto tokens = Parser::split(line.text);
       if (tokens.size() != std::size_t(2 * value_count))
         parser.fail(line.number, "a gradient line '" + usage + "'", quoted(line.text));

@@ -16,7 +16,8 @@ namespace {
 // The method table: one line per method, in the order of docs and tables.
 constexpr std::array methods{
     MethodInfo{"bilinear", "linear over each triangle (thesis 3.1)", render_bilinear},
-    MethodInfo{"zienkiewicz", "Zienkiewicz's cubic with the file's gradients, else area-weighted normal ones (thesis 3.2)",
+    MethodInfo{"zienkiewicz",
+               "Zienkiewicz's cubic with the file's gradients, else area-weighted normal ones (thesis 3.2)",
                render_zienkiewicz},
     MethodInfo{"bezier", "second-degree Bezier triangle patches over each triangle and its neighbours (thesis 3.3)",
                render_bezier},

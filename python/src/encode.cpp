@@ -112,9 +112,8 @@ void bind_encode(py::module_& m) {
          const std::string& rank, std::optional<double> sigma, std::optional<int> relocate, std::optional<int> flips,
          std::optional<int> gradient_step, std::optional<int> width, std::optional<int> height, const std::string& fit,
          const std::string& name) {
-        const EncodeArgs a{vertices, max_bytes, error, sigma,    method, blob,          color, space, cotri,
-                           values,   rank,      fit,   name,     grey,   relocate,      flips, gradient_step,
-                           width,    height};
+        const EncodeArgs a{vertices, max_bytes, error, sigma, method,   blob,  color,         space, cotri, values,
+                           rank,     fit,       name,  grey,  relocate, flips, gradient_step, width, height};
         return encode_array(image, a);
       },
       py::arg("image"), py::arg("vertices") = py::none(), py::kw_only(), py::arg("max_bytes") = py::none(),
@@ -122,8 +121,8 @@ void bind_encode(py::module_& m) {
       py::arg("grey") = false, py::arg("color") = "co", py::arg("space") = "rgb", py::arg("cotri") = "greedy",
       py::arg("values") = "lsq", py::arg("rank") = "total", py::arg("sigma") = py::none(),
       py::arg("relocate") = py::none(), py::arg("flips") = py::none(), py::arg("gradient_step") = py::none(),
-      py::arg("width") = py::none(), py::arg("height") = py::none(),
-      py::arg("fit") = "stretch", py::arg("name") = "image",
+      py::arg("width") = py::none(), py::arg("height") = py::none(), py::arg("fit") = "stretch",
+      py::arg("name") = "image",
       "Encodes an image (uint8 (H, W) or (H, W, 3)) as triencode does with the same options: vertices=N (-n), "
       "error=E (-e) or max_bytes=B (--max-bytes, with blob=), and method (-m: the values, and gradients for "
       "zienkiewicz and clough-tocher, fitted for it), gradient_step, grey, color, space, cotri, values, "

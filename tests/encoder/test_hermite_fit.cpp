@@ -7,12 +7,12 @@
 #include <random>
 #include <vector>
 
+#include "common/errors.h"
 #include "encoder/encoder.h"
 #include "encoder/hermite_fit.h"
 #include "encoder/least_squares.h"
 #include "encoder/planes.h"
 #include "geometry/delaunay.h"
-#include "common/errors.h"
 #include "metrics/metrics.h"
 #include "model/topology.h"
 #include "reference/gradients.h"
@@ -160,8 +160,8 @@ TEST_CASE("hermite_squared_error equals the reference render's error", "[encoder
         const double e = f.at(x, y, 0) - target.at(x, y, 0);
         sse += e * e;
       }
-    const HermiteMethod method = std::string(name) == "zienkiewicz" ? HermiteMethod::zienkiewicz
-                                                                    : HermiteMethod::clough_tocher;
+    const HermiteMethod method =
+        std::string(name) == "zienkiewicz" ? HermiteMethod::zienkiewicz : HermiteMethod::clough_tocher;
     CHECK(encoder::hermite_squared_error(m, target, method) == Approx(sse).epsilon(1e-9));
   }
 }

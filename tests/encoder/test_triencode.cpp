@@ -93,9 +93,8 @@ TEST_CASE("triencode writes a readable triangulation and a summary", "[triencode
 }
 
 TEST_CASE("triencode output is byte-identical across runs", "[triencode]") {
-  for (const std::string mode :
-       {"--color co", "--color separate --space ycbcr", "--grey --values lsq", "--cotri thesis", "-m zienkiewicz",
-        "-m clough-tocher --color separate"}) {
+  for (const std::string mode : {"--color co", "--color separate --space ycbcr", "--grey --values lsq",
+                                 "--cotri thesis", "-m zienkiewicz", "-m clough-tocher --color separate"}) {
     const std::string a = (dir() / "d1.tri").string(), b = (dir() / "d2.tri").string();
     REQUIRE(run(in() + " -n 300 " + mode + " -o " + a).code == 0);
     REQUIRE(run(in() + " -n 300 " + mode + " -o " + b).code == 0);

@@ -205,9 +205,9 @@ TEST_CASE("a gradients section: read, written back, and its errors") {
   CHECK(!parse_tri(three, "in.tri").layers[0].has_gradients());
   CHECK_THAT(format_tri(parse_tri(three, "in.tri")), !Catch::Contains("gradients"));
   // RGB: six numbers a line; with the Delaunay triangulation (no triangles section).
-  const Triangulation rgb =
-      parse_tri(header(3, "rgb") + "0 0 1 2 3\n9 0 2 3 4\n0 9 3 4 5\ngradients 3\n1 2 3 4 5 6\n0 0 0 0 0 0\n-1 -2 -3 -4 -5 -6\n",
-                "rgb.tri");
+  const Triangulation rgb = parse_tri(
+      header(3, "rgb") + "0 0 1 2 3\n9 0 2 3 4\n0 9 3 4 5\ngradients 3\n1 2 3 4 5 6\n0 0 0 0 0 0\n-1 -2 -3 -4 -5 -6\n",
+      "rgb.tri");
   CHECK(rgb.layers[0].gradient(0, 2, 1) == 6);
   CHECK(rgb.layers[0].gradient(2, 1, 0) == -3);
   CHECK_THAT(error_of(three + "gradients 2\n0 0\n0 0\n"),

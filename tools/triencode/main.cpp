@@ -14,8 +14,8 @@
 #include "common/cli_validators.h"
 #include "common/errors.h"
 #include "common/json_name.h"
-#include "common/progress_bar.h"
 #include "common/name_list.h"
+#include "common/progress_bar.h"
 #include "common/tool_main.h"
 #include "core_bridge/pack.h"
 #include "encoder/blob_budget.h"
@@ -62,10 +62,12 @@ void check_usage(const CLI::App& app) {
         throw UsageError(std::string(budget_only) + ": applies to --max-bytes only (the blob it measures)");
   }
   if (given("--gradient-step") && app.get_option("--method")->as<std::string>() == "bilinear")
-    throw UsageError("--gradient-step: applies to --method zienkiewicz or clough-tocher only (bilinear has no gradients)");
+    throw UsageError(
+        "--gradient-step: applies to --method zienkiewicz or clough-tocher only (bilinear has no gradients)");
   if (given("--max-bytes") && app.get_option("--method")->as<std::string>() == "clough-tocher")
-    throw UsageError("--method clough-tocher: the core does not draw it, so there is no blob for --max-bytes to measure "
-                     "(its data are zienkiewicz's: measure -m zienkiewicz)");
+    throw UsageError(
+        "--method clough-tocher: the core does not draw it, so there is no blob for --max-bytes to measure "
+        "(its data are zienkiewicz's: measure -m zienkiewicz)");
   if (given("--width") != given("--height"))
     throw UsageError(std::string(given("--width") ? "--width" : "--height") +
                      ": give the panel's --width and --height together");

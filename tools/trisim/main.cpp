@@ -356,9 +356,9 @@ void print_gradient_notes(const std::vector<std::string>& methods, const Input& 
   bool stored = true;
   for (const Mesh& mesh : in.tri.layers) stored = stored && mesh.has_gradients();
   // A zienkiewicz blob's unpacked mesh has its gradients; a bilinear blob has none.
-  std::printf("# gradients: %s\n", !stored         ? "estimated from the surface (thesis Eq. 3.2)"
-                                    : in.is_blob() ? "the blob's"
-                                                   : "the file's (triencode -m zienkiewicz|clough-tocher fits them)");
+  std::printf("# gradients: %s\n", !stored        ? "estimated from the surface (thesis Eq. 3.2)"
+                                   : in.is_blob() ? "the blob's"
+                                                  : "the file's (triencode -m zienkiewicz|clough-tocher fits them)");
   std::printf("# %s\n", equal_bytes_note);
 }
 
